@@ -1,0 +1,16 @@
+# Finds SuiteSparse's CHOLMOD and UMFPACK (SuiteSparse 5.x on Debian 12 ships no CMake config).
+# Defines CHOLMOD::CHOLMOD (which also carries UMFPACK and SuiteSparse_config).
+find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse)
+find_library(CHOLMOD_LIBRARY NAMES cholmod)
+find_library(UMFPACK_LIBRARY NAMES umfpack)
+find_library(SUITESPARSE_CONFIG_LIBRARY NAMES suitesparseconfig)
+include(FindPackageHandleStandardArgs)
+find_package_handle_standard_args(CHOLMOD REQUIRED_VARS CHOLMOD_LIBRARY UMFPACK_LIBRARY
+                                  SUITESPARSE_CONFIG_LIBRARY CHOLMOD_INCLUDE_DIR)
+if(CHOLMOD_FOUND AND NOT TARGET CHOLMOD::CHOLMOD)
+  add_library(CHOLMOD::CHOLMOD INTERFACE IMPORTED)
+  set_target_properties(CHOLMOD::CHOLMOD PROPERTIES
+    INTERFACE_INCLUDE_DIRECTORIES ${CHOLMOD_INCLUDE_DIR}
+    INTERFACE_LINK_LIBRARIES "${CHOLMOD_LIBRARY};${UMFPACK_LIBRARY};${SUITESPARSE_CONFIG_LIBRARY}")
+endif()
+mark_as_advanced(CHOLMOD_INCLUDE_DIR CHOLMOD_LIBRARY UMFPACK_LIBRARY SUITESPARSE_CONFIG_LIBRARY)

@@ -1,0 +1,130 @@
+#pragma once
+// The case, as plain data: what `read_case` produces from a case.toml. Every default is filled
+// here, in one place, and nowhere else. Units follow the case (forming cases: mm, s, tonne, N,
+// MPa); the solver itself is unit-agnostic.
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sf {
+
+/// A piecewise-linear curve value(time), given as points [[t0, v0], [t1, v1], ...] with strictly
+/// increasing times. Held constant beyond its last point.
+struct CurveConfig {
+  std::vector<double> times;   ///< s
+  std::vector<double> values;  ///< unit of the quantity it drives
+};
+
+/// Isotropic hardening: flow stress as a function of equivalent plastic strain.
+struct HardeningConfig {
+  enum class Law { swift, linear };
+  Law law = Law::swift;
+  // swift: sigma_y = K * (eps0 + eps_p)^n
+  double swift_k = 0.0;     ///< MPa
+  double swift_eps0 = 0.0;  ///< -
+  double swift_n = 0.0;     ///< -
+  // linear: sigma_y = sigma_y0 + H * eps_p
+  double yield_stress = 0.0;  ///< MPa
+  double modulus = 0.0;       ///< MPa (plastic hardening modulus H)
+};
+
+struct MaterialConfig {
+  enum class Type { elastic, von_mises };
+  std::string name;             ///< the table's key under [materials]
+  Type type = Type::von_mises;
+  double density = 0.0;         ///< tonne/mm^3
+  double young = 0.0;           ///< MPa
+  double poisson = 0.0;         ///< -
+  HardeningConfig hardening;    ///< used when type == von_mises
+};
+
+/// A mesh source: a .geo file meshed by gmsh, or a ready .msh file.
+struct MeshSourceConfig {
+  std::filesystem::path file;  ///< absolute (resolved against the case file's folder)
+  std::string group;           ///< physical group name holding the part's surface
+  double element_size = 0.0;   ///< mm; 0 = leave the .geo file's own sizes (ignored for .msh)
+};
+
+struct BlankConfig {
+  MeshSourceConfig mesh;
+  std::string element = "quad";     ///< "quad" (Belytschko-Lin-Tsay)
+  double thickness = 0.0;           ///< mm, initial
+  int integration_points = 5;       ///< through the thickness (Gauss), 1..9
+  std::string material;             ///< name of a [materials.NAME] table
+  double hourglass_coefficient = 0.1;  ///< viscous hourglass coefficient (Flanagan-Belytschko)
+};
+
+struct MotionConfig {
+  enum class Type { velocity, displacement, fixed };
+  Type type = Type::fixed;
+  std::array<double, 3> direction{0.0, 0.0, -1.0};  ///< unit vector (normalised on read)
+  CurveConfig curve;  ///< velocity in mm/s, or displacement in mm, against time in s
+};
+
+struct ToolConfig {
+  std::string name;  ///< unique; referred to by [[contact]] and [control]
+  MeshSourceConfig mesh;
+  MotionConfig motion;
+};
+
+struct ContactConfig {
+  std::string tool;                   ///< name of a [[tools]] entry
+  std::string search = "modified";    ///< "modified" (the only one in this release)
+  double penalty_scale = 0.1;         ///< scales the blank's membrane stiffness (see docs)
+  double friction = 0.0;              ///< Coulomb coefficient (not yet applied: must be 0)
+};
+
+struct BoundaryConfig {
+  enum class Type { symmetry, fixed };
+  std::string group;  ///< physical group name (curve or point set) of blank nodes
+  Type type = Type::fixed;
+  /// symmetry: the plane's normal axis, 0 = x, 1 = y, 2 = z. The normal translation and the two
+  /// rotations about in-plane axes are held.
+  int axis = 0;
+};
+
+struct ControlConfig {
+  double end_time = 0.0;         ///< s; 0 = run until the stroke is reached
+  double stroke = 0.0;           ///< mm of travel of `stroke_tool`; 0 = use end_time
+  std::string stroke_tool;       ///< tool whose travel defines the stroke (default: first moving)
+  int output_frames = 20;        ///< frames written, evenly spaced in time (plus the initial one)
+  int history_interval = 100;    ///< cycles between history rows
+  int progress_interval = 0;     ///< cycles between progress lines; 0 = about every 2 s of wall time
+  double time_step_safety = 0.9;  ///< factor on the elements' critical time step
+  double mass_scaling_dt = 0.0;  ///< s; target time step for mass scaling; 0 = off
+  double energy_blowup_ratio = 10.0;  ///< stop when total energy exceeds this x external work (+1)
+};
+
+struct OutputConfig {
+  std::string directory = "results";  ///< relative to the case folder unless given with -o
+  bool stress_layers = true;          ///< write mid, top and bottom stress per element
+};
+
+struct CaseConfig {
+  std::filesystem::path file;  ///< the case file, absolute
+  std::string title;
+  std::string units = "mm-s-tonne-N-MPa";  ///< informational
+  BlankConfig blank;
+  std::vector<MaterialConfig> materials;
+  std::vector<ToolConfig> tools;
+  std::vector<ContactConfig> contacts;
+  std::vector<BoundaryConfig> boundaries;
+  ControlConfig control;
+  OutputConfig output;
+
+  /// The material named by blank.material (the reader guarantees it exists).
+  const MaterialConfig& blank_material() const;
+  /// The tool with this name, or nullptr.
+  const ToolConfig* find_tool(const std::string& name) const;
+};
+
+/// Reads and validates a case file. Throws InputError naming the file, line and key for an unknown
+/// key, a wrong type, an out-of-range value, a missing file or a dangling name.
+CaseConfig read_case(const std::filesystem::path& case_file);
+
+/// The fully resolved case (every default filled) as TOML text, written beside the results.
+std::string format_resolved_case(const CaseConfig& config);
+
+}  // namespace sf
