@@ -1,2 +1,212 @@
-// Placeholder until the command line is written (this session).
-int main() { return 0; }
+// sheetform: explicit finite-element simulation of sheet metal forming.
+//
+//   sheetform run   CASE [-o DIR]   run a case, write results (HDF5 + XDMF for ParaView)
+//   sheetform check CASE            validate a case and print the model it builds
+//   sheetform mesh  CASE [-o DIR]   write only the meshes, to look at the set-up in ParaView
+//
+// Exit codes: 0 success, 2 bad input, 3 the run went unstable, 1 an internal error.
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "core/build_info.hpp"
+#include "core/errors.hpp"
+#include "core/log.hpp"
+#include "io/case_config.hpp"
+#include "model/build_model.hpp"
+#include "solver/explicit_driver.hpp"
+#include "solver/frame_output.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Arguments {
+  std::string case_file;
+  std::string output_directory;
+  double stroke = -1.0;    // mm; < 0 = as in the case
+  double end_time = -1.0;  // s; < 0 = as in the case
+  bool quiet = false;
+};
+
+// Command-line overrides of the case's end condition (used for short versions of long runs).
+void apply_overrides(const Arguments& args, sf::CaseConfig& config) {
+  if (args.stroke >= 0.0 && args.end_time >= 0.0) {
+    throw sf::InputError("give --stroke or --end-time, not both");
+  }
+  if (args.stroke > 0.0) {
+    if (config.control.stroke_tool.empty()) {
+      throw sf::InputError(config.file.string() + ": --stroke needs a moving tool (none moves)");
+    }
+    config.control.stroke = args.stroke;
+    config.control.end_time = 0.0;
+  }
+  if (args.end_time > 0.0) {
+    config.control.end_time = args.end_time;
+    config.control.stroke = 0.0;
+  }
+}
+
+fs::path output_directory(const Arguments& args, const sf::CaseConfig& config) {
+  if (!args.output_directory.empty()) {
+    return fs::absolute(args.output_directory);
+  }
+  return config.file.parent_path() / config.output.directory;
+}
+
+void print_model(const sf::Model& model) {
+  const sf::Blank& blank = model.blank;
+  sf::log_info("Case        {}\n", model.config.file.string());
+  if (!model.config.title.empty()) {
+    sf::log_info("Title       {}\n", model.config.title);
+  }
+  sf::log_info("Units       {}\n", model.config.units);
+  sf::log_info("Blank       {} nodes, {} quadrilateral shells (Belytschko-Lin-Tsay), t = {} mm, "
+               "{} thickness points, material '{}'\n",
+               blank.mesh.nodes.cols(), blank.mesh.quads.cols(), model.config.blank.thickness,
+               model.config.blank.integration_points, model.config.blank.material);
+  sf::log_info("Mass        {:.6e} tonne physical, {:.6e} tonne added by mass scaling ({:.2f} %)\n",
+               blank.physical_mass, blank.added_mass, 100.0 * blank.added_mass / blank.physical_mass);
+  for (std::size_t i = 0; i < model.config.boundaries.size(); ++i) {
+    const sf::BoundaryConfig& b = model.config.boundaries[i];
+    sf::log_info("Boundary    '{}': {} nodes, {}\n", b.group, blank.groups[i].nodes.size(),
+                 b.type == sf::BoundaryConfig::Type::fixed
+                     ? std::string("fixed")
+                     : fmt::format("symmetry plane normal to {}", "xyz"[b.axis]));
+  }
+  for (const sf::Tool& t : model.tools) {
+    sf::log_info("Tool        '{}': {} nodes, {} triangles, {}\n", t.name, t.mesh.nodes.cols(),
+                 t.mesh.triangles.cols(),
+                 t.motion.moves() ? fmt::format("moves along ({:.3g}, {:.3g}, {:.3g})",
+                                                t.motion.direction().x(), t.motion.direction().y(),
+                                                t.motion.direction().z())
+                                  : std::string("fixed"));
+  }
+  for (const sf::ContactInterface& c : model.contacts) {
+    const sf::ContactConfig* cc = nullptr;
+    for (const auto& candidate : model.config.contacts) {
+      if (candidate.tool == model.tools[static_cast<std::size_t>(c.tool)].name) {
+        cc = &candidate;
+      }
+    }
+    sf::log_info("Contact     blank nodes vs '{}': search '{}', penalty scale {}, stiffness {:.4g} to "
+                 "{:.4g} N/mm\n",
+                 model.tools[static_cast<std::size_t>(c.tool)].name, cc->search, cc->penalty_scale,
+                 c.pair.stiffness.minCoeff(), c.pair.stiffness.maxCoeff());
+  }
+  sf::log_info("Time step   {:.4e} s (safety {} x critical, limited by element {})\n",
+               model.time_step, model.config.control.time_step_safety, model.limiting_element);
+  sf::log_info("End time    {:.6e} s{}\n", model.end_time,
+               model.config.control.stroke > 0.0
+                   ? fmt::format(" (stroke {} mm of '{}')", model.config.control.stroke,
+                                 model.config.control.stroke_tool)
+                   : std::string());
+  sf::log_info("Cycles      about {:.0f}\n", model.end_time / model.time_step);
+}
+
+sf::Model load(const Arguments& args) {
+  // 1. Read and validate the case file.
+  sf::CaseConfig config = sf::read_case(args.case_file);
+  apply_overrides(args, config);
+  // 2. Mesh every part and build the model.
+  return sf::build_model(config);
+}
+
+int run(const Arguments& args) {
+  sf::Model model = load(args);
+  print_model(model);
+  // 3. Prepare the results folder and keep the resolved case beside the results.
+  const fs::path out = output_directory(args, model.config);
+  fs::create_directories(out);
+  std::ofstream(out / "case.resolved.toml") << sf::format_resolved_case(model.config);
+  sf::log_info("Results     {}\n\n", out.string());
+  // 4. Run the explicit time loop.
+  sf::RunOptions options;
+  options.output_directory = out;
+  const sf::RunSummary summary = sf::run_explicit(model, options);
+  // 5. Report.
+  sf::write_run_summary_json(summary, out / "summary.json");
+  sf::log_info("\n{}", sf::format_run_summary(summary));
+  sf::log_info("\nOpen in ParaView: {}  (one .xdmf per part: blank, {})\n",
+               (out / "blank.xdmf").string(),
+               model.tools.empty() ? std::string("no tools") : model.tools.front().name + ", ...");
+  return sf::exit_ok;
+}
+
+int check(const Arguments& args) {
+  const sf::Model model = load(args);
+  print_model(model);
+  sf::log_info("Case is valid.\n");
+  return sf::exit_ok;
+}
+
+int mesh(const Arguments& args) {
+  sf::Model model = load(args);
+  print_model(model);
+  const fs::path out = output_directory(args, model.config);
+  fs::create_directories(out);
+  sf::FrameOutput output(model, out);
+  sf::SolutionState state = sf::make_initial_state(model);
+  output.write_frame(model, state);
+  output.flush();
+  sf::log_info("Meshes written to {} (open blank.xdmf and the tools' .xdmf in ParaView)\n",
+               out.string());
+  return sf::exit_ok;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"sheetform: explicit finite-element simulation of sheet metal forming"};
+  app.set_version_flag("--version", std::string(sf::build_info::version) + " (" +
+                                        sf::build_info::git_hash + ")");
+  app.require_subcommand(1);
+  Arguments args;
+  auto add_common = [&args](CLI::App* sub) {
+    sub->add_option("case", args.case_file, "the case file (case.toml)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    sub->add_flag("-q,--quiet", args.quiet, "print errors only");
+  };
+  CLI::App* run_cmd = app.add_subcommand("run", "run a case and write results for ParaView");
+  add_common(run_cmd);
+  run_cmd->add_option("-o,--output", args.output_directory,
+                      "results folder (default: the case's output.directory)");
+  run_cmd->add_option("--stroke", args.stroke, "override the end condition: stroke in mm");
+  run_cmd->add_option("--end-time", args.end_time, "override the end condition: end time in s");
+  CLI::App* check_cmd = app.add_subcommand("check", "validate a case and print its model");
+  add_common(check_cmd);
+  CLI::App* mesh_cmd = app.add_subcommand("mesh", "write only the meshes (HDF5 + XDMF)");
+  add_common(mesh_cmd);
+  mesh_cmd->add_option("-o,--output", args.output_directory, "results folder");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? sf::exit_ok : sf::exit_input_error;
+  }
+  if (args.quiet) {
+    sf::verbosity() = sf::Verbosity::quiet;
+  }
+  try {
+    if (*run_cmd) {
+      return run(args);
+    }
+    if (*check_cmd) {
+      return check(args);
+    }
+    return mesh(args);
+  } catch (const sf::InputError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return sf::exit_input_error;
+  } catch (const sf::InstabilityError& e) {
+    std::cerr << "error: the run went unstable: " << e.what()
+              << "\nThe frames written so far are readable in the results folder.\n";
+    return sf::exit_unstable;
+  } catch (const std::exception& e) {
+    std::cerr << "internal error: " << e.what() << "\n";
+    return sf::exit_internal_error;
+  }
+}

@@ -48,7 +48,7 @@ struct MeshSourceConfig {
 };
 
 struct BlankConfig {
-  MeshSourceConfig mesh;
+  MeshSourceConfig mesh{.file = {}, .group = "blank"};  ///< group defaults to "blank"
   std::string element = "quad";     ///< "quad" (Belytschko-Lin-Tsay)
   double thickness = 0.0;           ///< mm, initial
   int integration_points = 5;       ///< through the thickness (Gauss), 1..9
@@ -97,6 +97,16 @@ struct ControlConfig {
   double energy_blowup_ratio = 10.0;  ///< stop when total energy exceeds this x external work (+1)
 };
 
+/// A draw-in measurement: the in-plane displacement of a blank node along a direction at the end of
+/// the run (mm), reported beside a measured value when one is given.
+struct DrawInConfig {
+  std::string name;                              ///< e.g. "DX"
+  std::string group;                             ///< physical group holding one blank node
+  std::array<double, 3> direction{-1.0, 0.0, 0.0};  ///< unit vector (normalised on read)
+  double measured = -1.0;                        ///< mm; < 0 = no measured value
+  std::string source;                            ///< where the measured value comes from
+};
+
 struct OutputConfig {
   std::string directory = "results";  ///< relative to the case folder unless given with -o
   bool stress_layers = true;          ///< write mid, top and bottom stress per element
@@ -113,6 +123,7 @@ struct CaseConfig {
   std::vector<BoundaryConfig> boundaries;
   ControlConfig control;
   OutputConfig output;
+  std::vector<DrawInConfig> draw_ins;  ///< [[draw_in]] tables
 
   /// The material named by blank.material (the reader guarantees it exists).
   const MaterialConfig& blank_material() const;

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs sheetform's Debian 12 packages (when missing), then configures and builds it.
+#   scripts/setup.sh            solver, tests and post-processing libraries
+#   SF_WITH_PARAVIEW=1 ...      also ParaView (pvpython/pvbatch), needed by the ParaView tests
+#   SF_BUILD_DIR=dir ...        build folder (default: build)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(g++ cmake ninja-build pkg-config git libeigen3-dev libsuitesparse-dev libhdf5-dev hdf5-tools
+          gmsh libgmsh-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libfmt-dev
+          libgtest-dev python3-h5py python3-numpy python3-matplotlib)
+if [ "${SF_WITH_PARAVIEW:-0}" = 1 ]; then
+  packages+=(paraview python3-paraview xvfb xauth)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "== Installing Debian packages: ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends \
+    "${missing[@]}" >/dev/null
+fi
+
+build_dir="${SF_BUILD_DIR:-build}"
+echo "== Configuring and building in $build_dir"
+cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build_dir" -j"$(nproc)"
+echo "== Built $build_dir/sheetform"

@@ -1,0 +1,187 @@
+#include "model/build_model.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "contact/contact_search.hpp"
+#include "core/errors.hpp"
+#include "core/log.hpp"
+#include "io/gmsh_reader.hpp"
+
+namespace sf {
+namespace {
+
+Hardening make_hardening(const HardeningConfig& h) {
+  switch (h.law) {
+    case HardeningConfig::Law::swift:
+      return SwiftHardening{h.swift_k, h.swift_eps0, h.swift_n};
+    case HardeningConfig::Law::linear:
+      return LinearHardening{h.yield_stress, h.modulus};
+  }
+  return LinearHardening{h.yield_stress, h.modulus};
+}
+
+Material make_material(const MaterialConfig& m) {
+  if (m.type == MaterialConfig::Type::elastic) {
+    return ElasticPlaneStress{m.young, m.poisson};
+  }
+  return J2PlaneStress{m.young, m.poisson, make_hardening(m.hardening)};
+}
+
+void read_blank(const CaseConfig& config, Model& model) {
+  const BlankConfig& bc = config.blank;
+  const GmshModel gmsh_model = load_gmsh_model(bc.mesh.file, bc.mesh.element_size, true);
+  Blank& blank = model.blank;
+  blank.mesh = extract_part_mesh(gmsh_model, bc.mesh.group, "blank");
+  if (blank.mesh.triangles.cols() > 0) {
+    throw InputError(fmt::format(
+        "{}: group '{}' holds {} triangles; this release's blank takes quadrilaterals only "
+        "(mesh it with Recombine)",
+        bc.mesh.file.string(), bc.mesh.group, blank.mesh.triangles.cols()));
+  }
+  if (blank.mesh.quads.cols() == 0) {
+    throw InputError(fmt::format("{}: group '{}' holds no quadrilaterals", bc.mesh.file.string(),
+                                 bc.mesh.group));
+  }
+  for (const BoundaryConfig& b : config.boundaries) {
+    blank.groups.push_back(extract_node_group(gmsh_model, blank.mesh, b.group));
+  }
+  for (const DrawInConfig& d : config.draw_ins) {
+    blank.groups.push_back(extract_node_group(gmsh_model, blank.mesh, d.group));
+  }
+
+  blank.inverse_element_count = VectorX::Zero(blank.mesh.nodes.cols());
+  for (Eigen::Index e = 0; e < blank.mesh.quads.cols(); ++e) {
+    for (int a = 0; a < 4; ++a) {
+      blank.inverse_element_count[blank.mesh.quads(a, e)] += 1.0;
+    }
+  }
+  for (Eigen::Index i = 0; i < blank.inverse_element_count.size(); ++i) {
+    if (blank.inverse_element_count[i] == 0.0) {
+      throw InputError(fmt::format("{}: blank node {} (gmsh node {}) belongs to no element",
+                                   bc.mesh.file.string(), i, blank.mesh.gmsh_node_tags[static_cast<std::size_t>(i)]));
+    }
+  }
+  blank.inverse_element_count = blank.inverse_element_count.cwiseInverse();
+
+  const MaterialConfig& material = config.blank_material();
+  blank.part.quads = blank.mesh.quads;
+  blank.part.section = make_gauss_section(bc.integration_points);
+  blank.part.material = make_material(material);
+  blank.part.density = material.density;
+  blank.part.hourglass_coefficient = bc.hourglass_coefficient;
+}
+
+void read_tools(const CaseConfig& config, Model& model) {
+  for (const ToolConfig& tc : config.tools) {
+    const GmshModel gmsh_model = load_gmsh_model(tc.mesh.file, tc.mesh.element_size, false);
+    Tool tool;
+    tool.name = tc.name;
+    tool.mesh = extract_part_mesh(gmsh_model, tc.mesh.group, tc.name);
+    if (tool.mesh.quads.cols() > 0) {
+      throw InputError(fmt::format("{}: tool '{}' group '{}' holds quadrilaterals; tools must be "
+                                   "meshed as triangles",
+                                   tc.mesh.file.string(), tc.name, tc.mesh.group));
+    }
+    tool.surface = TriangleSurface(tool.mesh.nodes, tool.mesh.triangles, tc.name);
+    orient_surface(tool.surface, model.blank.mesh.nodes);
+    tool.motion = RigidToolMotion(tc.motion);
+    model.tools.push_back(std::move(tool));
+  }
+}
+
+void apply_boundaries(const CaseConfig& config, Model& model) {
+  model.constraints.mask.assign(static_cast<std::size_t>(model.blank.mesh.nodes.cols()), 0);
+  for (std::size_t i = 0; i < config.boundaries.size(); ++i) {
+    const BoundaryConfig& b = config.boundaries[i];
+    for (int node : model.blank.groups[i].nodes) {
+      if (b.type == BoundaryConfig::Type::symmetry) {
+        model.constraints.add_symmetry(node, b.axis);
+      } else {
+        model.constraints.add_fixed(node);
+      }
+    }
+  }
+}
+
+// Uniform density scaling up to the target step: the simplest mass scaling, exact for a uniform
+// mesh and reported as added mass. Selective (per-element) scaling is a later refinement.
+void set_mass_and_time_step(const CaseConfig& config, Model& model, const ShellState& state) {
+  Blank& blank = model.blank;
+  const ControlConfig& control = config.control;
+  compute_lumped_mass(blank.part, blank.mesh.nodes, state, blank.mass, blank.rotational_inertia);
+  blank.physical_mass = blank.mass.sum();
+  StableStep step = compute_stable_time_step(blank.part, blank.mesh.nodes, state);
+  double dt = control.time_step_safety * step.dt;
+  if (control.mass_scaling_dt > dt) {
+    const double factor = (control.mass_scaling_dt / dt) * (control.mass_scaling_dt / dt);
+    blank.part.density *= factor;
+    compute_lumped_mass(blank.part, blank.mesh.nodes, state, blank.mass, blank.rotational_inertia);
+    step = compute_stable_time_step(blank.part, blank.mesh.nodes, state);
+    dt = control.time_step_safety * step.dt;
+  }
+  blank.added_mass = blank.mass.sum() - blank.physical_mass;
+  model.time_step = dt;
+  model.limiting_element = step.element;
+}
+
+void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& state) {
+  const MaterialConfig& material = config.blank_material();
+  for (const ContactConfig& cc : config.contacts) {
+    ContactInterface contact;
+    const auto found = std::find_if(model.tools.begin(), model.tools.end(),
+                                    [&](const Tool& t) { return t.name == cc.tool; });
+    contact.tool = static_cast<int>(found - model.tools.begin());
+    const Tool& tool = model.tools[static_cast<std::size_t>(contact.tool)];
+    contact.pair.surface = &tool.surface;
+    contact.pair.search = make_contact_search(cc.search, tool.surface);
+    contact.pair.stiffness = compute_penalty_stiffness(
+        model.blank.mesh.nodes, model.blank.mesh.quads, material.young, material.poisson,
+        cc.penalty_scale, model.blank.mass, model.time_step);
+    // Nodes farther than this from the tool cannot touch it within one step.
+    contact.pair.cutoff = 2.0 * config.blank.thickness;
+    model.contacts.push_back(std::move(contact));
+  }
+}
+
+void set_end_time(const CaseConfig& config, Model& model) {
+  const ControlConfig& control = config.control;
+  if (!control.stroke_tool.empty()) {
+    for (std::size_t i = 0; i < model.tools.size(); ++i) {
+      if (model.tools[i].name == control.stroke_tool) {
+        model.stroke_tool = static_cast<int>(i);
+      }
+    }
+  }
+  if (control.stroke > 0.0) {
+    const Tool& tool = model.tools[static_cast<std::size_t>(model.stroke_tool)];
+    model.end_time = tool.motion.time_at_travel(control.stroke, tool.name);
+  } else {
+    model.end_time = control.end_time;
+  }
+}
+
+}  // namespace
+
+Model build_model(const CaseConfig& config) {
+  Model model;
+  model.config = config;
+  read_blank(config, model);
+  read_tools(config, model);
+  apply_boundaries(config, model);
+  const ShellState state = make_shell_state(static_cast<int>(model.blank.mesh.quads.cols()),
+                                            config.blank.integration_points,
+                                            config.blank.thickness);
+  set_mass_and_time_step(config, model, state);
+  set_up_contacts(config, model, state);
+  set_end_time(config, model);
+  // The contact pairs point at the tools' surfaces: the tools vector must not move again.
+  for (ContactInterface& c : model.contacts) {
+    c.pair.surface = &model.tools[static_cast<std::size_t>(c.tool)].surface;
+  }
+  return model;
+}
+
+}  // namespace sf

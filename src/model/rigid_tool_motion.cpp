@@ -1,0 +1,70 @@
+#include "model/rigid_tool_motion.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+
+#include "core/errors.hpp"
+
+namespace sf {
+
+RigidToolMotion::RigidToolMotion(const MotionConfig& config)
+    : type_(config.type),
+      direction_(Vec3(config.direction[0], config.direction[1], config.direction[2]).normalized()) {
+  if (type_ != MotionConfig::Type::fixed) {
+    curve_ = LoadCurve(config.curve.times, config.curve.values);
+  }
+}
+
+double RigidToolMotion::travel(double t) const {
+  switch (type_) {
+    case MotionConfig::Type::velocity:
+      return curve_.integral(t);
+    case MotionConfig::Type::displacement:
+      return curve_.value(t);
+    case MotionConfig::Type::fixed:
+      break;
+  }
+  return 0.0;
+}
+
+double RigidToolMotion::speed(double t) const {
+  switch (type_) {
+    case MotionConfig::Type::velocity:
+      return curve_.value(t);
+    case MotionConfig::Type::displacement: {
+      const double h = 1e-9;  // s; the curve is piecewise linear, so this is its slope
+      return (curve_.value(t + h) - curve_.value(t)) / h;
+    }
+    case MotionConfig::Type::fixed:
+      break;
+  }
+  return 0.0;
+}
+
+double RigidToolMotion::time_at_travel(double target, const std::string& tool_name) const {
+  if (!moves()) {
+    throw InputError(fmt::format("tool '{}' does not move, so it cannot define the stroke",
+                                 tool_name));
+  }
+  // Bracket: double the upper bound until the travel is reached (a held speed of zero or a
+  // displacement curve that stops short never gets there).
+  double low = 0.0;
+  double high = 1e-6;
+  while (travel(high) < target) {
+    low = high;
+    high *= 2.0;
+    if (high > 1e6) {
+      throw InputError(fmt::format(
+          "tool '{}': its motion curve never reaches the stroke of {} mm (it reaches {} mm)",
+          tool_name, target, travel(1e6)));
+    }
+  }
+  for (int i = 0; i < 200 && high - low > 1e-12 * high; ++i) {
+    const double mid = 0.5 * (low + high);
+    (travel(mid) < target ? low : high) = mid;
+  }
+  return high;
+}
+
+}  // namespace sf

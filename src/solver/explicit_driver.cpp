@@ -1,0 +1,259 @@
+#include "solver/explicit_driver.hpp"
+
+#include <fmt/core.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "core/errors.hpp"
+#include "core/log.hpp"
+#include "solver/central_difference.hpp"
+#include "solver/frame_output.hpp"
+#include "solver/progress.hpp"
+
+namespace sf {
+namespace {
+
+double kinetic_energy(const Model& model, const SolutionState& s) {
+  double e = 0.0;
+  const Eigen::Index n = s.v.cols();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    e += model.blank.mass[i] * s.v.col(i).squaredNorm() +
+         model.blank.rotational_inertia[i] * s.omega.col(i).squaredNorm();
+  }
+  return 0.5 * e;
+}
+
+// Accelerations from the nodal force balance, straight into the half-step velocity update.
+// Returns false if any value is not finite (the caller then finds and names the node).
+bool update_velocities(const Model& model, SolutionState& s, double weight) {
+  const Eigen::Index n = s.v.cols();
+  double check = 0.0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double inv_m = 1.0 / model.blank.mass[i];
+    const double inv_i = 1.0 / model.blank.rotational_inertia[i];
+    s.v.col(i) += (weight * inv_m) * (s.f_contact.col(i) - s.f_int.col(i));
+    s.omega.col(i) -= (weight * inv_i) * s.m_int.col(i);
+    check += s.v.col(i).sum() + s.omega.col(i).sum();
+  }
+  model.constraints.apply(s.v, s.omega);
+  return std::isfinite(check);
+}
+
+[[noreturn]] void throw_non_finite(const Model& model, const SolutionState& s) {
+  for (Eigen::Index i = 0; i < s.v.cols(); ++i) {
+    if (!s.v.col(i).allFinite() || !s.omega.col(i).allFinite()) {
+      throw InstabilityError(fmt::format(
+          "non-finite velocity at blank node {} (gmsh node {}) at t = {:.6e} s, cycle {}; "
+          "forces there: internal ({}, {}, {}) N, contact ({}, {}, {}) N",
+          i, model.blank.mesh.gmsh_node_tags[static_cast<std::size_t>(i)], s.time, s.cycle,
+          s.f_int(0, i), s.f_int(1, i), s.f_int(2, i), s.f_contact(0, i), s.f_contact(1, i),
+          s.f_contact(2, i)));
+    }
+  }
+  throw InstabilityError(fmt::format("non-finite state at t = {:.6e} s, cycle {}", s.time, s.cycle));
+}
+
+void check_energy(const Model& model, const SolutionState& s, double energy_scale) {
+  const Energies& e = s.energies;
+  const double ratio = model.config.control.energy_blowup_ratio;
+  if (e.total() > ratio * std::max(e.external_work, energy_scale)) {
+    throw InstabilityError(fmt::format(
+        "energy blow-up at t = {:.6e} s, cycle {}: total energy {:.6e} N mm exceeds {} x the "
+        "external work {:.6e} N mm (kinetic {:.4e}, internal {:.4e}, hourglass {:.4e}, contact "
+        "{:.4e}); reduce the time-step safety factor or the penalty scale",
+        s.time, s.cycle, e.total(), ratio, e.external_work, e.kinetic, e.internal, e.hourglass,
+        e.contact));
+  }
+}
+
+}  // namespace
+
+SolutionState make_initial_state(const Model& model) {
+  SolutionState s;
+  const Eigen::Index n = model.blank.mesh.nodes.cols();
+  s.x = model.blank.mesh.nodes;
+  s.v = Matrix3X::Zero(3, n);
+  s.omega = Matrix3X::Zero(3, n);
+  s.f_int = Matrix3X::Zero(3, n);
+  s.m_int = Matrix3X::Zero(3, n);
+  s.f_contact = Matrix3X::Zero(3, n);
+  s.f_int_previous = Matrix3X::Zero(3, n);
+  s.m_int_previous = Matrix3X::Zero(3, n);
+  s.half_thickness = VectorX::Zero(n);
+  s.shell = make_shell_state(static_cast<int>(model.blank.part.quads.cols()),
+                             model.config.blank.integration_points, model.config.blank.thickness);
+  s.tools.resize(model.tools.size());
+  return s;
+}
+
+double compute_time_step(const Model& model, const SolutionState& state) {
+  return model.config.control.time_step_safety *
+         compute_stable_time_step(model.blank.part, state.x, state.shell).dt;
+}
+
+double compute_forces(Model& model, SolutionState& s, double dt) {
+  s.f_int.setZero();
+  s.m_int.setZero();
+  s.f_contact.setZero();
+  double hourglass_power = 0.0;
+  try {
+    hourglass_power = compute_shell_internal_forces(model.blank.part, s.x, s.v, s.omega, dt,
+                                                    s.shell, s.f_int, s.m_int)
+                          .hourglass_power;
+  } catch (const InstabilityError& e) {
+    throw InstabilityError(
+        fmt::format("{} at t = {:.6e} s, cycle {}", e.what(), s.time, s.cycle));
+  }
+  // Half thickness per node: the mean over the elements around it.
+  s.half_thickness.setZero();
+  const QuadConn& quads = model.blank.part.quads;
+  for (Eigen::Index e = 0; e < quads.cols(); ++e) {
+    for (int a = 0; a < 4; ++a) {
+      s.half_thickness[quads(a, e)] += 0.5 * s.shell.thickness[static_cast<std::size_t>(e)];
+    }
+  }
+  s.half_thickness.array() *= model.blank.inverse_element_count.array();
+
+  s.energies.contact = 0.0;
+  for (ToolState& t : s.tools) {
+    t.force.setZero();
+    t.nodes_in_contact = 0;
+  }
+  for (ContactInterface& c : model.contacts) {
+    ToolState& tool = s.tools[static_cast<std::size_t>(c.tool)];
+    const ContactResult r =
+        compute_penalty_contact(c.pair, s.x, s.half_thickness, tool.displacement, s.f_contact);
+    tool.force += r.force_on_tool;
+    tool.nodes_in_contact += r.nodes_in_contact;
+    s.energies.contact += r.energy;
+  }
+  return hourglass_power;
+}
+
+void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previous) {
+  if (!update_velocities(model, s, velocity_update_weight(dt, dt_previous))) {
+    throw_non_finite(model, s);
+  }
+  s.x += dt * s.v;
+  s.time += dt;
+  s.cycle += 1;
+  s.dt = dt;
+
+  // Tools move to their positions at the new time; the old ones stay for the work increment.
+  for (std::size_t t = 0; t < s.tools.size(); ++t) {
+    s.tools[t].previous_displacement = s.tools[t].displacement;
+    s.tools[t].previous_force = s.tools[t].force;
+    s.tools[t].travel = model.tools[t].motion.travel(s.time);
+    s.tools[t].displacement = model.tools[t].motion.displacement(s.time);
+  }
+
+  s.f_int_previous.swap(s.f_int);
+  s.m_int_previous.swap(s.m_int);
+  const double hourglass_power = compute_forces(model, s, dt);
+
+  // Energies by the trapezoidal rule on the work increments.
+  Energies& e = s.energies;
+  double element_work = 0.0;
+  const Eigen::Index n = s.x.cols();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    element_work += 0.5 * dt *
+                    ((s.f_int.col(i) + s.f_int_previous.col(i)).dot(s.v.col(i)) +
+                     (s.m_int.col(i) + s.m_int_previous.col(i)).dot(s.omega.col(i)));
+  }
+  const double hourglass_work = hourglass_power * dt;
+  e.hourglass += hourglass_work;
+  e.internal += element_work - hourglass_work;
+  for (std::size_t t = 0; t < s.tools.size(); ++t) {
+    // The driver holds the tool against the blank's force on it: it does -F . dd of work.
+    const Vec3 step = s.tools[t].displacement - s.tools[t].previous_displacement;
+    e.external_work -= 0.5 * (s.tools[t].force + s.tools[t].previous_force).dot(step);
+    const double pushing = -s.tools[t].force.dot(model.tools[t].motion.direction());
+    s.tools[t].peak_force = std::max(s.tools[t].peak_force, pushing);
+  }
+  e.kinetic = kinetic_energy(model, s);
+}
+
+RunSummary run_explicit(Model& model, const RunOptions& options) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  const ControlConfig& control = model.config.control;
+  SolutionState s = make_initial_state(model);
+  for (std::size_t t = 0; t < s.tools.size(); ++t) {
+    s.tools[t].displacement = model.tools[t].motion.displacement(0.0);
+    s.tools[t].travel = model.tools[t].motion.travel(0.0);
+  }
+
+  std::unique_ptr<FrameOutput> output;
+  if (options.write_results) {
+    output = std::make_unique<FrameOutput>(model, options.output_directory);
+  }
+  compute_forces(model, s, 0.0);
+  if (output) {
+    output->write_frame(model, s);
+    output->append_history(model, s);
+  }
+
+  // Energy scale below which the blow-up check is silent: the blank's kinetic energy at the
+  // fastest tool speed, a thousandth of it.
+  double max_speed = 0.0;
+  for (const Tool& t : model.tools) {
+    for (int k = 0; k <= 100; ++k) {
+      max_speed = std::max(max_speed, std::abs(t.motion.speed(model.end_time * k / 100.0)));
+    }
+  }
+  const double energy_scale = std::max(1e-3 * 0.5 * model.blank.mass.sum() * max_speed * max_speed, 1e-30);
+
+  const double frame_interval = model.end_time / control.output_frames;
+  double next_frame_time = frame_interval;
+  const double initial_dt = model.time_step;
+  double dt_previous = 0.0;
+  Progress progress(model, control.progress_interval);
+
+  try {
+    while (s.time < model.end_time * (1.0 - 1e-12)) {
+      double dt = compute_time_step(model, s);
+      if (dt < 1e-3 * initial_dt) {
+        throw InstabilityError(fmt::format(
+            "time step collapsed to {:.3e} s (from {:.3e} s) at t = {:.6e} s, cycle {}: an "
+            "element is being crushed",
+            dt, initial_dt, s.time, s.cycle));
+      }
+      // Land exactly on output times and the end time.
+      dt = std::min(dt, next_frame_time - s.time);
+      dt = std::min(dt, model.end_time - s.time);
+      advance_one_step(model, s, dt, dt_previous);
+      dt_previous = dt;
+      if (s.time > 0.1 * model.end_time) {
+        s.peak_kinetic_ratio = std::max(s.peak_kinetic_ratio, s.energies.kinetic_ratio());
+      }
+      check_energy(model, s, energy_scale);
+
+      if (output && s.cycle % control.history_interval == 0) {
+        output->append_history(model, s);
+      }
+      if (s.time >= next_frame_time * (1.0 - 1e-12)) {
+        if (output) {
+          output->write_frame(model, s);
+        }
+        next_frame_time += frame_interval;
+      }
+      progress.report(model, s, false);
+    }
+  } catch (const InstabilityError&) {
+    if (output) {
+      output->append_history(model, s);
+      output->flush();
+    }
+    throw;
+  }
+  if (output) {
+    output->append_history(model, s);
+    output->flush();
+  }
+  progress.report(model, s, true);
+  const double wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  return make_run_summary(model, s, wall_seconds);
+}
+
+}  // namespace sf

@@ -1,0 +1,100 @@
+#include "solver/frame_output.hpp"
+
+#include "core/build_info.hpp"
+
+namespace sf {
+
+std::vector<std::string> history_columns(const Model& model) {
+  std::vector<std::string> columns = {"time",      "time_step", "kinetic_energy",
+                                      "internal_energy", "hourglass_energy", "contact_energy",
+                                      "external_work", "energy_balance_error"};
+  for (const Tool& t : model.tools) {
+    columns.push_back(t.name + "_travel");
+    columns.push_back(t.name + "_force");
+    columns.push_back(t.name + "_nodes_in_contact");
+  }
+  return columns;
+}
+
+FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& directory) {
+  std::vector<PartTopology> parts;
+  PartTopology blank;
+  blank.name = "blank";
+  blank.nodes_per_cell = 4;
+  blank.cells = model.blank.mesh.quads;
+  blank.reference_nodes = model.blank.mesh.nodes;
+  parts.push_back(std::move(blank));
+  for (const Tool& t : model.tools) {
+    PartTopology tool;
+    tool.name = t.name;
+    tool.nodes_per_cell = 3;
+    tool.cells = t.mesh.triangles;
+    tool.reference_nodes = t.mesh.nodes;
+    parts.push_back(std::move(tool));
+    tool_coordinates_.push_back(t.mesh.nodes);
+    tool_displacement_.push_back(Matrix3X::Zero(3, t.mesh.nodes.cols()));
+  }
+  writer_ = std::make_unique<ResultsWriter>(directory, std::move(parts), history_columns(model));
+  writer_->write_run_info("resolved_case", format_resolved_case(model.config));
+  writer_->write_run_info("version", build_info::version);
+  writer_->write_run_info("git_hash", build_info::git_hash);
+  writer_->write_run_info("build", std::string(build_info::build_type) + ", " +
+                                       build_info::compiler + ", flags: " + build_info::cxx_flags);
+  const Eigen::Index n_elements = model.blank.mesh.quads.cols();
+  displacement_.resize(3, model.blank.mesh.nodes.cols());
+  plastic_strain_.resize(n_elements);
+  stress_mid_.resize(6, n_elements);
+  stress_top_.resize(6, n_elements);
+  stress_bottom_.resize(6, n_elements);
+  row_.resize(history_columns(model).size());
+}
+
+void FrameOutput::write_frame(const Model& model, const SolutionState& s) {
+  displacement_ = s.x - model.blank.mesh.nodes;
+  compute_element_stress_output(model.blank.part, s.x, s.shell, stress_mid_, stress_top_,
+                                stress_bottom_, plastic_strain_);
+  std::vector<PartFrameView> frames;
+  PartFrameView blank{"blank", s.x, {}};
+  blank.fields = {
+      {"displacement", FieldCenter::node, 3, displacement_.data()},
+      {"velocity", FieldCenter::node, 3, s.v.data()},
+      {"contact_force", FieldCenter::node, 3, s.f_contact.data()},
+      {"thickness", FieldCenter::cell, 1, s.shell.thickness.data()},
+      {"plastic_strain", FieldCenter::cell, 1, plastic_strain_.data()},
+  };
+  if (model.config.output.stress_layers) {
+    blank.fields.push_back({"stress_mid", FieldCenter::cell, 6, stress_mid_.data()});
+    blank.fields.push_back({"stress_top", FieldCenter::cell, 6, stress_top_.data()});
+    blank.fields.push_back({"stress_bottom", FieldCenter::cell, 6, stress_bottom_.data()});
+  }
+  frames.push_back(std::move(blank));
+  for (std::size_t t = 0; t < model.tools.size(); ++t) {
+    const Vec3 d = s.tools[t].displacement;
+    tool_coordinates_[t] = model.tools[t].mesh.nodes.colwise() + d;
+    tool_displacement_[t].colwise() = d;
+    PartFrameView tool{model.tools[t].name, tool_coordinates_[t], {}};
+    tool.fields = {{"displacement", FieldCenter::node, 3, tool_displacement_[t].data()}};
+    frames.push_back(std::move(tool));
+  }
+  writer_->write_frame(s.time, static_cast<int>(s.cycle), frames);
+}
+
+void FrameOutput::append_history(const Model& model, const SolutionState& s) {
+  std::size_t k = 0;
+  const Energies& e = s.energies;
+  for (double value : {s.time, s.dt, e.kinetic, e.internal, e.hourglass, e.contact,
+                       e.external_work, e.balance_error()}) {
+    row_[k++] = value;
+  }
+  for (std::size_t t = 0; t < model.tools.size(); ++t) {
+    row_[k++] = s.tools[t].travel;
+    // Positive when the blank resists the tool's motion (the punch force).
+    row_[k++] = -s.tools[t].force.dot(model.tools[t].motion.direction());
+    row_[k++] = s.tools[t].nodes_in_contact;
+  }
+  writer_->append_history(row_);
+}
+
+void FrameOutput::flush() { writer_->flush_history(); }
+
+}  // namespace sf

@@ -1,0 +1,130 @@
+#include "solver/run_summary.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "core/build_info.hpp"
+#include "core/errors.hpp"
+
+namespace sf {
+
+RunSummary make_run_summary(const Model& model, const SolutionState& s, double wall_seconds) {
+  RunSummary r;
+  r.cycles = s.cycle;
+  r.end_time = s.time;
+  r.wall_seconds = wall_seconds;
+  r.elements = static_cast<int>(model.blank.mesh.quads.cols());
+  r.nodes = static_cast<int>(model.blank.mesh.nodes.cols());
+  if (r.cycles > 0 && r.elements > 0) {
+    r.ns_per_element_cycle = 1e9 * wall_seconds / (static_cast<double>(r.cycles) * r.elements);
+  }
+  r.energies = s.energies;
+  r.peak_kinetic_ratio = s.peak_kinetic_ratio;
+  r.added_mass_fraction = model.blank.added_mass / model.blank.physical_mass;
+  const auto [tmin, tmax] = std::minmax_element(s.shell.thickness.begin(), s.shell.thickness.end());
+  r.min_thickness = *tmin;
+  r.max_thickness = *tmax;
+  r.max_plastic_strain = *std::max_element(s.shell.eps_p.begin(), s.shell.eps_p.end());
+  for (std::size_t t = 0; t < model.tools.size(); ++t) {
+    ToolSummary ts;
+    ts.name = model.tools[t].name;
+    ts.travel = s.tools[t].travel;
+    ts.final_force = -s.tools[t].force.dot(model.tools[t].motion.direction());
+    ts.peak_force = s.tools[t].peak_force;
+    r.tools.push_back(ts);
+  }
+  const std::size_t first_draw_in_group = model.config.boundaries.size();
+  for (std::size_t d = 0; d < model.config.draw_ins.size(); ++d) {
+    const DrawInConfig& dc = model.config.draw_ins[d];
+    const NodeGroup& group = model.blank.groups[first_draw_in_group + d];
+    const Vec3 direction(dc.direction[0], dc.direction[1], dc.direction[2]);
+    double sum = 0.0;
+    for (int node : group.nodes) {
+      sum += (s.x.col(node) - model.blank.mesh.nodes.col(node)).dot(direction);
+    }
+    r.draw_ins.push_back({dc.name, sum / static_cast<double>(group.nodes.size()), dc.measured,
+                          dc.source});
+  }
+  return r;
+}
+
+std::string format_run_summary(const RunSummary& r) {
+  std::string text;
+  auto add = [&text](const std::string& line) { text += line + "\n"; };
+  add(fmt::format("Run summary"));
+  add(fmt::format("  cycles              {}", r.cycles));
+  add(fmt::format("  end time            {:.6e} s", r.end_time));
+  add(fmt::format("  wall time           {:.2f} s ({:.0f} ns per element-cycle, {} elements)",
+                  r.wall_seconds, r.ns_per_element_cycle, r.elements));
+  add(fmt::format("  energies [N mm]     kinetic {:.4e}, internal {:.4e}, hourglass {:.4e}, "
+                  "contact {:.4e}, external work {:.4e}",
+                  r.energies.kinetic, r.energies.internal, r.energies.hourglass,
+                  r.energies.contact, r.energies.external_work));
+  add(fmt::format("  energy balance      {:+.3e} (total - external work, relative)",
+                  r.energies.balance_error()));
+  add(fmt::format("  kinetic / internal  {:.4f} at the end, {:.4f} at most after 10% of the run",
+                  r.energies.kinetic_ratio(), r.peak_kinetic_ratio));
+  add(fmt::format("  added mass          {:.2f} %", 100.0 * r.added_mass_fraction));
+  add(fmt::format("  thickness           {:.4f} to {:.4f} mm", r.min_thickness, r.max_thickness));
+  add(fmt::format("  max plastic strain  {:.4f}", r.max_plastic_strain));
+  for (const ToolSummary& t : r.tools) {
+    add(fmt::format("  tool {:<14} travel {:8.3f} mm, force {:10.1f} N, peak {:10.1f} N", t.name,
+                    t.travel, t.final_force, t.peak_force));
+  }
+  for (const DrawInResult& d : r.draw_ins) {
+    if (d.measured >= 0.0) {
+      add(fmt::format("  draw-in {:<11} {:7.3f} mm   measured {:7.3f} mm   deviation {:+.1f} %  ({})",
+                      d.name, d.computed, d.measured, 100.0 * (d.computed - d.measured) / d.measured,
+                      d.source));
+    } else {
+      add(fmt::format("  draw-in {:<11} {:7.3f} mm", d.name, d.computed));
+    }
+  }
+  return text;
+}
+
+void write_run_summary_json(const RunSummary& r, const std::filesystem::path& file) {
+  nlohmann::json j;
+  j["version"] = build_info::version;
+  j["git_hash"] = build_info::git_hash;
+  j["cycles"] = r.cycles;
+  j["end_time_s"] = r.end_time;
+  j["wall_seconds"] = r.wall_seconds;
+  j["ns_per_element_cycle"] = r.ns_per_element_cycle;
+  j["elements"] = r.elements;
+  j["nodes"] = r.nodes;
+  j["energy_Nmm"] = {{"kinetic", r.energies.kinetic},
+                     {"internal", r.energies.internal},
+                     {"hourglass", r.energies.hourglass},
+                     {"contact", r.energies.contact},
+                     {"external_work", r.energies.external_work},
+                     {"balance_error", r.energies.balance_error()}};
+  j["kinetic_ratio_end"] = r.energies.kinetic_ratio();
+  j["kinetic_ratio_peak"] = r.peak_kinetic_ratio;
+  j["added_mass_fraction"] = r.added_mass_fraction;
+  j["min_thickness_mm"] = r.min_thickness;
+  j["max_thickness_mm"] = r.max_thickness;
+  j["max_plastic_strain"] = r.max_plastic_strain;
+  for (const ToolSummary& t : r.tools) {
+    j["tools"][t.name] = {{"travel_mm", t.travel}, {"final_force_N", t.final_force},
+                          {"peak_force_N", t.peak_force}};
+  }
+  for (const DrawInResult& d : r.draw_ins) {
+    nlohmann::json entry = {{"computed_mm", d.computed}};
+    if (d.measured >= 0.0) {
+      entry["measured_mm"] = d.measured;
+      entry["source"] = d.source;
+    }
+    j["draw_in"][d.name] = entry;
+  }
+  std::ofstream out(file);
+  if (!out) {
+    throw InputError(fmt::format("cannot write {}", file.string()));
+  }
+  out << j.dump(2) << "\n";
+}
+
+}  // namespace sf

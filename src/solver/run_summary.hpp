@@ -1,0 +1,50 @@
+#pragma once
+// What a finished run reports: printed at the end and written as summary.json beside the results,
+// for users and for the regression suite.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "model/model.hpp"
+#include "solver/solution_state.hpp"
+
+namespace sf {
+
+struct DrawInResult {
+  std::string name;
+  double computed = 0.0;  ///< mm
+  double measured = -1.0; ///< mm, < 0 when none was given
+  std::string source;
+};
+
+struct ToolSummary {
+  std::string name;
+  double travel = 0.0;      ///< mm, at the end
+  double final_force = 0.0; ///< N, pushing force along the motion at the end
+  double peak_force = 0.0;  ///< N
+};
+
+struct RunSummary {
+  long cycles = 0;
+  double end_time = 0.0;          ///< s
+  double wall_seconds = 0.0;      ///< s
+  double ns_per_element_cycle = 0.0;  ///< whole loop wall time per element and cycle
+  int elements = 0;
+  int nodes = 0;
+  Energies energies;
+  double peak_kinetic_ratio = 0.0;  ///< largest kinetic/internal after the first tenth
+  double added_mass_fraction = 0.0; ///< added / physical mass
+  double min_thickness = 0.0;       ///< mm
+  double max_thickness = 0.0;       ///< mm
+  double max_plastic_strain = 0.0;
+  std::vector<ToolSummary> tools;
+  std::vector<DrawInResult> draw_ins;
+};
+
+RunSummary make_run_summary(const Model& model, const SolutionState& state, double wall_seconds);
+/// The end-of-run summary as text for the console.
+std::string format_run_summary(const RunSummary& summary);
+/// Writes summary.json (machine-readable, with the version and git hash).
+void write_run_summary_json(const RunSummary& summary, const std::filesystem::path& file);
+
+}  // namespace sf
