@@ -32,12 +32,12 @@ struct HardeningConfig {
 
 struct MaterialConfig {
   enum class Type { elastic, von_mises };
-  std::string name;             ///< the table's key under [materials]
+  std::string name;  ///< the table's key under [materials]
   Type type = Type::von_mises;
-  double density = 0.0;         ///< tonne/mm^3
-  double young = 0.0;           ///< MPa
-  double poisson = 0.0;         ///< -
-  HardeningConfig hardening;    ///< used when type == von_mises
+  double density = 0.0;       ///< tonne/mm^3
+  double young = 0.0;         ///< MPa
+  double poisson = 0.0;       ///< -
+  HardeningConfig hardening;  ///< used when type == von_mises
 };
 
 /// A mesh source: a .geo file meshed by gmsh, or a ready .msh file.
@@ -49,10 +49,10 @@ struct MeshSourceConfig {
 
 struct BlankConfig {
   MeshSourceConfig mesh{.file = {}, .group = "blank"};  ///< group defaults to "blank"
-  std::string element = "quad";     ///< "quad" (Belytschko-Lin-Tsay)
-  double thickness = 0.0;           ///< mm, initial
-  int integration_points = 5;       ///< through the thickness (Gauss), 1..9
-  std::string material;             ///< name of a [materials.NAME] table
+  std::string element = "quad";                         ///< "quad" (Belytschko-Lin-Tsay)
+  double thickness = 0.0;                               ///< mm, initial
+  int integration_points = 5;                           ///< through the thickness (Gauss), 1..9
+  std::string material;                                 ///< name of a [materials.NAME] table
   double hourglass_coefficient = 0.1;  ///< viscous hourglass coefficient (Flanagan-Belytschko)
 };
 
@@ -70,10 +70,10 @@ struct ToolConfig {
 };
 
 struct ContactConfig {
-  std::string tool;                   ///< name of a [[tools]] entry
-  std::string search = "modified";    ///< "modified" (the only one in this release)
-  double penalty_scale = 0.1;         ///< scales the blank's membrane stiffness (see docs)
-  double friction = 0.0;              ///< Coulomb coefficient (not yet applied: must be 0)
+  std::string tool;                 ///< name of a [[tools]] entry
+  std::string search = "modified";  ///< "modified" (the only one in this release)
+  double penalty_scale = 0.1;       ///< scales the blank's membrane stiffness (see docs)
+  double friction = 0.0;            ///< Coulomb coefficient (not yet applied: must be 0)
 };
 
 struct BoundaryConfig {
@@ -86,25 +86,25 @@ struct BoundaryConfig {
 };
 
 struct ControlConfig {
-  double end_time = 0.0;         ///< s; 0 = run until the stroke is reached
-  double stroke = 0.0;           ///< mm of travel of `stroke_tool`; 0 = use end_time
-  std::string stroke_tool;       ///< tool whose travel defines the stroke (default: first moving)
-  int output_frames = 20;        ///< frames written, evenly spaced in time (plus the initial one)
-  int history_interval = 100;    ///< cycles between history rows
-  int progress_interval = 0;     ///< cycles between progress lines; 0 = about every 2 s of wall time
-  double time_step_safety = 0.9;  ///< factor on the elements' critical time step
-  double mass_scaling_dt = 0.0;  ///< s; target time step for mass scaling; 0 = off
+  double end_time = 0.0;       ///< s; 0 = run until the stroke is reached
+  double stroke = 0.0;         ///< mm of travel of `stroke_tool`; 0 = use end_time
+  std::string stroke_tool;     ///< tool whose travel defines the stroke (default: first moving)
+  int output_frames = 20;      ///< frames written, evenly spaced in time (plus the initial one)
+  int history_interval = 100;  ///< cycles between history rows
+  int progress_interval = 0;   ///< cycles between progress lines; 0 = about every 2 s of wall time
+  double time_step_safety = 0.9;      ///< factor on the elements' critical time step
+  double mass_scaling_dt = 0.0;       ///< s; target time step for mass scaling; 0 = off
   double energy_blowup_ratio = 10.0;  ///< stop when total energy exceeds this x external work (+1)
 };
 
 /// A draw-in measurement: the in-plane displacement of a blank node along a direction at the end of
 /// the run (mm), reported beside a measured value when one is given.
 struct DrawInConfig {
-  std::string name;                              ///< e.g. "DX"
-  std::string group;                             ///< physical group holding one blank node
+  std::string name;                                 ///< e.g. "DX"
+  std::string group;                                ///< physical group holding one blank node
   std::array<double, 3> direction{-1.0, 0.0, 0.0};  ///< unit vector (normalised on read)
-  double measured = -1.0;                        ///< mm; < 0 = no measured value
-  std::string source;                            ///< where the measured value comes from
+  double measured = -1.0;                           ///< mm; < 0 = no measured value
+  std::string source;                               ///< where the measured value comes from
 };
 
 struct OutputConfig {

@@ -1,0 +1,406 @@
+// read_case: case.toml -> CaseConfig. The reader starts from default-constructed structs (the
+// defaults live in case_config.hpp) and overwrites what the file gives, checking every key.
+#include "io/case_config.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "core/errors.hpp"
+#include "io/toml_reader.hpp"
+
+namespace sf {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Reads `key` as a path (relative to `folder`) to a file that must exist; returns it absolute.
+fs::path read_existing_file(const TomlSection& s, std::string_view key, const fs::path& folder,
+                            std::initializer_list<std::string_view> extensions) {
+  std::string text;
+  s.read_string(key, text, Presence::required);
+  const toml::node& node = *s.find(key);
+  const fs::path given(text);
+  std::string accepted;
+  bool extension_ok = false;
+  for (const auto ext : extensions) {
+    accepted += fmt::format("{}{}", accepted.empty() ? "" : " or ", ext);
+    extension_ok = extension_ok || given.extension() == ext;
+  }
+  if (!extension_ok) {
+    s.fail_value(key, fmt::format("a {} file", accepted));
+  }
+  const fs::path file = (given.is_absolute() ? given : folder / given).lexically_normal();
+  std::error_code error;
+  if (!fs::exists(file, error)) {
+    s.fail_at(node, s.key_path(key), fmt::format("file not found: {}", file.string()));
+  }
+  if (!fs::is_regular_file(file, error)) {
+    s.fail_at(node, s.key_path(key), fmt::format("not a regular file: {}", file.string()));
+  }
+  return file;
+}
+
+void read_mesh_source(const TomlSection& s, const fs::path& folder, MeshSourceConfig& mesh) {
+  mesh.file = read_existing_file(s, "mesh", folder, {".geo", ".msh"});
+  s.read_string("group", mesh.group);
+  s.read_number("element_size", mesh.element_size, at_least(0.0, "mm"));
+}
+
+void read_hardening(const TomlSection& s, HardeningConfig& hardening) {
+  using Law = HardeningConfig::Law;
+  s.read_choice("law", hardening.law, {{"swift", Law::swift}, {"linear", Law::linear}});
+  if (hardening.law == Law::swift) {
+    s.check_keys({"law", "K", "eps0", "n"});
+    s.read_number("K", hardening.swift_k, greater_than(0.0, "MPa"), Presence::required);
+    s.read_number("eps0", hardening.swift_eps0, at_least(0.0), Presence::required);
+    s.read_number("n", hardening.swift_n, interval(0.0, false, 1.0, true), Presence::required);
+  } else {
+    s.check_keys({"law", "yield_stress", "modulus"});
+    s.read_number("yield_stress", hardening.yield_stress, greater_than(0.0, "MPa"),
+                  Presence::required);
+    s.read_number("modulus", hardening.modulus, at_least(0.0, "MPa"), Presence::required);
+  }
+}
+
+void read_material(const TomlSection& s, MaterialConfig& material) {
+  using Type = MaterialConfig::Type;
+  s.check_keys({"type", "density", "young", "poisson", "hardening"});
+  s.read_choice("type", material.type,
+                {{"von_mises", Type::von_mises}, {"elastic", Type::elastic}});
+  s.read_number("density", material.density, greater_than(0.0, "tonne/mm^3"), Presence::required);
+  s.read_number("young", material.young, greater_than(0.0, "MPa"), Presence::required);
+  s.read_number("poisson", material.poisson, interval(-1.0, true, 0.5, true), Presence::required);
+  if (material.type == Type::elastic) {
+    if (s.has("hardening")) {
+      s.fail_forbidden("hardening",
+                       "an elastic material has no hardening (remove the table or "
+                       "set type = \"von_mises\")");
+    }
+    return;
+  }
+  read_hardening(*s.sub_table("hardening", Presence::required), material.hardening);
+}
+
+void read_materials(const TomlSection& top, std::vector<MaterialConfig>& materials) {
+  const TomlSection all = *top.sub_table("materials", Presence::required);
+  for (const auto& [key, node] : all.table()) {
+    const std::string name(key.str());
+    const std::string path = fmt::format("materials.{}", name);
+    const auto* table = node.as_table();
+    if (!table) {
+      all.fail_at(node, path,
+                  fmt::format("expected a table [{}], got {}", path, describe_value(node)));
+    }
+    MaterialConfig material;
+    material.name = name;
+    read_material(TomlSection(*table, path, all.file()), material);
+    materials.push_back(std::move(material));
+  }
+  if (materials.empty()) {
+    all.fail_at(all.table(), "materials", "expected at least one [materials.NAME] table, got none");
+  }
+}
+
+void read_blank(const TomlSection& top, const fs::path& folder, const CaseConfig& config,
+                BlankConfig& blank) {
+  const TomlSection s = *top.sub_table("blank", Presence::required);
+  s.check_keys({"mesh", "group", "element_size", "element", "thickness", "integration_points",
+                "material", "hourglass"});
+  read_mesh_source(s, folder, blank.mesh);
+  s.read_choice<std::string>("element", blank.element, {{"quad", "quad"}});
+  s.read_number("thickness", blank.thickness, greater_than(0.0, "mm"), Presence::required);
+  s.read_integer("integration_points", blank.integration_points, IntegerRange{.lo = 1, .hi = 9});
+  s.read_string("material", blank.material, Presence::required);
+  s.read_number("hourglass", blank.hourglass_coefficient, interval(0.0, false, 0.5, false));
+
+  bool found = false;
+  std::string names;
+  for (const auto& material : config.materials) {
+    found = found || material.name == blank.material;
+    names += fmt::format("{}{}", names.empty() ? "" : ", ", quote_toml_string(material.name));
+  }
+  if (!found) {
+    s.fail_value("material", fmt::format("the name of a [materials.NAME] table ({})", names));
+  }
+}
+
+void read_curve(const TomlSection& s, std::string_view key, CurveConfig& curve) {
+  const std::string path = s.key_path(key);
+  const toml::node* node = s.find(key);
+  if (!node) {
+    s.fail_missing(key, "an array of [time, value] points");
+  }
+  const auto* points = node->as_array();
+  if (!points || points->empty()) {
+    s.fail_value(key, "a non-empty array of [time, value] points");
+  }
+  for (std::size_t i = 0; i < points->size(); ++i) {
+    const toml::node& point_node = *points->get(i);
+    const std::string point_path = fmt::format("{}[{}]", path, i);
+    const auto* point = point_node.as_array();
+    std::optional<double> t, v;
+    if (point && point->size() == 2) {
+      t = number_of(*point->get(0));
+      v = number_of(*point->get(1));
+    }
+    if (!t || !v || !std::isfinite(*t) || !std::isfinite(*v)) {
+      s.fail_at(point_node, point_path,
+                fmt::format("expected a point [time (s), value] of 2 numbers, got {}",
+                            describe_value(point_node)));
+    }
+    if (*t < 0.0) {
+      s.fail_at(point_node, point_path, fmt::format("expected a time >= 0 (s), got {}", *t));
+    }
+    if (!curve.times.empty() && !(*t > curve.times.back())) {
+      s.fail_at(point_node, point_path,
+                fmt::format("expected times strictly increasing, got {} after {}",
+                            format_toml_number(*t), format_toml_number(curve.times.back())));
+    }
+    curve.times.push_back(*t);
+    curve.values.push_back(*v);
+  }
+}
+
+void read_motion(const TomlSection& s, MotionConfig& motion) {
+  using Type = MotionConfig::Type;
+  s.check_keys({"type", "direction", "curve"});
+  s.read_choice(
+      "type", motion.type,
+      {{"velocity", Type::velocity}, {"displacement", Type::displacement}, {"fixed", Type::fixed}},
+      Presence::required);
+  if (motion.type == Type::fixed) {
+    for (const auto key : {"direction", "curve"}) {
+      if (s.has(key)) {
+        s.fail_forbidden(key, "a fixed tool does not move");
+      }
+    }
+    return;
+  }
+  s.read_direction("direction", motion.direction);
+  read_curve(s, "curve", motion.curve);
+}
+
+void read_tools(const TomlSection& top, const fs::path& folder, std::vector<ToolConfig>& tools) {
+  const std::vector<TomlSection> sections = top.table_array("tools");
+  for (std::size_t i = 0; i < sections.size(); ++i) {
+    const TomlSection& s = sections[i];
+    s.check_keys({"name", "mesh", "group", "element_size", "motion"});
+    ToolConfig tool;
+    s.read_string("name", tool.name, Presence::required);
+    for (std::size_t j = 0; j < i; ++j) {
+      if (tools[j].name == tool.name) {
+        s.fail_at(*s.find("name"), s.key_path("name"),
+                  fmt::format("duplicate tool name {} (already used by tools[{}])",
+                              quote_toml_string(tool.name), j));
+      }
+    }
+    tool.mesh.group = tool.name;  // the default group is the tool's name
+    read_mesh_source(s, folder, tool.mesh);
+    if (const auto motion = s.sub_table("motion", Presence::optional)) {
+      read_motion(*motion, tool.motion);
+    }
+    tools.push_back(std::move(tool));
+  }
+}
+
+std::string tool_names(const CaseConfig& config) {
+  std::string names;
+  for (const auto& tool : config.tools) {
+    names += fmt::format("{}{}", names.empty() ? "" : ", ", quote_toml_string(tool.name));
+  }
+  return names.empty() ? "none defined" : names;
+}
+
+void read_contacts(const TomlSection& top, const CaseConfig& config,
+                   std::vector<ContactConfig>& contacts) {
+  const std::vector<TomlSection> sections = top.table_array("contact");
+  for (std::size_t i = 0; i < sections.size(); ++i) {
+    const TomlSection& s = sections[i];
+    s.check_keys({"tool", "search", "penalty_scale", "friction"});
+    ContactConfig contact;
+    s.read_string("tool", contact.tool, Presence::required);
+    if (!config.find_tool(contact.tool)) {
+      s.fail_value("tool", fmt::format("the name of a [[tools]] entry ({})", tool_names(config)));
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (contacts[j].tool == contact.tool) {
+        s.fail_at(*s.find("tool"), s.key_path("tool"),
+                  fmt::format("a second [[contact]] for tool {} (the first is contact[{}])",
+                              quote_toml_string(contact.tool), j));
+      }
+    }
+    s.read_choice<std::string>("search", contact.search, {{"modified", "modified"}});
+    s.read_number("penalty_scale", contact.penalty_scale, greater_than(0.0));
+    s.read_number("friction", contact.friction, at_least(0.0));
+    contacts.push_back(std::move(contact));
+  }
+}
+
+void read_boundaries(const TomlSection& top, std::vector<BoundaryConfig>& boundaries) {
+  using Type = BoundaryConfig::Type;
+  for (const TomlSection& s : top.table_array("boundary")) {
+    s.check_keys({"group", "type", "axis"});
+    BoundaryConfig boundary;
+    s.read_string("group", boundary.group, Presence::required);
+    s.read_choice("type", boundary.type, {{"symmetry", Type::symmetry}, {"fixed", Type::fixed}});
+    if (boundary.type == Type::symmetry) {
+      s.read_choice("axis", boundary.axis, {{"x", 0}, {"y", 1}, {"z", 2}}, Presence::required);
+    } else if (s.has("axis")) {
+      s.fail_forbidden("axis", "a fixed boundary holds every direction (axis is for symmetry)");
+    }
+    boundaries.push_back(std::move(boundary));
+  }
+}
+
+void read_draw_ins(const TomlSection& top, std::vector<DrawInConfig>& draw_ins) {
+  for (const TomlSection& s : top.table_array("draw_in")) {
+    s.check_keys({"name", "group", "direction", "measured", "source"});
+    DrawInConfig draw_in;
+    s.read_string("name", draw_in.name, Presence::required);
+    for (const auto& other : draw_ins) {
+      if (other.name == draw_in.name) {
+        s.fail_value("name", "a name not used by another [[draw_in]]");
+      }
+    }
+    s.read_string("group", draw_in.group, Presence::required);
+    s.read_direction("direction", draw_in.direction);
+    s.read_number("measured", draw_in.measured, at_least(0.0, "mm"));
+    s.read_string("source", draw_in.source, Presence::optional, true);
+    draw_ins.push_back(std::move(draw_in));
+  }
+}
+
+void read_control(const TomlSection& top, const CaseConfig& config, ControlConfig& control) {
+  const TomlSection s = *top.sub_table("control", Presence::required);
+  s.check_keys({"end_time", "stroke", "stroke_tool", "output_frames", "history_interval",
+                "progress_interval", "time_step_safety", "mass_scaling_dt", "energy_blowup_ratio"});
+  s.read_number("end_time", control.end_time, at_least(0.0, "s"));
+  s.read_number("stroke", control.stroke, at_least(0.0, "mm"));
+  if (control.end_time > 0.0 && control.stroke > 0.0) {
+    s.fail_at(*s.find("stroke"), s.key_path("stroke"),
+              fmt::format("expected exactly one of end_time and stroke > 0, got end_time = {} "
+                          "and stroke = {}",
+                          control.end_time, control.stroke));
+  }
+  if (!(control.end_time > 0.0) && !(control.stroke > 0.0)) {
+    s.fail_at(s.table(), "control.end_time/control.stroke",
+              "expected exactly one of end_time (s) and stroke (mm) > 0, got neither");
+  }
+  s.read_integer("output_frames", control.output_frames, IntegerRange{.lo = 1});
+  s.read_integer("history_interval", control.history_interval, IntegerRange{.lo = 1});
+  s.read_integer("progress_interval", control.progress_interval, IntegerRange{.lo = 0});
+  s.read_number("time_step_safety", control.time_step_safety, interval(0.0, true, 1.0, false));
+  s.read_number("mass_scaling_dt", control.mass_scaling_dt, at_least(0.0, "s"));
+  s.read_number("energy_blowup_ratio", control.energy_blowup_ratio, greater_than(1.0));
+
+  if (s.read_string("stroke_tool", control.stroke_tool)) {
+    const ToolConfig* tool = config.find_tool(control.stroke_tool);
+    if (!tool) {
+      s.fail_value("stroke_tool",
+                   fmt::format("the name of a [[tools]] entry ({})", tool_names(config)));
+    }
+    if (control.stroke > 0.0 && tool->motion.type == MotionConfig::Type::fixed) {
+      s.fail_value("stroke_tool", "the name of a tool whose motion is not fixed (stroke > 0)");
+    }
+    return;
+  }
+  for (const auto& tool : config.tools) {
+    if (tool.motion.type != MotionConfig::Type::fixed) {
+      control.stroke_tool = tool.name;
+      return;
+    }
+  }
+  if (control.stroke > 0.0) {
+    s.fail_at(*s.find("stroke"), s.key_path("stroke"),
+              "stroke > 0 needs a moving tool, but no [[tools]] entry has a motion that is "
+              "not fixed");
+  }
+}
+
+void read_output(const TomlSection& top, const fs::path& folder, OutputConfig& output) {
+  if (const auto s = top.sub_table("output", Presence::optional)) {
+    s->check_keys({"directory", "stress_layers"});
+    s->read_string("directory", output.directory);
+    s->read_bool("stress_layers", output.stress_layers);
+  }
+  const fs::path directory(output.directory);
+  if (directory.is_relative()) {
+    output.directory = (folder / directory).lexically_normal().string();
+  }
+}
+
+std::string read_text_file(const fs::path& file) {
+  std::error_code error;
+  if (!fs::exists(file, error)) {
+    throw InputError(fmt::format("{}: case file not found", file.string()));
+  }
+  if (!fs::is_regular_file(file, error)) {
+    throw InputError(fmt::format("{}: case file is not a regular file", file.string()));
+  }
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) {
+    throw InputError(fmt::format("{}: cannot read the case file", file.string()));
+  }
+  return text.str();
+}
+
+toml::table parse_toml(const std::string& text, const std::string& file) {
+  try {
+    return toml::parse(std::string_view(text), std::string_view(file));
+  } catch (const toml::parse_error& error) {
+    throw InputError(fmt::format("{}: TOML syntax error: {}", format_location(file, error.source()),
+                                 error.description()));
+  }
+}
+
+}  // namespace
+
+const MaterialConfig& CaseConfig::blank_material() const {
+  for (const auto& material : materials) {
+    if (material.name == blank.material) {
+      return material;
+    }
+  }
+  throw InputError(
+      fmt::format("{}: blank.material: no material named \"{}\"", file.string(), blank.material));
+}
+
+const ToolConfig* CaseConfig::find_tool(const std::string& name) const {
+  for (const auto& tool : tools) {
+    if (tool.name == name) {
+      return &tool;
+    }
+  }
+  return nullptr;
+}
+
+CaseConfig read_case(const fs::path& case_file) {
+  CaseConfig config;
+  config.file = fs::absolute(case_file).lexically_normal();
+  const std::string file = config.file.string();
+  const toml::table root = parse_toml(read_text_file(config.file), file);
+  const fs::path folder = config.file.parent_path();
+
+  const TomlSection top(root, "", file);
+  top.check_keys({"title", "units", "blank", "materials", "tools", "contact", "boundary", "draw_in",
+                  "control", "output"});
+  top.read_string("title", config.title, Presence::optional, true);
+  top.read_string("units", config.units);
+  read_materials(top, config.materials);
+  read_blank(top, folder, config, config.blank);
+  read_tools(top, folder, config.tools);
+  read_contacts(top, config, config.contacts);
+  read_boundaries(top, config.boundaries);
+  read_draw_ins(top, config.draw_ins);
+  read_control(top, config, config.control);
+  read_output(top, folder, config.output);
+  return config;
+}
+
+}  // namespace sf

@@ -1,0 +1,219 @@
+// format_resolved_case: CaseConfig -> TOML text that read_case reads back to the same CaseConfig.
+// Every key is written (defaults included, paths absolute); the units go in comments.
+#include <fmt/core.h>
+
+#include <string>
+
+#include "io/case_config.hpp"
+#include "io/toml_reader.hpp"
+
+namespace sf {
+
+namespace {
+
+/// Appends TOML lines to a string.
+class TomlWriter {
+ public:
+  void comment(std::string_view text) { line(fmt::format("# {}", text)); }
+  void header(std::string_view name) { line(fmt::format("\n[{}]", name)); }
+  void array_header(std::string_view name) { line(fmt::format("\n[[{}]]", name)); }
+
+  void string(std::string_view key, std::string_view value) {
+    entry(key, quote_toml_string(value), {});
+  }
+  void number(std::string_view key, double value, std::string_view unit = {}) {
+    entry(key, format_toml_number(value), unit);
+  }
+  void integer(std::string_view key, long long value, std::string_view unit = {}) {
+    entry(key, fmt::format("{}", value), unit);
+  }
+  void boolean(std::string_view key, bool value) { entry(key, value ? "true" : "false", {}); }
+  void vector(std::string_view key, const std::array<double, 3>& v) {
+    entry(key,
+          fmt::format("[{}, {}, {}]", format_toml_number(v[0]), format_toml_number(v[1]),
+                      format_toml_number(v[2])),
+          "unit vector");
+  }
+  void curve(std::string_view key, const CurveConfig& curve, std::string_view unit) {
+    std::string points;
+    for (std::size_t i = 0; i < curve.times.size(); ++i) {
+      points += fmt::format("{}[{}, {}]", i == 0 ? "" : ", ", format_toml_number(curve.times[i]),
+                            format_toml_number(curve.values[i]));
+    }
+    entry(key, fmt::format("[{}]", points), unit);
+  }
+
+  std::string take() { return std::move(text_); }
+
+ private:
+  void line(std::string_view text) {
+    text_ += text;
+    text_ += '\n';
+  }
+  void entry(std::string_view key, std::string_view value, std::string_view unit) {
+    std::string text = fmt::format("{} = {}", key, value);
+    if (!unit.empty()) {
+      text = fmt::format("{:<32}# {}", text + " ", unit);
+    }
+    line(text);
+  }
+
+  std::string text_;
+};
+
+/// A key as TOML writes it: bare when it can be, quoted otherwise.
+std::string format_key(std::string_view key) {
+  const bool bare = !key.empty() && key.find_first_not_of(
+                                        "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                        "abcdefghijklmnopqrstuvwxyz"
+                                        "0123456789_-") == std::string::npos;
+  return bare ? std::string(key) : quote_toml_string(key);
+}
+
+void write_mesh_source(TomlWriter& w, const MeshSourceConfig& mesh) {
+  w.string("mesh", mesh.file.string());
+  w.string("group", mesh.group);
+  w.number("element_size", mesh.element_size, "mm; 0 = the .geo file's own sizes");
+}
+
+void write_blank(TomlWriter& w, const BlankConfig& blank) {
+  w.header("blank");
+  write_mesh_source(w, blank.mesh);
+  w.string("element", blank.element);
+  w.number("thickness", blank.thickness, "mm");
+  w.integer("integration_points", blank.integration_points, "through the thickness");
+  w.string("material", blank.material);
+  w.number("hourglass", blank.hourglass_coefficient, "viscous hourglass coefficient");
+}
+
+void write_material(TomlWriter& w, const MaterialConfig& material) {
+  const std::string table = fmt::format("materials.{}", format_key(material.name));
+  w.header(table);
+  const bool elastic = material.type == MaterialConfig::Type::elastic;
+  w.string("type", elastic ? "elastic" : "von_mises");
+  w.number("density", material.density, "tonne/mm^3");
+  w.number("young", material.young, "MPa");
+  w.number("poisson", material.poisson);
+  if (elastic) {
+    return;
+  }
+  const HardeningConfig& h = material.hardening;
+  w.header(table + ".hardening");
+  if (h.law == HardeningConfig::Law::swift) {
+    w.string("law", "swift");
+    w.number("K", h.swift_k, "MPa; sigma_y = K (eps0 + eps_p)^n");
+    w.number("eps0", h.swift_eps0);
+    w.number("n", h.swift_n);
+  } else {
+    w.string("law", "linear");
+    w.number("yield_stress", h.yield_stress, "MPa; sigma_y = yield_stress + modulus eps_p");
+    w.number("modulus", h.modulus, "MPa");
+  }
+}
+
+void write_tool(TomlWriter& w, const ToolConfig& tool) {
+  w.array_header("tools");
+  w.string("name", tool.name);
+  write_mesh_source(w, tool.mesh);
+  w.header("tools.motion");
+  switch (tool.motion.type) {
+    case MotionConfig::Type::fixed:
+      w.string("type", "fixed");
+      return;
+    case MotionConfig::Type::velocity:
+      w.string("type", "velocity");
+      w.vector("direction", tool.motion.direction);
+      w.curve("curve", tool.motion.curve, "[[time (s), velocity (mm/s)], ...]");
+      return;
+    case MotionConfig::Type::displacement:
+      w.string("type", "displacement");
+      w.vector("direction", tool.motion.direction);
+      w.curve("curve", tool.motion.curve, "[[time (s), displacement (mm)], ...]");
+      return;
+  }
+}
+
+void write_contact(TomlWriter& w, const ContactConfig& contact) {
+  w.array_header("contact");
+  w.string("tool", contact.tool);
+  w.string("search", contact.search);
+  w.number("penalty_scale", contact.penalty_scale);
+  w.number("friction", contact.friction, "Coulomb coefficient");
+}
+
+void write_boundary(TomlWriter& w, const BoundaryConfig& boundary) {
+  w.array_header("boundary");
+  w.string("group", boundary.group);
+  if (boundary.type == BoundaryConfig::Type::fixed) {
+    w.string("type", "fixed");
+    return;
+  }
+  w.string("type", "symmetry");
+  static constexpr std::array<std::string_view, 3> axes{"x", "y", "z"};
+  w.string("axis", axes.at(static_cast<std::size_t>(boundary.axis)));
+}
+
+void write_draw_in(TomlWriter& w, const DrawInConfig& draw_in) {
+  w.array_header("draw_in");
+  w.string("name", draw_in.name);
+  w.string("group", draw_in.group);
+  w.vector("direction", draw_in.direction);
+  if (draw_in.measured >= 0.0) {
+    w.number("measured", draw_in.measured, "mm");
+  } else {
+    w.comment("measured: none");
+  }
+  w.string("source", draw_in.source);
+}
+
+void write_control(TomlWriter& w, const ControlConfig& c) {
+  w.header("control");
+  w.number("end_time", c.end_time, "s; 0 = run until the stroke is reached");
+  w.number("stroke", c.stroke, "mm; 0 = run until end_time");
+  if (c.stroke_tool.empty()) {
+    w.comment("stroke_tool: none (no tool moves)");
+  } else {
+    w.string("stroke_tool", c.stroke_tool);
+  }
+  w.integer("output_frames", c.output_frames);
+  w.integer("history_interval", c.history_interval, "cycles");
+  w.integer("progress_interval", c.progress_interval, "cycles; 0 = about every 2 s");
+  w.number("time_step_safety", c.time_step_safety);
+  w.number("mass_scaling_dt", c.mass_scaling_dt, "s; 0 = no mass scaling");
+  w.number("energy_blowup_ratio", c.energy_blowup_ratio);
+}
+
+}  // namespace
+
+std::string format_resolved_case(const CaseConfig& config) {
+  TomlWriter w;
+  w.comment(fmt::format("sheetform resolved case; units: {} (length, time, mass, force, stress)",
+                        config.units));
+  w.comment(fmt::format("read from {}; every default filled in, every path absolute",
+                        quote_toml_string(config.file.string())));
+  w.string("title", config.title);
+  w.string("units", config.units);
+  write_blank(w, config.blank);
+  for (const auto& material : config.materials) {
+    write_material(w, material);
+  }
+  for (const auto& tool : config.tools) {
+    write_tool(w, tool);
+  }
+  for (const auto& contact : config.contacts) {
+    write_contact(w, contact);
+  }
+  for (const auto& boundary : config.boundaries) {
+    write_boundary(w, boundary);
+  }
+  for (const auto& draw_in : config.draw_ins) {
+    write_draw_in(w, draw_in);
+  }
+  write_control(w, config.control);
+  w.header("output");
+  w.string("directory", config.output.directory);
+  w.boolean("stress_layers", config.output.stress_layers);
+  return w.take();
+}
+
+}  // namespace sf
