@@ -10,11 +10,11 @@ namespace sf {
 /// One part's mesh: a blank (quads) or a tool surface (triangles). Node numbering is local and
 /// compact (0..n-1); `gmsh_node_tags` keeps gmsh's tags for messages.
 struct PartMesh {
-  std::string name;                     ///< part name (blank, punch, ...)
-  Matrix3X nodes;                       ///< mm, column per node
+  std::string name;                         ///< part name (blank, punch, ...)
+  Matrix3X nodes;                           ///< mm, column per node
   std::vector<std::size_t> gmsh_node_tags;  ///< gmsh tag of each local node
-  QuadConn quads;                       ///< local node indices, counter-clockwise seen from +normal
-  TriConn triangles;                    ///< local node indices
+  QuadConn quads;     ///< local node indices, counter-clockwise seen from +normal
+  TriConn triangles;  ///< local node indices
 };
 
 /// A named set of nodes of a part (boundary curves, points), from a gmsh physical group.

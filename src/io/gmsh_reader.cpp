@@ -1,0 +1,494 @@
+// gmsh reader: one gmsh session per call, errors turned into InputError naming the file.
+#include "io/gmsh_reader.hpp"
+
+#include <omp.h>
+
+#include <gmsh.h>
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <deque>
+#include <exception>
+#include <functional>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <utility>
+
+#include "core/errors.hpp"
+#include "core/log.hpp"
+
+namespace sf {
+namespace {
+
+constexpr int gmsh_triangle3 = 2;  // gmsh element type numbers (gmsh reference manual, MSH format)
+constexpr int gmsh_quad4 = 3;
+
+std::string quoted(const std::filesystem::path& p) {
+  return "'" + p.string() + "'";
+}
+
+/// One gmsh session: initialize on construction, finalize on destruction. Restores the OpenMP
+/// thread count that gmsh::initialize (and meshing) set to gmsh's own value.
+class GmshSession {
+ public:
+  GmshSession() : saved_threads_(omp_get_max_threads()) {
+    try {
+      gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);  // no user gmshrc: deterministic
+      gmsh::option::setNumber("General.Terminal", verbosity() >= Verbosity::verbose ? 1 : 0);
+      gmsh::option::setNumber("General.AbortOnError", 2);  // errors throw instead of going on
+      gmsh::option::setNumber("General.NumThreads", 1);    // serial and deterministic
+      gmsh::logger::start();
+    } catch (...) {
+      omp_set_num_threads(saved_threads_);
+      throw std::runtime_error("gmsh could not be initialised");
+    }
+  }
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+  ~GmshSession() {
+    try {
+      gmsh::logger::stop();
+    } catch (...) {
+    }
+    try {
+      gmsh::finalize();
+    } catch (...) {
+    }
+    omp_set_num_threads(saved_threads_);
+  }
+
+  /// gmsh's error messages logged so far (lines starting with "Error"), joined by newlines.
+  static std::string logged_errors() {
+    std::vector<std::string> log;
+    try {
+      gmsh::logger::get(log);
+    } catch (...) {
+      return {};
+    }
+    std::string text;
+    for (const auto& line : log) {
+      if (line.rfind("Error", 0) == 0) {
+        text += (text.empty() ? "" : "\n") + line;
+      }
+    }
+    return text;
+  }
+
+ private:
+  int saved_threads_;
+};
+
+/// Runs one gmsh step; whatever gmsh throws (std::string, std::exception, anything) or logs as an
+/// error becomes an InputError naming the file and the step, with gmsh's messages.
+void run_gmsh_step(const std::filesystem::path& file, const std::string& step,
+                   const std::function<void()>& body) {
+  std::string thrown;
+  bool failed = false;
+  try {
+    body();
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::string& s) {
+    failed = true;
+    thrown = s;
+  } catch (const char* s) {
+    failed = true;
+    thrown = s ? s : "";
+  } catch (const std::exception& e) {
+    failed = true;
+    thrown = e.what();
+  } catch (...) {
+    failed = true;
+    thrown = "unknown gmsh exception";
+  }
+  const std::string logged = GmshSession::logged_errors();
+  if (!failed && logged.empty()) {
+    return;
+  }
+  std::string message = quoted(file) + ": gmsh failed while " + step;
+  if (!logged.empty()) {
+    message += ":\n" + logged;
+  }
+  if (!thrown.empty() && logged.find(thrown) == std::string::npos) {
+    message += (logged.empty() ? ": " : "\n") + thrown;
+  }
+  throw InputError(message);
+}
+
+std::string lower_extension(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+/// Checks what can be checked before gmsh starts: the file exists, its extension, the size.
+void check_mesh_source(const std::filesystem::path& file, double element_size) {
+  if (!std::filesystem::is_regular_file(file)) {  // gmsh::open does not report a missing file
+    throw InputError(quoted(file) + ": mesh file not found");
+  }
+  const std::string ext = lower_extension(file);
+  if (ext != ".geo" && ext != ".msh") {
+    throw InputError(quoted(file) + ": unknown mesh file extension '" + ext +
+                     "' (expected .geo or .msh)");
+  }
+  if (!(element_size >= 0.0) || !std::isfinite(element_size)) {
+    throw InputError(quoted(file) + ": element size must be >= 0 mm (0 = the file's own sizes)");
+  }
+}
+
+/// Opens (and for a .geo, meshes in 2-D) `file` in the current gmsh session.
+void open_and_mesh(const std::filesystem::path& file, double element_size, bool recombine) {
+  const bool geo = lower_extension(file) == ".geo";
+  const auto set_size = [&] {
+    if (geo && element_size > 0.0) {
+      gmsh::option::setNumber("Mesh.MeshSizeMax", element_size);
+      gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+    }
+  };
+  run_gmsh_step(file, "setting options", set_size);
+  run_gmsh_step(file, "reading the file", [&] { gmsh::open(file.string()); });
+  if (geo) {
+    run_gmsh_step(file, "meshing in 2-D", [&] {
+      set_size();
+      if (recombine) {
+        gmsh::option::setNumber("Mesh.RecombineAll", 1);
+        gmsh::option::setNumber("Mesh.Algorithm", 8);
+      }
+      gmsh::option::setNumber("Mesh.MaxNumThreads2D", 1);
+      gmsh::model::mesh::generate(2);
+    });
+  }
+}
+
+/// Copies the current gmsh model into plain data.
+GmshModel read_current_model(const std::filesystem::path& file) {
+  GmshModel model;
+  model.file = file;
+  run_gmsh_step(file, "reading the mesh", [&] {
+    std::vector<std::size_t> tags;
+    std::vector<double> coords, parametric;
+    gmsh::model::mesh::getNodes(tags, coords, parametric, -1, -1, false, false);
+    model.node_tags = tags;
+    model.node_coords.resize(3, static_cast<Eigen::Index>(tags.size()));
+    for (std::size_t i = 0; i < tags.size(); ++i) {
+      for (int d = 0; d < 3; ++d) {
+        model.node_coords(d, static_cast<Eigen::Index>(i)) = coords[3 * i + d];
+      }
+      model.node_index.emplace(tags[i], static_cast<int>(i));
+    }
+
+    gmsh::vectorpair dim_tags;
+    gmsh::model::getPhysicalGroups(dim_tags);
+    std::sort(dim_tags.begin(), dim_tags.end());
+    for (const auto& [dim, tag] : dim_tags) {
+      GmshPhysicalGroup group;
+      group.dim = dim;
+      group.tag = tag;
+      gmsh::model::getPhysicalName(dim, tag, group.name);
+      std::vector<int> entities;
+      gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+      std::map<int, std::size_t> block_of_type;
+      for (const int entity : entities) {
+        std::vector<int> types;
+        std::vector<std::vector<std::size_t>> element_tags, node_tags;
+        gmsh::model::mesh::getElements(types, element_tags, node_tags, dim, entity);
+        for (std::size_t k = 0; k < types.size(); ++k) {
+          auto [it, inserted] = block_of_type.emplace(types[k], group.elements.size());
+          if (inserted) {
+            GmshElementBlock block;
+            block.type = types[k];
+            int element_dim = 0, order = 0, primary = 0;
+            std::vector<double> local;
+            gmsh::model::mesh::getElementProperties(types[k], block.type_name, element_dim, order,
+                                                    block.nodes_per_element, local, primary);
+            group.elements.push_back(std::move(block));
+          }
+          GmshElementBlock& block = group.elements[it->second];
+          block.element_tags.insert(block.element_tags.end(), element_tags[k].begin(),
+                                    element_tags[k].end());
+          block.node_tags.insert(block.node_tags.end(), node_tags[k].begin(), node_tags[k].end());
+        }
+      }
+      std::vector<double> group_coords;
+      gmsh::model::mesh::getNodesForPhysicalGroup(dim, tag, group.node_tags, group_coords);
+      std::sort(group.node_tags.begin(), group.node_tags.end());
+      group.node_tags.erase(std::unique(group.node_tags.begin(), group.node_tags.end()),
+                            group.node_tags.end());
+      model.groups.push_back(std::move(group));
+    }
+  });
+
+  if (model.node_tags.empty()) {
+    throw InputError(quoted(file) + ": the mesh is empty (gmsh made no nodes)");
+  }
+  if (model.groups.empty()) {
+    throw InputError(quoted(file) +
+                     ": no physical groups (name the parts, e.g. Physical Surface(\"blank\") = "
+                     "{1};)");
+  }
+  std::size_t element_count = 0;
+  for (const auto& group : model.groups) {
+    for (const auto& block : group.elements) {
+      element_count += block.element_tags.size();
+    }
+  }
+  if (element_count == 0) {
+    throw InputError(quoted(file) + ": the mesh is empty (no elements in its physical groups)");
+  }
+  return model;
+}
+
+std::string dim_label(int dim) {
+  return std::to_string(dim) + "-D";
+}
+
+std::string group_label(const GmshPhysicalGroup& g) {
+  return (g.name.empty() ? "(unnamed, tag " + std::to_string(g.tag) + ")" : g.name) + " (" +
+         dim_label(g.dim) + ")";
+}
+
+/// Orients the elements of `elements` (each a list of 3 or 4 local node indices) consistently
+/// over shared edges, per connected piece, keeping the majority orientation. Returns for each
+/// element whether it must be reversed.
+std::vector<bool> orient_consistently(const std::vector<std::vector<int>>& elements,
+                                      const std::vector<std::size_t>& gmsh_tags,
+                                      const std::string& where) {
+  // Edge (low, high) -> uses: (element, +1 if the element runs low -> high, else -1).
+  std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> edges;
+  for (int e = 0; e < static_cast<int>(elements.size()); ++e) {
+    const auto& el = elements[e];
+    const int n = static_cast<int>(el.size());
+    for (int k = 0; k < n; ++k) {
+      const int a = el[k], b = el[(k + 1) % n];
+      edges[{std::min(a, b), std::max(a, b)}].push_back({e, a < b ? 1 : -1});
+    }
+  }
+  const auto edge_text = [&](const std::pair<int, int>& edge) {
+    return "edge between gmsh nodes " + std::to_string(gmsh_tags[edge.first]) + " and " +
+           std::to_string(gmsh_tags[edge.second]);
+  };
+  struct Neighbour {
+    int element;               ///< the other element
+    int relation;              ///< sign[element] = relation * sign[this one] when consistent
+    std::pair<int, int> edge;  ///< the shared edge, for messages
+  };
+  std::vector<std::vector<Neighbour>> neighbours(elements.size());
+  for (const auto& [edge, uses] : edges) {
+    if (uses.size() > 2) {
+      throw InputError(where + ": the " + edge_text(edge) + " is shared by " +
+                       std::to_string(uses.size()) + " elements (a non-manifold surface)");
+    }
+    if (uses.size() == 2) {
+      // The two elements agree when they run the shared edge in opposite directions.
+      const int relation = -uses[0].second * uses[1].second;
+      neighbours[uses[0].first].push_back({uses[1].first, relation, edge});
+      neighbours[uses[1].first].push_back({uses[0].first, relation, edge});
+    }
+  }
+
+  std::vector<int> sign(elements.size(), 0);  // +1 keep, -1 reverse, 0 not yet visited
+  for (std::size_t seed = 0; seed < elements.size(); ++seed) {
+    if (sign[seed] != 0) {
+      continue;
+    }
+    std::vector<int> piece;
+    std::deque<int> queue{static_cast<int>(seed)};
+    sign[seed] = 1;
+    while (!queue.empty()) {
+      const int e = queue.front();
+      queue.pop_front();
+      piece.push_back(e);
+      for (const Neighbour& n : neighbours[e]) {
+        const int wanted = n.relation * sign[e];
+        if (sign[n.element] == 0) {
+          sign[n.element] = wanted;
+          queue.push_back(n.element);
+        } else if (sign[n.element] != wanted) {
+          throw InputError(where + ": the surface is not orientable (orientation conflict at the " +
+                           edge_text(n.edge) + ")");
+        }
+      }
+    }
+    const auto reversed =
+        std::count_if(piece.begin(), piece.end(), [&](int e) { return sign[e] < 0; });
+    if (2 * static_cast<std::size_t>(reversed) > piece.size()) {  // keep the majority orientation
+      for (const int e : piece) {
+        sign[e] = -sign[e];
+      }
+    }
+  }
+  std::vector<bool> reverse(elements.size());
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    reverse[e] = sign[e] < 0;
+  }
+  return reverse;
+}
+
+}  // namespace
+
+const GmshPhysicalGroup* GmshModel::find_group(const std::string& name, int dim) const {
+  for (const auto& g : groups) {  // sorted by (dim, tag): the lowest dimension comes first
+    if (g.name == name && (dim < 0 || g.dim == dim)) {
+      return &g;
+    }
+  }
+  return nullptr;
+}
+
+std::string GmshModel::list_groups() const {
+  std::string text;
+  for (const auto& g : groups) {
+    text += (text.empty() ? "" : ", ") + group_label(g);
+  }
+  return text.empty() ? "none" : text;
+}
+
+GmshModel load_gmsh_model(const std::filesystem::path& file, double element_size, bool recombine) {
+  check_mesh_source(file, element_size);
+  GmshSession session;
+  open_and_mesh(file, element_size, recombine);
+  return read_current_model(file);
+}
+
+void write_msh(const std::filesystem::path& geo_file, double element_size, bool recombine,
+               const std::filesystem::path& msh_out) {
+  check_mesh_source(geo_file, element_size);
+  GmshSession session;
+  open_and_mesh(geo_file, element_size, recombine);
+  read_current_model(geo_file);  // the same checks as load_gmsh_model (empty mesh, no groups)
+  run_gmsh_step(msh_out, "writing the mesh", [&] {
+    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+    gmsh::option::setNumber("Mesh.Binary", 0);
+    gmsh::option::setNumber("Mesh.SaveAll", 0);
+    gmsh::write(msh_out.string());
+  });
+  if (!std::filesystem::is_regular_file(msh_out)) {
+    throw InputError(quoted(msh_out) + ": gmsh did not write the mesh file");
+  }
+}
+
+PartMesh extract_part_mesh(const GmshModel& model, const std::string& group,
+                           const std::string& part_name) {
+  const std::string where = quoted(model.file) + ", physical group '" + group + "'";
+  const GmshPhysicalGroup* g = model.find_group(group, 2);
+  if (g == nullptr) {
+    const GmshPhysicalGroup* other = model.find_group(group);
+    throw InputError(quoted(model.file) + ": no 2-D physical group '" + group + "'" +
+                     (other ? " (there is one of dimension " + std::to_string(other->dim) + ")"
+                            : std::string()) +
+                     "; groups in the file: " + model.list_groups());
+  }
+
+  // Local numbering: the group's nodes in ascending gmsh tag order.
+  PartMesh part;
+  part.name = part_name;
+  std::set<std::size_t> tags;
+  for (const auto& block : g->elements) {
+    if (block.type != gmsh_triangle3 && block.type != gmsh_quad4) {
+      throw InputError(where + ": element type '" + block.type_name + "' (gmsh type " +
+                       std::to_string(block.type) +
+                       ") is not supported; use 4-node quadrangles or 3-node triangles "
+                       "(first order, Mesh.ElementOrder = 1)");
+    }
+    tags.insert(block.node_tags.begin(), block.node_tags.end());
+  }
+  if (tags.empty()) {
+    throw InputError(where + ": the group has no elements");
+  }
+  part.gmsh_node_tags.assign(tags.begin(), tags.end());
+  std::unordered_map<std::size_t, int> local;
+  part.nodes.resize(3, static_cast<Eigen::Index>(part.gmsh_node_tags.size()));
+  for (std::size_t i = 0; i < part.gmsh_node_tags.size(); ++i) {
+    const auto it = model.node_index.find(part.gmsh_node_tags[i]);
+    if (it == model.node_index.end()) {
+      throw InputError(where + ": element node " + std::to_string(part.gmsh_node_tags[i]) +
+                       " has no coordinates");
+    }
+    part.nodes.col(static_cast<Eigen::Index>(i)) = model.node_coords.col(it->second);
+    local.emplace(part.gmsh_node_tags[i], static_cast<int>(i));
+  }
+
+  // All elements, quads first, as local node lists.
+  std::vector<std::vector<int>> elements;
+  std::vector<std::size_t> element_tags;
+  for (const int type : {gmsh_quad4, gmsh_triangle3}) {
+    for (const auto& block : g->elements) {
+      if (block.type != type) {
+        continue;
+      }
+      const std::size_t n = static_cast<std::size_t>(block.nodes_per_element);
+      for (std::size_t e = 0; e < block.element_tags.size(); ++e) {
+        std::vector<int> el(n);
+        for (std::size_t k = 0; k < n; ++k) {
+          el[k] = local.at(block.node_tags[e * n + k]);
+        }
+        std::vector<int> sorted = el;
+        std::sort(sorted.begin(), sorted.end());
+        if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+          throw InputError(where + ": element " + std::to_string(block.element_tags[e]) +
+                           " is degenerate (a node repeats)");
+        }
+        elements.push_back(std::move(el));
+        element_tags.push_back(block.element_tags[e]);
+      }
+    }
+  }
+
+  const std::vector<bool> reverse = orient_consistently(elements, part.gmsh_node_tags, where);
+  int quad_count = 0, triangle_count = 0;
+  for (const auto& el : elements) {
+    (el.size() == 4 ? quad_count : triangle_count)++;
+  }
+  part.quads.resize(4, quad_count);
+  part.triangles.resize(3, triangle_count);
+  int q = 0, t = 0;
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    std::vector<int> el = elements[e];
+    if (reverse[e]) {
+      std::reverse(el.begin() + 1, el.end());  // keeps the first node: (a b c d) -> (a d c b)
+    }
+    if (el.size() == 4) {
+      part.quads.col(q++) << el[0], el[1], el[2], el[3];
+    } else {
+      part.triangles.col(t++) << el[0], el[1], el[2];
+    }
+  }
+  return part;
+}
+
+NodeGroup extract_node_group(const GmshModel& model, const PartMesh& part,
+                             const std::string& group) {
+  std::vector<std::size_t> tags;
+  bool found = false;
+  for (const auto& g : model.groups) {
+    if (g.name == group) {
+      found = true;
+      tags.insert(tags.end(), g.node_tags.begin(), g.node_tags.end());
+    }
+  }
+  if (!found) {
+    throw InputError(quoted(model.file) + ": no physical group '" + group +
+                     "'; groups in the file: " + model.list_groups());
+  }
+  std::unordered_map<std::size_t, int> local;
+  for (std::size_t i = 0; i < part.gmsh_node_tags.size(); ++i) {
+    local.emplace(part.gmsh_node_tags[i], static_cast<int>(i));
+  }
+  NodeGroup result;
+  result.name = group;
+  for (const std::size_t tag : tags) {
+    const auto it = local.find(tag);
+    if (it == local.end()) {
+      throw InputError(quoted(model.file) + ", physical group '" + group + "': gmsh node " +
+                       std::to_string(tag) + " is not a node of part '" + part.name + "'");
+    }
+    result.nodes.push_back(it->second);
+  }
+  std::sort(result.nodes.begin(), result.nodes.end());
+  result.nodes.erase(std::unique(result.nodes.begin(), result.nodes.end()), result.nodes.end());
+  return result;
+}
+
+}  // namespace sf
