@@ -1,0 +1,306 @@
+#include "io/results_writer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <stdexcept>
+#include <system_error>
+
+#include "core/errors.hpp"
+#include "core/log.hpp"
+#include "io/hdf5_file.hpp"
+
+namespace sf {
+namespace {
+
+constexpr const char* results_file_name = "results.h5";
+constexpr int format_version = 1;
+constexpr hsize_t history_chunk_rows = 1024;
+
+/// Names become HDF5 link names, XML attribute values and file names: keep them plain.
+void check_name(const std::string& name, const std::string& what) {
+  const bool plain = std::all_of(name.begin(), name.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+           c == '-' || c == '.';
+  });
+  if (name.empty() || !plain || name.front() == '.') {
+    throw std::invalid_argument(what + " '" + name +
+                                "' is not a valid name (use letters, digits, '_', '-', '.'; "
+                                "not starting with '.')");
+  }
+}
+
+std::string part_path(const std::string& part) {
+  return "/parts/" + part;
+}
+
+std::string frame_path(const std::string& part, int index) {
+  return part_path(part) + "/frames/" + frame_group_name(index);
+}
+
+hsize_t to_hsize(Eigen::Index n) {
+  return static_cast<hsize_t>(n);
+}
+
+}  // namespace
+
+std::string frame_group_name(int index) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%06d", index);
+  return buffer;
+}
+
+ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
+                             std::vector<PartTopology> parts,
+                             std::vector<std::string> history_columns)
+    : history_columns_(std::move(history_columns)) {
+  // Check everything before touching the disk.
+  std::set<std::string> seen;
+  for (const PartTopology& part : parts) {
+    check_name(part.name, "part name");
+    if (!seen.insert(part.name).second) {
+      throw std::invalid_argument("part '" + part.name + "' is given twice");
+    }
+    if (part.nodes_per_cell != 3 && part.nodes_per_cell != 4) {
+      throw std::invalid_argument("part '" + part.name + "': nodes per cell must be 3 or 4, not " +
+                                  std::to_string(part.nodes_per_cell));
+    }
+    if (part.cells.rows() != part.nodes_per_cell) {
+      throw std::invalid_argument("part '" + part.name + "': connectivity has " +
+                                  std::to_string(part.cells.rows()) + " rows, expected " +
+                                  std::to_string(part.nodes_per_cell));
+    }
+    const Eigen::Index node_count = part.reference_nodes.cols();
+    if (part.cells.size() > 0 &&
+        (part.cells.minCoeff() < 0 || part.cells.maxCoeff() >= node_count)) {
+      throw std::invalid_argument("part '" + part.name +
+                                  "': connectivity refers to a node outside 0.." +
+                                  std::to_string(node_count - 1));
+    }
+  }
+  seen.clear();
+  for (const std::string& column : history_columns_) {
+    check_name(column, "history column");
+    if (!seen.insert(column).second) {
+      throw std::invalid_argument("history column '" + column + "' is given twice");
+    }
+  }
+
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error) {
+    throw InputError("cannot create results directory '" + directory.string() +
+                     "': " + error.message());
+  }
+  directory_ = std::filesystem::absolute(directory).lexically_normal();
+
+  try {
+    h5::File file(results_file(), h5::FileMode::truncate);
+    file.write_attribute("/", "format", std::string("sheetform results"));
+    file.write_attribute("/", "format_version", format_version);
+    file.create_group("/parts");
+    for (const PartTopology& part : parts) {
+      const std::string path = part_path(part.name);
+      const hsize_t cells = to_hsize(part.cells.cols());
+      const hsize_t nodes = to_hsize(part.reference_nodes.cols());
+      file.write(
+          path + "/connectivity",
+          std::span<const int>(part.cells.data(), static_cast<std::size_t>(part.cells.size())),
+          {cells, static_cast<hsize_t>(part.nodes_per_cell)});
+      file.write(path + "/reference_coordinates",
+                 std::span<const double>(part.reference_nodes.data(),
+                                         static_cast<std::size_t>(part.reference_nodes.size())),
+                 {nodes, 3});
+      file.write_attribute(path, "nodes_per_cell", part.nodes_per_cell);
+      file.create_group(path + "/frames");
+
+      PartRecord record;
+      record.grid.name = part.name;
+      record.grid.nodes_per_cell = part.nodes_per_cell;
+      record.grid.node_count = static_cast<std::size_t>(nodes);
+      record.grid.cell_count = static_cast<std::size_t>(cells);
+      record.grid.connectivity_dataset = path + "/connectivity";
+      parts_.push_back(std::move(record));
+    }
+    file.create_group("/history");
+    std::string column_list;
+    for (const std::string& column : history_columns_) {
+      file.create_extendible("/history/" + column, history_chunk_rows);
+      column_list += (column_list.empty() ? "" : ",") + column;
+    }
+    file.write_attribute("/history", "columns", column_list);
+    file.create_group("/run");
+    file.close();
+  } catch (const h5::Error& e) {
+    throw InputError("cannot write results in '" + directory_.string() + "': " + e.what());
+  }
+  write_xdmf_files();
+}
+
+ResultsWriter::~ResultsWriter() {
+  try {
+    flush_history();
+  } catch (const std::exception& e) {
+    log_warning("history rows not written: {}\n", e.what());
+  }
+}
+
+std::filesystem::path ResultsWriter::xdmf_file(const std::string& part) const {
+  return directory_ / (part + ".xdmf");
+}
+
+const ResultsWriter::PartRecord& ResultsWriter::find_part(const std::string& name) const {
+  for (const PartRecord& record : parts_) {
+    if (record.grid.name == name) {
+      return record;
+    }
+  }
+  throw std::invalid_argument("results: unknown part '" + name + "'");
+}
+
+void ResultsWriter::check_frame(double time, const std::vector<PartFrameView>& parts) const {
+  const std::string frame = "results frame " + std::to_string(frame_count_);
+  if (!std::isfinite(time) || (frame_count_ > 0 && !(time > last_time_))) {
+    throw std::invalid_argument(frame + ": time " + std::to_string(time) +
+                                " must be finite and greater than the previous frame's " +
+                                std::to_string(last_time_));
+  }
+  if (parts.size() != parts_.size()) {
+    throw std::invalid_argument(frame + ": " + std::to_string(parts.size()) +
+                                " part(s) given, expected every one of the " +
+                                std::to_string(parts_.size()) + " parts once");
+  }
+  std::set<std::string> seen_parts;
+  for (const PartFrameView& view : parts) {
+    const PartRecord& record = find_part(view.part);
+    if (!seen_parts.insert(view.part).second) {
+      throw std::invalid_argument(frame + ": part '" + view.part + "' given twice");
+    }
+    if (static_cast<std::size_t>(view.coordinates.cols()) != record.grid.node_count) {
+      throw std::invalid_argument(
+          frame + ", part '" + view.part + "': " + std::to_string(view.coordinates.cols()) +
+          " node coordinates, expected " + std::to_string(record.grid.node_count));
+    }
+    std::set<std::string> seen_fields;
+    for (const FieldView& field : view.fields) {
+      const std::string where = frame + ", part '" + view.part + "', field '" + field.name + "'";
+      check_name(field.name, frame + ", part '" + view.part + "': field");
+      if (field.name == "coordinates" || !seen_fields.insert(field.name).second) {
+        throw std::invalid_argument(where + ": name reserved or given twice");
+      }
+      if (field.components != 1 && field.components != 3 && field.components != 6) {
+        throw std::invalid_argument(where + ": " + std::to_string(field.components) +
+                                    " components; expected 1, 3 or 6");
+      }
+      if (field.data == nullptr) {
+        throw std::invalid_argument(where + ": no data");
+      }
+    }
+  }
+}
+
+void ResultsWriter::write_frame(double time, int cycle, const std::vector<PartFrameView>& parts) {
+  check_frame(time, parts);
+  const int index = frame_count_;
+  std::vector<XdmfFrame> new_frames(parts_.size());
+  h5::File file(results_file(), h5::FileMode::read_write);
+  for (const PartFrameView& view : parts) {
+    const auto record_index = static_cast<std::size_t>(&find_part(view.part) - parts_.data());
+    const XdmfPart& grid = parts_[record_index].grid;
+    const std::string group = frame_path(view.part, index);
+    if (file.exists(group)) {
+      file.remove(group);  // left by an earlier attempt that failed half-way
+    }
+    XdmfFrame& frame = new_frames[record_index];
+    frame.time = time;
+    frame.cycle = cycle;
+    frame.coordinates_dataset = group + "/coordinates";
+    file.write(frame.coordinates_dataset,
+               std::span<const double>(view.coordinates.data(), grid.node_count * 3),
+               {grid.node_count, 3});
+    for (const FieldView& field : view.fields) {
+      const std::size_t rows =
+          field.center == FieldCenter::node ? grid.node_count : grid.cell_count;
+      const std::size_t columns = static_cast<std::size_t>(field.components);
+      XdmfAttribute attribute{field.name, field.center, field.components, group + "/" + field.name};
+      file.write(attribute.dataset, std::span<const double>(field.data, rows * columns),
+                 {rows, columns});
+      frame.attributes.push_back(std::move(attribute));
+    }
+    file.write_attribute(group, "time", time);
+    file.write_attribute(group, "cycle", cycle);
+  }
+  const std::size_t history_rows = write_history_rows(file);
+  file.close();
+  commit_history(history_rows);
+
+  // The frame is on disk: only now may the .xdmf files list it.
+  for (std::size_t i = 0; i < parts_.size(); ++i) {
+    parts_[i].frames.push_back(std::move(new_frames[i]));
+  }
+  frame_count_ = index + 1;
+  last_time_ = time;
+  write_xdmf_files();
+}
+
+void ResultsWriter::append_history(std::span<const double> row) {
+  if (row.size() != history_columns_.size()) {
+    throw std::invalid_argument("history row with " + std::to_string(row.size()) +
+                                " value(s), expected " + std::to_string(history_columns_.size()) +
+                                " (one per history column)");
+  }
+  history_buffer_.insert(history_buffer_.end(), row.begin(), row.end());
+}
+
+void ResultsWriter::flush_history() {
+  if (history_buffer_.empty()) {
+    return;
+  }
+  h5::File file(results_file(), h5::FileMode::read_write);
+  const std::size_t rows = write_history_rows(file);
+  file.close();
+  commit_history(rows);
+}
+
+std::size_t ResultsWriter::write_history_rows(h5::File& file) const {
+  const std::size_t columns = history_columns_.size();
+  if (columns == 0 || history_buffer_.empty()) {
+    return 0;
+  }
+  const std::size_t rows = history_buffer_.size() / columns;
+  std::vector<double> column_values(rows);
+  for (std::size_t c = 0; c < columns; ++c) {
+    for (std::size_t r = 0; r < rows; ++r) {
+      column_values[r] = history_buffer_[r * columns + c];
+    }
+    // Written at a fixed offset, so a retry after a failure does not duplicate rows.
+    file.write_rows("/history/" + history_columns_[c], history_rows_written_, column_values);
+  }
+  return rows;
+}
+
+void ResultsWriter::commit_history(std::size_t rows) {
+  history_rows_written_ += rows;
+  history_buffer_.clear();
+}
+
+void ResultsWriter::write_run_info(const std::string& key, const std::string& text) {
+  check_name(key, "run information key");
+  h5::File file(results_file(), h5::FileMode::read_write);
+  const std::string path = "/run/" + key;
+  if (file.exists(path)) {
+    file.remove(path);
+  }
+  file.write_string(path, text);
+  file.close();
+}
+
+void ResultsWriter::write_xdmf_files() const {
+  for (const PartRecord& record : parts_) {
+    write_file_atomically(xdmf_file(record.grid.name),
+                          make_xdmf(record.grid, record.frames, results_file_name));
+  }
+}
+
+}  // namespace sf
