@@ -1,0 +1,7 @@
+#pragma once
+// The Belytschko-Lin-Tsay shell, in one include: part and state, internal forces, lumped mass,
+// time step and stress output. See docs/element-and-material.md.
+#include "element/shell_forces.hpp"
+#include "element/shell_mass.hpp"
+#include "element/shell_output.hpp"
+#include "element/shell_part.hpp"

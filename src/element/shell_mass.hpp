@@ -1,0 +1,27 @@
+#pragma once
+// Lumped mass, rotational inertia and critical time step of a shell part.
+#include "core/types.hpp"
+#include "element/shell_part.hpp"
+
+namespace sf {
+
+/// Lumped nodal mass (tonne) and rotational inertia (tonne mm^2). Each element gives
+/// m_e / 4 = rho t A / 4 to each of its nodes, and alpha m_e / 4 of rotational inertia with
+/// alpha = (A + t^2) / 4 (mm^2; see rotational_inertia_factor). `mass` and `rotational_inertia`
+/// are resized to x.cols() and overwritten. Throws InstabilityError on a degenerate element.
+void compute_lumped_mass(const ShellPart& part, const Matrix3X& x, const ShellState& state,
+                         VectorX& mass, VectorX& rotational_inertia);
+
+/// Critical time step of a part and the element that limits it.
+struct StableStep {
+  double dt = 0.0;   ///< s, before any safety factor
+  int element = -1;  ///< index of the limiting element (-1 for an empty part)
+};
+
+/// dt = min over elements of L / c, with c = sqrt(E / (rho (1 - nu^2))) the plate wave speed and
+/// L = A / max(side length) the LS-DYNA default characteristic length of a quad shell (ISDO = 0).
+/// Throws InstabilityError on a degenerate element.
+StableStep compute_stable_time_step(const ShellPart& part, const Matrix3X& x,
+                                    const ShellState& state);
+
+}  // namespace sf

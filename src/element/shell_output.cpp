@@ -1,0 +1,66 @@
+#include "element/shell_output.hpp"
+
+#include <cmath>
+
+#include "element/shell_geometry.hpp"
+
+namespace sf {
+
+namespace {
+
+Stress6 rotate_to_global(const Mat3& frame, double sxx, double syy, double sxy, double syz,
+                         double sxz) {
+  Mat3 s;
+  s << sxx, sxy, sxz, sxy, syy, syz, sxz, syz, 0.0;
+  const Mat3 g = frame * s * frame.transpose();
+  Stress6 out;
+  out << g(0, 0), g(1, 1), g(2, 2), g(0, 1), g(1, 2), g(0, 2);
+  return out;
+}
+
+}  // namespace
+
+void compute_element_stress_output(const ShellPart& part, const Matrix3X& x,
+                                   const ShellState& state, ShellStressOutput& out) {
+  compute_element_stress_output(part, x, state, out.mid, out.top, out.bottom, out.eps_p);
+}
+
+void compute_element_stress_output(const ShellPart& part, const Matrix3X& x,
+                                   const ShellState& state, StressColumns& mid, StressColumns& top,
+                                   StressColumns& bottom, VectorX& eps_p) {
+  const int n_el = static_cast<int>(part.quads.cols());
+  const int np = state.n_points;
+  mid.resize(6, n_el);
+  top.resize(6, n_el);
+  bottom.resize(6, n_el);
+  eps_p.resize(n_el);
+  ShellGeometry g;
+  for (int e = 0; e < n_el; ++e) {
+    compute_shell_geometry_or_throw(gather_quad(x, part.quads, e), e, "output", g);
+    const std::size_t base = static_cast<std::size_t>(e) * np;
+    const std::size_t lo = base + (np - 1) / 2;  // central point(s)
+    const std::size_t hi = base + np / 2;
+    mid.col(e) = rotate_to_global(
+        g.frame, 0.5 * (state.sxx[lo] + state.sxx[hi]), 0.5 * (state.syy[lo] + state.syy[hi]),
+        0.5 * (state.sxy[lo] + state.sxy[hi]), state.syz[e], state.sxz[e]);
+    const std::size_t k_top = base + np - 1;
+    top.col(e) =
+        rotate_to_global(g.frame, state.sxx[k_top], state.syy[k_top], state.sxy[k_top], 0.0, 0.0);
+    bottom.col(e) =
+        rotate_to_global(g.frame, state.sxx[base], state.syy[base], state.sxy[base], 0.0, 0.0);
+    double ep = 0.0;
+    for (int k = 0; k < np; ++k) {
+      ep += 0.5 * part.section.weight[k] * state.eps_p[base + k];
+    }
+    eps_p(e) = ep;
+  }
+}
+
+double von_mises(const Stress6& s) {
+  const double a = s(0) - s(1);
+  const double b = s(1) - s(2);
+  const double c = s(2) - s(0);
+  return std::sqrt(0.5 * (a * a + b * b + c * c) + 3.0 * (s(3) * s(3) + s(4) * s(4) + s(5) * s(5)));
+}
+
+}  // namespace sf

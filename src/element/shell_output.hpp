@@ -1,0 +1,35 @@
+#pragma once
+// Element stress output of a shell part, in global components.
+#include "core/types.hpp"
+#include "element/shell_part.hpp"
+
+namespace sf {
+
+/// 6 x n_elements stresses (MPa), components (xx, yy, zz, xy, yz, xz) in the global frame.
+using StressColumns = Eigen::Matrix<double, 6, Eigen::Dynamic>;
+using Stress6 = Eigen::Matrix<double, 6, 1>;
+
+/// Per-element output for post-processing.
+struct ShellStressOutput {
+  StressColumns mid;     ///< at the mid-plane (middle point; mean of the two central points for
+                         ///< an even count), with the transverse shear Q / t
+  StressColumns top;     ///< at the outermost point on the zeta = +1 side (transverse shear 0)
+  StressColumns bottom;  ///< at the outermost point on the zeta = -1 side (transverse shear 0)
+  VectorX eps_p;         ///< thickness-mean equivalent plastic strain (Gauss weighted), -
+};
+
+/// Fills `out` (resized) from the state, rotating each element's corotational stresses with the
+/// element frame at the coordinates x (mm). Throws InstabilityError on a degenerate element.
+void compute_element_stress_output(const ShellPart& part, const Matrix3X& x,
+                                   const ShellState& state, ShellStressOutput& out);
+
+/// The same, into caller-owned arrays (resized to 6 x n_elements and n_elements): stresses (MPa)
+/// at the mid-plane, top and bottom, and the thickness-mean equivalent plastic strain (-).
+void compute_element_stress_output(const ShellPart& part, const Matrix3X& x,
+                                   const ShellState& state, StressColumns& mid, StressColumns& top,
+                                   StressColumns& bottom, VectorX& eps_p);
+
+/// Von Mises equivalent stress (MPa) of (xx, yy, zz, xy, yz, xz).
+double von_mises(const Stress6& s);
+
+}  // namespace sf

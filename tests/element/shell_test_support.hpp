@@ -1,0 +1,60 @@
+#pragma once
+// Small helpers shared by the shell element tests.
+#include <cmath>
+
+#include "element/shell_forces.hpp"
+#include "element/shell_part.hpp"
+
+namespace sf::test {
+
+inline constexpr double kE = 210000.0;   // MPa, steel
+inline constexpr double kNu = 0.3;       // -
+inline constexpr double kRho = 7.85e-9;  // tonne/mm^3
+
+inline ShellPart make_part(const QuadConn& quads, const Material& material, int n_points = 5,
+                           double hourglass = 0.1) {
+  ShellPart p;
+  p.quads = quads;
+  p.section = make_gauss_section(n_points);
+  p.material = material;
+  p.density = kRho;
+  p.hourglass_coefficient = hourglass;
+  return p;
+}
+
+/// One internal-force pass with freshly zeroed force arrays.
+struct StepOut {
+  Matrix3X f, m;
+  ShellForceResult r;
+};
+inline StepOut run_step(const ShellPart& part, const Matrix3X& x_end, const Matrix3X& v,
+                        const Matrix3X& w, double dt, ShellState& st) {
+  StepOut o{Matrix3X::Zero(3, x_end.cols()), Matrix3X::Zero(3, x_end.cols()), {}};
+  o.r = compute_shell_internal_forces(part, x_end, v, w, dt, st, o.f, o.m);
+  return o;
+}
+
+/// Rotation matrix by `angle` (rad) about the unit `axis`.
+inline Mat3 rotation(const Vec3& axis, double angle) {
+  return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+}
+
+/// The classic 5-element membrane patch (MacNeal & Harder 1985), 0.24 x 0.12 scaled by 100:
+/// 24 x 12 mm, in the z = 0 plane. Nodes 4..7 are interior.
+inline Matrix3X patch_nodes() {
+  Matrix3X x(3, 8);
+  x << 0.0, 24.0, 24.0, 0.0, 4.0, 18.0, 16.0, 8.0,  //
+      0.0, 0.0, 12.0, 12.0, 2.0, 3.0, 8.0, 8.0,     //
+      0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0;
+  return x;
+}
+inline QuadConn patch_quads() {
+  QuadConn q(4, 5);
+  q << 0, 1, 2, 3, 4,  //
+      1, 2, 3, 0, 5,   //
+      5, 6, 7, 4, 6,   //
+      4, 5, 6, 7, 7;
+  return q;
+}
+
+}  // namespace sf::test
