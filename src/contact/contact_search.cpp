@@ -1,0 +1,23 @@
+#include "contact/contact_search.hpp"
+
+#include <fmt/core.h>
+
+#include "contact/modified_search.hpp"
+#include "core/errors.hpp"
+
+namespace sf {
+
+std::unique_ptr<ContactSearch> make_contact_search(std::string_view name,
+                                                   const TriangleSurface& surface) {
+  if (name == "modified") {
+    return std::make_unique<ModifiedSearch>(surface);
+  }
+  if (name == "modified_brute_force") {
+    return std::make_unique<ModifiedBruteForceSearch>(surface);
+  }
+  throw InputError(fmt::format(
+      "tool '{}': unknown contact search '{}' (accepted: modified, modified_brute_force)",
+      surface.name(), name));
+}
+
+}  // namespace sf

@@ -1,0 +1,61 @@
+#pragma once
+// The contact search interface: the closest feature of a rigid tool surface to a point.
+#include <array>
+#include <memory>
+#include <string_view>
+
+#include "core/types.hpp"
+#include "mesh/triangle_surface.hpp"
+
+namespace sf {
+
+/// The closest feature of a tool surface to a point (reference frame of the tool).
+struct ClosestPoint {
+  static constexpr int max_set_size = 8;
+  enum class Feature { face, edge, vertex };
+
+  int triangle = -1;  ///< one triangle holding the closest point (-1: nothing within the cutoff);
+                      ///< the lowest index of the tie set, so the answer is deterministic
+  Feature feature = Feature::face;  ///< where `point` lies on `triangle`: inside, on an edge or
+                                    ///< at a vertex (barycentric coordinates within 1e-12 of 0)
+  double distance = 0;              ///< unsigned distance D, mm
+  double signed_distance = 0;  ///< D with the sign of the oriented surface normal (positive on the
+                               ///< normal's side), mm
+  Vec3 point = Vec3::Zero();   ///< closest point on the surface, mm
+  /// Unit contact normal on the POSITIVE side of the oriented surface, i.e. the gradient of
+  /// `signed_distance` with respect to the query point: the face normal for a face hit; for an
+  /// edge or vertex hit (p - point) / D, negated if the point lies on the negative side
+  /// (continuous across convex ridges). When D ~ 0 (below the tie tolerance) the normalised mean
+  /// normal of the triangles in `set`.
+  Vec3 normal = Vec3::UnitZ();
+  /// (T1, T2, T3) of `point` in `triangle` as in the paper: point = x1 + T1 (x2 - x1) +
+  /// T2 (x3 - x1), T3 = 1 - T1 - T2; i.e. the weights of nodes 2, 3 and 1 of the triangle.
+  Vec3 barycentric = Vec3::Zero();
+  /// All triangles whose distance equals the minimum within the tie tolerance (a shared edge or
+  /// vertex), ascending; at most `max_set_size`: beyond that `set_truncated` is true.
+  std::array<int, max_set_size> set{};
+  int set_size = 0;
+  bool set_truncated = false;
+};
+
+/// Finds the closest point of a rigid triangle surface to a query point.
+class ContactSearch {
+ public:
+  virtual ~ContactSearch() = default;
+  /// Finds the closest point of the surface to p (reference frame, mm) among features within
+  /// `cutoff` (mm, may be +infinity); out.triangle = -1 if none. Does not allocate; thread-safe
+  /// (const, no shared scratch).
+  virtual void find_closest(const Vec3& p, double cutoff, ClosestPoint& out) const = 0;
+  /// The name this search is chosen by (case file key).
+  virtual std::string_view name() const = 0;
+};
+
+/// Makes the search called `name` over `surface` (which must outlive it):
+///  - "modified": the paper's search (closest triangle over all triangles), accelerated by a
+///    uniform grid of triangle bounding boxes; exactly the brute-force answer;
+///  - "modified_brute_force": the same, testing every triangle per query (the paper's cost).
+/// Throws InputError for an unknown name, listing the accepted ones.
+std::unique_ptr<ContactSearch> make_contact_search(std::string_view name,
+                                                   const TriangleSurface& surface);
+
+}  // namespace sf

@@ -1,0 +1,274 @@
+#include "mesh/triangle_surface.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "core/errors.hpp"
+
+namespace sf {
+
+namespace {
+
+/// A triangle is degenerate when |e1 x e2| (twice its area) is below this fraction of its longest
+/// edge squared, i.e. its smallest height is below ~1e-12 of its longest edge: such a triangle
+/// has no usable normal and makes the projection system [e1 e2 n] singular.
+constexpr double degenerate_area_ratio = 1e-12;
+
+}  // namespace
+
+TriangleSurface::TriangleSurface(std::string name, Matrix3X nodes, TriConn triangles)
+    : name_(std::move(name)), nodes_(std::move(nodes)), triangles_(std::move(triangles)) {
+  const int nn = num_nodes();
+  const int nt = num_triangles();
+  for (int t = 0; t < nt; ++t) {
+    for (int a = 0; a < 3; ++a) {
+      const int v = triangles_(a, t);
+      if (v < 0 || v >= nn) {
+        throw InputError(fmt::format("tool '{}': triangle {} has node index {} outside [0, {})",
+                                     name_, t, v, nn));
+      }
+    }
+    if (triangles_(0, t) == triangles_(1, t) || triangles_(1, t) == triangles_(2, t) ||
+        triangles_(0, t) == triangles_(2, t)) {
+      throw InputError(fmt::format("tool '{}': triangle {} repeats a node ({}, {}, {})", name_, t,
+                                   triangles_(0, t), triangles_(1, t), triangles_(2, t)));
+    }
+    const Vec3 x1 = nodes_.col(triangles_(0, t));
+    const Vec3 e1 = nodes_.col(triangles_(1, t)) - x1;
+    const Vec3 e2 = nodes_.col(triangles_(2, t)) - x1;
+    const double longest2 = std::max({e1.squaredNorm(), e2.squaredNorm(), (e2 - e1).squaredNorm()});
+    if (!(e1.cross(e2).norm() > degenerate_area_ratio * longest2)) {
+      throw InputError(
+          fmt::format("tool '{}': triangle {} (nodes {}, {}, {}) is degenerate (zero area)", name_,
+                      t, triangles_(0, t), triangles_(1, t), triangles_(2, t)));
+    }
+  }
+
+  // Node -> triangle adjacency, CSR, triangles ascending within each node.
+  node_triangle_offsets_.assign(nn + 1, 0);
+  for (int t = 0; t < nt; ++t) {
+    for (int a = 0; a < 3; ++a) {
+      ++node_triangle_offsets_[triangles_(a, t) + 1];
+    }
+  }
+  for (int i = 0; i < nn; ++i) {
+    node_triangle_offsets_[i + 1] += node_triangle_offsets_[i];
+  }
+  node_triangles_.assign(node_triangle_offsets_[nn], 0);
+  std::vector<int> fill(node_triangle_offsets_.begin(), node_triangle_offsets_.end() - 1);
+  for (int t = 0; t < nt; ++t) {
+    for (int a = 0; a < 3; ++a) {
+      node_triangles_[fill[triangles_(a, t)]++] = t;
+    }
+  }
+  compute_normals();
+}
+
+void TriangleSurface::compute_normals() {
+  const int nn = num_nodes();
+  const int nt = num_triangles();
+  triangle_normals_.resize(3, nt);
+  for (int t = 0; t < nt; ++t) {
+    const Vec3 x1 = nodes_.col(triangles_(0, t));
+    const Vec3 n = (nodes_.col(triangles_(1, t)) - x1).cross(nodes_.col(triangles_(2, t)) - x1);
+    triangle_normals_.col(t) = n.normalized();
+  }
+  node_normals_.setZero(3, nn);
+  for (int i = 0; i < nn; ++i) {
+    Vec3 sum = Vec3::Zero();
+    for (int k = node_triangle_offsets_[i]; k < node_triangle_offsets_[i + 1]; ++k) {
+      sum += triangle_normals_.col(node_triangles_[k]);
+    }
+    const double len = sum.norm();
+    if (len > 1e-12) {
+      node_normals_.col(i) = sum / len;
+    }
+  }
+}
+
+void TriangleSurface::flip_triangles(const std::vector<char>& flip) {
+  for (int t = 0; t < num_triangles(); ++t) {
+    if (flip[t]) {
+      std::swap(triangles_(1, t), triangles_(2, t));
+    }
+  }
+  compute_normals();
+}
+
+namespace {
+
+/// Closest point of triangle (a, b, c) to p: squared distance and whether the point lies inside
+/// the triangle (a face hit). Orthogonal projection with barycentric coordinates from the 2x2
+/// Gram system; outside, the least of the three clamped edge projections.
+std::pair<double, bool> closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b,
+                                            const Vec3& c, Vec3& closest) {
+  const Vec3 e1 = b - a, e2 = c - a, r = p - a;
+  const double g11 = e1.dot(e1), g12 = e1.dot(e2), g22 = e2.dot(e2);
+  const double r1 = r.dot(e1), r2 = r.dot(e2);
+  const double det = g11 * g22 - g12 * g12;
+  const double s = (g22 * r1 - g12 * r2) / det;
+  const double u = (g11 * r2 - g12 * r1) / det;
+  if (s >= 0 && u >= 0 && s + u <= 1) {
+    closest = a + s * e1 + u * e2;
+    return {(p - closest).squaredNorm(), true};
+  }
+  double best = std::numeric_limits<double>::infinity();
+  const std::array<std::pair<Vec3, Vec3>, 3> edges{{{a, b}, {b, c}, {c, a}}};
+  for (const auto& [q0, q1] : edges) {
+    const Vec3 e = q1 - q0;
+    const double t = std::clamp((p - q0).dot(e) / e.squaredNorm(), 0.0, 1.0);
+    const Vec3 q = q0 + t * e;
+    const double d2 = (p - q).squaredNorm();
+    if (d2 < best) {
+      best = d2;
+      closest = q;
+    }
+  }
+  return {best, false};
+}
+
+}  // namespace
+
+void orient_surface(TriangleSurface& surface, const Matrix3X& blank_nodes) {
+  const int nt = surface.num_triangles();
+  const TriConn& tri = surface.triangles();
+
+  // Edges: (lower node, higher node, triangle, +1 if the triangle runs lower -> higher).
+  struct EdgeUse {
+    int lo, hi, t, dir;
+  };
+  std::vector<EdgeUse> uses;
+  uses.reserve(3 * nt);
+  for (int t = 0; t < nt; ++t) {
+    for (int a = 0; a < 3; ++a) {
+      const int u = tri(a, t), v = tri((a + 1) % 3, t);
+      uses.push_back({std::min(u, v), std::max(u, v), t, u < v ? 1 : -1});
+    }
+  }
+  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
+    return x.lo != y.lo ? x.lo < y.lo : (x.hi != y.hi ? x.hi < y.hi : x.t < y.t);
+  });
+  // Neighbour lists (CSR): for each triangle, (neighbour, same_direction) over shared edges.
+  std::vector<int> count(nt + 1, 0);
+  std::vector<std::array<int, 4>> links;  // t, neighbour, same direction (1/0), unused
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i;
+    while (j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi) {
+      ++j;
+    }
+    if (j - i > 2) {
+      throw InputError(
+          fmt::format("tool '{}': edge ({}, {}) is shared by {} triangles (non-manifold surface)",
+                      surface.name(), uses[i].lo, uses[i].hi, j - i));
+    }
+    if (j - i == 2) {
+      const int same = uses[i].dir == uses[i + 1].dir ? 1 : 0;
+      links.push_back({uses[i].t, uses[i + 1].t, same, 0});
+      links.push_back({uses[i + 1].t, uses[i].t, same, 0});
+    }
+    i = j;
+  }
+  std::sort(links.begin(), links.end());
+  for (const auto& l : links) {
+    ++count[l[0] + 1];
+  }
+  for (int t = 0; t < nt; ++t) {
+    count[t + 1] += count[t];
+  }
+
+  // Breadth-first propagation of a consistent orientation, component by component.
+  std::vector<int> component(nt, -1);
+  std::vector<char> flip(nt, 0);
+  std::vector<int> queue;
+  queue.reserve(nt);
+  int num_components = 0;
+  for (int seed = 0; seed < nt; ++seed) {
+    if (component[seed] >= 0) {
+      continue;
+    }
+    const int c = num_components++;
+    component[seed] = c;
+    queue.clear();
+    queue.push_back(seed);
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const int t = queue[head];
+      for (int k = count[t]; k < count[t + 1]; ++k) {
+        const int u = links[k][1];
+        // Consistent neighbours run a shared edge in opposite directions.
+        const char want = static_cast<char>(flip[t] ^ links[k][2]);
+        if (component[u] < 0) {
+          component[u] = c;
+          flip[u] = want;
+          queue.push_back(u);
+        } else if (flip[u] != want) {
+          throw InputError(fmt::format(
+              "tool '{}': the surface is not orientable (triangles {} and {} cannot be given a "
+              "consistent orientation; a Moebius-like strip?)",
+              surface.name(), t, u));
+        }
+      }
+    }
+  }
+  surface.flip_triangles(flip);
+
+  // Side votes per component: face hits (weighted 1/distance) and, as a fall-back, all hits.
+  const int nb = static_cast<int>(blank_nodes.cols());
+  if (nb == 0 || nt == 0) {
+    return;
+  }
+  const int stride = std::max(1, (nb + 1999) / 2000);
+  std::vector<double> face_vote(num_components, 0.0), any_vote(num_components, 0.0);
+  std::vector<double> best_d2(num_components);
+  std::vector<int> best_t(num_components);
+  std::vector<char> best_face(num_components);
+  std::vector<Vec3> best_q(num_components);
+  const Matrix3X& x = surface.nodes();
+  for (int b = 0; b < nb; b += stride) {
+    const Vec3 p = blank_nodes.col(b);
+    std::fill(best_d2.begin(), best_d2.end(), std::numeric_limits<double>::infinity());
+    for (int t = 0; t < nt; ++t) {
+      Vec3 q = Vec3::Zero();
+      const auto [d2, face] =
+          closest_on_triangle(p, x.col(tri(0, t)), x.col(tri(1, t)), x.col(tri(2, t)), q);
+      const int c = component[t];
+      if (d2 < best_d2[c]) {
+        best_d2[c] = d2;
+        best_t[c] = t;
+        best_face[c] = face;
+        best_q[c] = q;
+      }
+    }
+    for (int c = 0; c < num_components; ++c) {
+      const double d = std::sqrt(best_d2[c]);
+      if (!(d > 0) || !std::isfinite(d)) {
+        continue;  // on the surface: no side
+      }
+      // Side of p w.r.t. the closest triangle's plane (exact for face hits; for edge and vertex
+      // hits the plane of one of the triangles there, hence only a fall-back).
+      const double side = surface.triangle_normals().col(best_t[c]).dot(p - best_q[c]);
+      const double vote = (side > 0 ? 1.0 : (side < 0 ? -1.0 : 0.0)) / d;
+      any_vote[c] += vote;
+      if (best_face[c]) {
+        face_vote[c] += vote;
+      }
+    }
+  }
+  std::vector<char> side_flip(nt, 0);
+  bool any_flip = false;
+  for (int t = 0; t < nt; ++t) {
+    const int c = component[t];
+    const double vote = face_vote[c] != 0.0 ? face_vote[c] : any_vote[c];
+    side_flip[t] = vote < 0 ? 1 : 0;
+    any_flip = any_flip || side_flip[t];
+  }
+  if (any_flip) {
+    surface.flip_triangles(side_flip);
+  }
+}
+
+}  // namespace sf

@@ -1,0 +1,205 @@
+// Penalty contact: force law, energy gradient, stiffness and its cap, and the point-mass bounce.
+// Sources: the gap and force law of src/contact/penalty_contact.hpp (Wriggers 2002, ch. 2 and 4);
+// the bounce closed form (contact time pi sqrt(m/k), restitution 1, peak penetration
+// v0 sqrt(m/k)) from /work/shared/REFERENCES.md, "Analytic checks", grade B.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "contact/contact_search.hpp"
+#include "contact/penalty_contact.hpp"
+#include "core/errors.hpp"
+#include "test_meshes.hpp"
+
+namespace sf {
+namespace {
+
+TriangleSurface make_flat(double z) {
+  return test::make_height_field("die", 4, 4, 0, 4, 0, 4, [z](double, double) { return z; });
+}
+
+ContactPair make_pair(const TriangleSurface& s, int n_nodes, double k, double cutoff) {
+  ContactPair pair;
+  pair.surface = &s;
+  pair.search = make_contact_search("modified", s);
+  pair.stiffness = VectorX::Constant(n_nodes, k);
+  pair.cutoff = cutoff;
+  return pair;
+}
+
+TEST(PenaltyContact, ForceIsStiffnessTimesPenetrationAlongNormal) {
+  // Flat tool z = 0 (normal +z), half thickness 0.5, k = 100 N/mm, cutoff 2 mm.
+  const TriangleSurface s = make_flat(0.0);
+  Matrix3X x(3, 5);
+  x.col(0) = Vec3(2.3, 1.7, 0.1);   // g = -0.4: f = 40 N up
+  x.col(1) = Vec3(1.1, 2.9, 0.6);   // g = +0.1: separated
+  x.col(2) = Vec3(3.2, 0.4, -0.3);  // behind the surface, g = -0.8: f = 80 N up
+  x.col(3) = Vec3(2.0, 2.0, -3.0);  // far behind (beyond the search radius): ignored
+  x.col(4) = Vec3(9.0, 2.0, 0.0);   // off the tool, 5 mm away: ignored
+  ContactPair pair = make_pair(s, 5, 100.0, 2.0);
+  const VectorX h = VectorX::Constant(5, 0.5);
+  Matrix3X f = Matrix3X::Zero(3, 5);
+  const ContactResult r = compute_penalty_contact(pair, x, h, Vec3::Zero(), f);
+  EXPECT_NEAR((f.col(0) - Vec3(0, 0, 40)).norm(), 0, 1e-12);
+  EXPECT_EQ(f.col(1).norm(), 0.0);
+  EXPECT_NEAR((f.col(2) - Vec3(0, 0, 80)).norm(), 0, 1e-12);
+  EXPECT_EQ(f.col(3).norm(), 0.0);
+  EXPECT_EQ(f.col(4).norm(), 0.0);
+  EXPECT_EQ(r.nodes_in_contact, 2);
+  EXPECT_NEAR((r.force_on_tool - Vec3(0, 0, -120)).norm(), 0, 1e-12);
+  EXPECT_NEAR(r.energy, 0.5 * 100 * (0.4 * 0.4 + 0.8 * 0.8), 1e-12);
+
+  // The tool moved up by 1 mm: node 0 at z = 1.1 is in the same state as before.
+  Matrix3X x2 = x.col(0);
+  x2(2, 0) += 1.0;
+  Matrix3X f2 = Matrix3X::Zero(3, 1);
+  ContactPair pair1 = make_pair(s, 1, 100.0, 2.0);
+  compute_penalty_contact(pair1, x2, h.head(1), Vec3(0, 0, 1.0), f2);
+  EXPECT_NEAR((f2.col(0) - Vec3(0, 0, 40)).norm(), 0, 1e-12);
+}
+
+TEST(PenaltyContact, CutoffMustExceedHalfThickness) {
+  const TriangleSurface s = make_flat(0.0);
+  ContactPair pair = make_pair(s, 1, 100.0, 0.4);
+  Matrix3X x = Vec3(1, 1, 0.1);
+  Matrix3X f = Matrix3X::Zero(3, 1);
+  EXPECT_THROW(compute_penalty_contact(pair, x, VectorX::Constant(1, 0.5), Vec3::Zero(), f),
+               InputError);
+}
+
+TEST(PenaltyContact, ForceIsMinusGradientOfPenaltyEnergy) {
+  // Ridge z = -0.5 |y| (x in [-1, 1]); points in a face region, the ridge-edge region, a vertex
+  // region at the end of the ridge, and behind the surface. Central differences, step 1e-6 mm:
+  // truncation ~ 1e-12 * curvature terms, round-off ~ 1e-16 / 1e-6; tolerance 1e-6 relative.
+  Matrix3X nodes(3, 6);
+  nodes << -1, 1, -1, 1, -1, 1,  //
+      -1, -1, 0, 0, 1, 1,        //
+      -0.5, -0.5, 0, 0, -0.5, -0.5;
+  TriConn t(3, 4);
+  t << 0, 0, 2, 2,  //
+      1, 3, 3, 5,   //
+      3, 2, 5, 4;
+  const TriangleSurface s("ridge", nodes, t);
+  const double k = 7.0;
+  const VectorX h = VectorX::Constant(1, 0.2);
+  ContactPair pair = make_pair(s, 1, k, 1.0);
+  auto energy_and_force = [&](const Vec3& p, Vec3& force) {
+    Matrix3X x = p;
+    Matrix3X f = Matrix3X::Zero(3, 1);
+    const double e = compute_penalty_contact(pair, x, h, Vec3::Zero(), f).energy;
+    force = f.col(0);
+    return e;
+  };
+  const Vec3 points[] = {Vec3(0.1, 0.4, 0.0), Vec3(0.1, 0.02, 0.15), Vec3(1.05, 0.02, 0.1),
+                         Vec3(-0.3, 0.3, -0.3)};
+  for (const Vec3& p : points) {
+    Vec3 f;
+    energy_and_force(p, f);
+    ASSERT_GT(f.norm(), 0.01) << "not in contact at " << p.transpose();
+    Vec3 grad;
+    const double step = 1e-6;
+    for (int a = 0; a < 3; ++a) {
+      Vec3 dummy;
+      Vec3 pp = p, pm = p;
+      pp[a] += step;
+      pm[a] -= step;
+      grad[a] = (energy_and_force(pp, dummy) - energy_and_force(pm, dummy)) / (2 * step);
+    }
+    EXPECT_NEAR((f + grad).norm(), 0, 1e-6 * f.norm()) << "at " << p.transpose();
+  }
+}
+
+TEST(PenaltyStiffness, ShellFormulaAndTimeStepCap) {
+  // 2 x 2 unit quads. K = E / (3 (1 - 2 nu)) = 175000 MPa; corner node A = 1/4 mm^2, centre
+  // node A = 1 mm^2; largest diagonal sqrt 2 mm.
+  Matrix3X x(3, 9);
+  for (int j = 0; j < 3; ++j) {
+    for (int i = 0; i < 3; ++i) {
+      x.col(3 * j + i) = Vec3(i, j, 0);
+    }
+  }
+  QuadConn q(4, 4);
+  q.col(0) << 0, 1, 4, 3;
+  q.col(1) << 1, 2, 5, 4;
+  q.col(2) << 3, 4, 7, 6;
+  q.col(3) << 4, 5, 8, 7;
+  const VectorX mass = VectorX::Constant(9, 1e-6);  // t
+  const double kbulk = 210000.0 / (3 * (1 - 2 * 0.3));
+  VectorX k = compute_penalty_stiffness(x, q, TriConn(3, 0), mass, 210000, 0.3, 0.1, 0.0);
+  EXPECT_NEAR(k[0], 0.1 * kbulk * 0.25 / std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(k[4], 0.1 * kbulk * 1.0 / std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(k[1], 0.1 * kbulk * 0.5 / std::sqrt(2.0), 1e-9);
+  // Cap: dt_target 1e-4 s -> k <= m (2 * 0.9 / dt)^2 = 324 N/mm; and the capped spring on the
+  // node mass is exactly at the stability limit dt_target = 0.9 * 2 / omega.
+  const double dt = 1e-4;
+  k = compute_penalty_stiffness(x, q, TriConn(3, 0), mass, 210000, 0.3, 0.1, dt);
+  for (int i = 0; i < 9; ++i) {
+    EXPECT_NEAR(k[i], 324.0, 1e-9);
+    EXPECT_NEAR(0.9 * 2.0 / std::sqrt(k[i] / mass[i]), dt, 1e-15);
+  }
+  EXPECT_THROW(compute_penalty_stiffness(x, q, TriConn(3, 0), mass, 210000, 0.5, 0.1, dt),
+               InputError);
+}
+
+struct Bounce {
+  double contact_time, restitution, peak_penetration;
+};
+
+/// Point mass m (t) with half thickness h = 0.5 mm moving at -v0 (mm/s) onto the flat tool
+/// z = 5 mm displaced by (0, 0, -5) (so at z = 0), central differences with step dt (s).
+Bounce simulate_bounce(double m, double k, double v0, double dt) {
+  const TriangleSurface s = make_flat(5.0);
+  ContactPair pair = make_pair(s, 1, k, 3.0);
+  const VectorX h = VectorX::Constant(1, 0.5);
+  const Vec3 tool_displacement(0, 0, -5.0);
+  Matrix3X x = Vec3(1.3, 2.1, 0.5 + 0.25);  // gap 0.25 mm
+  Vec3 v_half(0, 0, -v0);                   // v at t - dt/2
+  Matrix3X f(3, 1);
+  double t = 0, t_in = -1, t_out = -1, peak = 0;
+  double g_prev = x(2, 0) - 0.5;
+  for (int n = 0; n < 1000000 && t_out < 0; ++n) {
+    f.setZero();
+    compute_penalty_contact(pair, x, h, tool_displacement, f);
+    v_half += (dt / m) * f.col(0);
+    x.col(0) += dt * v_half;
+    t += dt;
+    const double g = x(2, 0) - 0.5;
+    // Crossing times by linear interpolation between steps.
+    if (t_in < 0 && g_prev >= 0 && g < 0) {
+      t_in = t - dt + dt * g_prev / (g_prev - g);
+    } else if (t_in >= 0 && g_prev < 0 && g >= 0) {
+      t_out = t - dt + dt * (-g_prev) / (g - g_prev);
+    }
+    peak = std::max(peak, -g);
+    g_prev = g;
+  }
+  return {t_out - t_in, v_half.z() / v0, peak};
+}
+
+TEST(PenaltyContact, PointMassBounce) {
+  // m = 1e-3 t (1 kg), k = 1000 N/mm, v0 = 1000 mm/s: contact time pi sqrt(m/k) = pi ms,
+  // restitution 1, peak penetration v0 sqrt(m/k) = 1 mm.
+  const double m = 1e-3, k = 1000.0, v0 = 1000.0;
+  const double tc = std::numbers::pi * std::sqrt(m / k);
+  const double peak = v0 * std::sqrt(m / k);
+  double previous_error = 0;
+  for (int per_contact : {50, 100, 200}) {
+    const Bounce b = simulate_bounce(m, k, v0, tc / per_contact);
+    const double e_time = std::abs(b.contact_time / tc - 1);
+    std::printf("dt = Tc/%d: contact time error %.2e, restitution - 1 = %.2e, peak error %.2e\n",
+                per_contact, e_time, b.restitution - 1, b.peak_penetration / peak - 1);
+    EXPECT_LT(e_time, 1e-2);
+    EXPECT_NEAR(b.restitution, 1.0, 1e-3);
+    EXPECT_NEAR(b.peak_penetration / peak, 1.0, 1e-2);
+    if (per_contact > 50) {
+      // Second order: halving dt divides the contact-time error by ~4 (at least 3 asked).
+      EXPECT_LT(e_time, previous_error / 3) << "dt = Tc/" << per_contact;
+    }
+    previous_error = e_time;
+  }
+}
+
+}  // namespace
+}  // namespace sf
