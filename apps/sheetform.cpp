@@ -62,12 +62,14 @@ void print_model(const sf::Model& model) {
     sf::log_info("Title       {}\n", model.config.title);
   }
   sf::log_info("Units       {}\n", model.config.units);
-  sf::log_info("Blank       {} nodes, {} quadrilateral shells (Belytschko-Lin-Tsay), t = {} mm, "
-               "{} thickness points, material '{}'\n",
-               blank.mesh.nodes.cols(), blank.mesh.quads.cols(), model.config.blank.thickness,
-               model.config.blank.integration_points, model.config.blank.material);
+  sf::log_info(
+      "Blank       {} nodes, {} quadrilateral shells (Belytschko-Lin-Tsay), t = {} mm, "
+      "{} thickness points, material '{}'\n",
+      blank.mesh.nodes.cols(), blank.mesh.quads.cols(), model.config.blank.thickness,
+      model.config.blank.integration_points, model.config.blank.material);
   sf::log_info("Mass        {:.6e} tonne physical, {:.6e} tonne added by mass scaling ({:.2f} %)\n",
-               blank.physical_mass, blank.added_mass, 100.0 * blank.added_mass / blank.physical_mass);
+               blank.physical_mass, blank.added_mass,
+               100.0 * blank.added_mass / blank.physical_mass);
   for (std::size_t i = 0; i < model.config.boundaries.size(); ++i) {
     const sf::BoundaryConfig& b = model.config.boundaries[i];
     sf::log_info("Boundary    '{}': {} nodes, {}\n", b.group, blank.groups[i].nodes.size(),
@@ -78,10 +80,10 @@ void print_model(const sf::Model& model) {
   for (const sf::Tool& t : model.tools) {
     sf::log_info("Tool        '{}': {} nodes, {} triangles, {}\n", t.name, t.mesh.nodes.cols(),
                  t.mesh.triangles.cols(),
-                 t.motion.moves() ? fmt::format("moves along ({:.3g}, {:.3g}, {:.3g})",
-                                                t.motion.direction().x(), t.motion.direction().y(),
-                                                t.motion.direction().z())
-                                  : std::string("fixed"));
+                 t.motion.moves()
+                     ? fmt::format("moves along ({:.3g}, {:.3g}, {:.3g})", t.motion.direction().x(),
+                                   t.motion.direction().y(), t.motion.direction().z())
+                     : std::string("fixed"));
   }
   for (const sf::ContactInterface& c : model.contacts) {
     const sf::ContactConfig* cc = nullptr;
@@ -90,10 +92,11 @@ void print_model(const sf::Model& model) {
         cc = &candidate;
       }
     }
-    sf::log_info("Contact     blank nodes vs '{}': search '{}', penalty scale {}, stiffness {:.4g} to "
-                 "{:.4g} N/mm\n",
-                 model.tools[static_cast<std::size_t>(c.tool)].name, cc->search, cc->penalty_scale,
-                 c.pair.stiffness.minCoeff(), c.pair.stiffness.maxCoeff());
+    sf::log_info(
+        "Contact     blank nodes vs '{}': search '{}', penalty scale {}, stiffness {:.4g} to "
+        "{:.4g} N/mm\n",
+        model.tools[static_cast<std::size_t>(c.tool)].name, cc->search, cc->penalty_scale,
+        c.pair.stiffness.minCoeff(), c.pair.stiffness.maxCoeff());
   }
   sf::log_info("Time step   {:.4e} s (safety {} x critical, limited by element {})\n",
                model.time_step, model.config.control.time_step_safety, model.limiting_element);
@@ -159,8 +162,8 @@ int mesh(const Arguments& args) {
 
 int main(int argc, char** argv) {
   CLI::App app{"sheetform: explicit finite-element simulation of sheet metal forming"};
-  app.set_version_flag("--version", std::string(sf::build_info::version) + " (" +
-                                        sf::build_info::git_hash + ")");
+  app.set_version_flag(
+      "--version", std::string(sf::build_info::version) + " (" + sf::build_info::git_hash + ")");
   app.require_subcommand(1);
   Arguments args;
   auto add_common = [&args](CLI::App* sub) {

@@ -16,6 +16,7 @@ using VectorX = Eigen::VectorXd;
 using Quad3 = Eigen::Matrix<double, 3, 4>;  ///< coordinates (or vectors) of a quad's 4 nodes
 using Tri3 = Eigen::Matrix<double, 3, 3>;   ///< coordinates of a triangle's 3 nodes (columns)
 using QuadConn = Eigen::Matrix<int, 4, Eigen::Dynamic>;  ///< quad connectivity, column per element
-using TriConn = Eigen::Matrix<int, 3, Eigen::Dynamic>;   ///< triangle connectivity, column per element
+using TriConn =
+    Eigen::Matrix<int, 3, Eigen::Dynamic>;  ///< triangle connectivity, column per element
 
 }  // namespace sf

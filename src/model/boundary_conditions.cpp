@@ -15,7 +15,9 @@ void NodalConstraints::add_symmetry(int node, int axis) {
   }
 }
 
-void NodalConstraints::add_fixed(int node) { mask[static_cast<std::size_t>(node)] = 0x3f; }
+void NodalConstraints::add_fixed(int node) {
+  mask[static_cast<std::size_t>(node)] = 0x3f;
+}
 
 void NodalConstraints::apply(Matrix3X& v, Matrix3X& omega) const {
   const Eigen::Index n = v.cols();
@@ -36,7 +38,8 @@ void NodalConstraints::apply(Matrix3X& v, Matrix3X& omega) const {
 }
 
 int NodalConstraints::constrained_node_count() const {
-  return static_cast<int>(std::count_if(mask.begin(), mask.end(), [](unsigned char m) { return m != 0; }));
+  return static_cast<int>(
+      std::count_if(mask.begin(), mask.end(), [](unsigned char m) { return m != 0; }));
 }
 
 }  // namespace sf

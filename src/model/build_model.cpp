@@ -61,7 +61,8 @@ void read_blank(const CaseConfig& config, Model& model) {
   for (Eigen::Index i = 0; i < blank.inverse_element_count.size(); ++i) {
     if (blank.inverse_element_count[i] == 0.0) {
       throw InputError(fmt::format("{}: blank node {} (gmsh node {}) belongs to no element",
-                                   bc.mesh.file.string(), i, blank.mesh.gmsh_node_tags[static_cast<std::size_t>(i)]));
+                                   bc.mesh.file.string(), i,
+                                   blank.mesh.gmsh_node_tags[static_cast<std::size_t>(i)]));
     }
   }
   blank.inverse_element_count = blank.inverse_element_count.cwiseInverse();
@@ -81,11 +82,12 @@ void read_tools(const CaseConfig& config, Model& model) {
     tool.name = tc.name;
     tool.mesh = extract_part_mesh(gmsh_model, tc.mesh.group, tc.name);
     if (tool.mesh.quads.cols() > 0) {
-      throw InputError(fmt::format("{}: tool '{}' group '{}' holds quadrilaterals; tools must be "
-                                   "meshed as triangles",
-                                   tc.mesh.file.string(), tc.name, tc.mesh.group));
+      throw InputError(
+          fmt::format("{}: tool '{}' group '{}' holds quadrilaterals; tools must be "
+                      "meshed as triangles",
+                      tc.mesh.file.string(), tc.name, tc.mesh.group));
     }
-    tool.surface = TriangleSurface(tool.mesh.nodes, tool.mesh.triangles, tc.name);
+    tool.surface = TriangleSurface(tc.name, tool.mesh.nodes, tool.mesh.triangles);
     orient_surface(tool.surface, model.blank.mesh.nodes);
     tool.motion = RigidToolMotion(tc.motion);
     model.tools.push_back(std::move(tool));
@@ -130,6 +132,12 @@ void set_mass_and_time_step(const CaseConfig& config, Model& model, const ShellS
 void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& state) {
   const MaterialConfig& material = config.blank_material();
   for (const ContactConfig& cc : config.contacts) {
+    if (cc.friction != 0.0) {
+      throw InputError(fmt::format(
+          "{}: contact with tool '{}': friction = {} is not supported yet (this release's "
+          "contact is frictionless); set friction = 0.0",
+          config.file.string(), cc.tool, cc.friction));
+    }
     ContactInterface contact;
     const auto found = std::find_if(model.tools.begin(), model.tools.end(),
                                     [&](const Tool& t) { return t.name == cc.tool; });
@@ -137,9 +145,20 @@ void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& s
     const Tool& tool = model.tools[static_cast<std::size_t>(contact.tool)];
     contact.pair.surface = &tool.surface;
     contact.pair.search = make_contact_search(cc.search, tool.surface);
+    // The contact spring adds to the element stiffness at a node: with the element part at
+    // w_e dt <= 2 x safety (1.8), the total stays below the stability limit w dt = 2 when the
+    // contact part keeps w_c dt <= sqrt(4 - 1.8^2) = 0.87, i.e. a cap factor of 0.87 / 2.
+    const double safety = config.control.time_step_safety;
+    const double contact_cap_factor = 0.5 * std::sqrt(std::max(4.0 - 4.0 * safety * safety, 0.0));
+    if (contact_cap_factor < 0.2) {
+      throw InputError(fmt::format(
+          "{}: control.time_step_safety = {} leaves no room for the contact stiffness in the "
+          "stable time step; use 0.95 or less with contact",
+          config.file.string(), safety));
+    }
     contact.pair.stiffness = compute_penalty_stiffness(
-        model.blank.mesh.nodes, model.blank.mesh.quads, material.young, material.poisson,
-        cc.penalty_scale, model.blank.mass, model.time_step);
+        model.blank.mesh.nodes, model.blank.mesh.quads, TriConn(3, 0), model.blank.mass,
+        material.young, material.poisson, cc.penalty_scale, model.time_step, contact_cap_factor);
     // Nodes farther than this from the tool cannot touch it within one step.
     contact.pair.cutoff = 2.0 * config.blank.thickness;
     model.contacts.push_back(std::move(contact));
@@ -171,9 +190,9 @@ Model build_model(const CaseConfig& config) {
   read_blank(config, model);
   read_tools(config, model);
   apply_boundaries(config, model);
-  const ShellState state = make_shell_state(static_cast<int>(model.blank.mesh.quads.cols()),
-                                            config.blank.integration_points,
-                                            config.blank.thickness);
+  const ShellState state =
+      make_shell_state(static_cast<int>(model.blank.mesh.quads.cols()),
+                       config.blank.integration_points, config.blank.thickness);
   set_mass_and_time_step(config, model, state);
   set_up_contacts(config, model, state);
   set_end_time(config, model);

@@ -19,10 +19,10 @@ namespace sf {
 struct Blank {
   PartMesh mesh;
   ShellPart part;
-  VectorX mass;                ///< tonne per node (after any mass scaling)
-  VectorX rotational_inertia;  ///< tonne mm^2 per node
-  double physical_mass = 0.0;  ///< tonne, before mass scaling
-  double added_mass = 0.0;     ///< tonne, added by mass scaling
+  VectorX mass;                   ///< tonne per node (after any mass scaling)
+  VectorX rotational_inertia;     ///< tonne mm^2 per node
+  double physical_mass = 0.0;     ///< tonne, before mass scaling
+  double added_mass = 0.0;        ///< tonne, added by mass scaling
   VectorX inverse_element_count;  ///< per node, 1 / (elements sharing it), for nodal averages
   std::vector<NodeGroup> groups;  ///< the boundary groups and measurement points the case names
 };

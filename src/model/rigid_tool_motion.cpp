@@ -44,8 +44,8 @@ double RigidToolMotion::speed(double t) const {
 
 double RigidToolMotion::time_at_travel(double target, const std::string& tool_name) const {
   if (!moves()) {
-    throw InputError(fmt::format("tool '{}' does not move, so it cannot define the stroke",
-                                 tool_name));
+    throw InputError(
+        fmt::format("tool '{}' does not move, so it cannot define the stroke", tool_name));
   }
   // Bracket: double the upper bound until the travel is reached (a held speed of zero or a
   // displacement curve that stops short never gets there).

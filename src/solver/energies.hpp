@@ -14,7 +14,9 @@ struct Energies {
   /// (total - external work) relative to the larger of the two; 0 when nothing has happened.
   double balance_error() const;
   /// kinetic / internal, the quasi-static check of a forming run (0 while nothing is strained).
-  double kinetic_ratio() const { return internal + hourglass > 0.0 ? kinetic / (internal + hourglass) : 0.0; }
+  double kinetic_ratio() const {
+    return internal + hourglass > 0.0 ? kinetic / (internal + hourglass) : 0.0;
+  }
 };
 
 inline double Energies::balance_error() const {

@@ -51,7 +51,8 @@ bool update_velocities(const Model& model, SolutionState& s, double weight) {
           s.f_contact(2, i)));
     }
   }
-  throw InstabilityError(fmt::format("non-finite state at t = {:.6e} s, cycle {}", s.time, s.cycle));
+  throw InstabilityError(
+      fmt::format("non-finite state at t = {:.6e} s, cycle {}", s.time, s.cycle));
 }
 
 void check_energy(const Model& model, const SolutionState& s, double energy_scale) {
@@ -102,8 +103,7 @@ double compute_forces(Model& model, SolutionState& s, double dt) {
                                                     s.shell, s.f_int, s.m_int)
                           .hourglass_power;
   } catch (const InstabilityError& e) {
-    throw InstabilityError(
-        fmt::format("{} at t = {:.6e} s, cycle {}", e.what(), s.time, s.cycle));
+    throw InstabilityError(fmt::format("{} at t = {:.6e} s, cycle {}", e.what(), s.time, s.cycle));
   }
   // Half thickness per node: the mean over the elements around it.
   s.half_thickness.setZero();
@@ -201,7 +201,8 @@ RunSummary run_explicit(Model& model, const RunOptions& options) {
       max_speed = std::max(max_speed, std::abs(t.motion.speed(model.end_time * k / 100.0)));
     }
   }
-  const double energy_scale = std::max(1e-3 * 0.5 * model.blank.mass.sum() * max_speed * max_speed, 1e-30);
+  const double energy_scale =
+      std::max(1e-3 * 0.5 * model.blank.mass.sum() * max_speed * max_speed, 1e-30);
 
   const double frame_interval = model.end_time / control.output_frames;
   double next_frame_time = frame_interval;

@@ -5,9 +5,14 @@
 namespace sf {
 
 std::vector<std::string> history_columns(const Model& model) {
-  std::vector<std::string> columns = {"time",      "time_step", "kinetic_energy",
-                                      "internal_energy", "hourglass_energy", "contact_energy",
-                                      "external_work", "energy_balance_error"};
+  std::vector<std::string> columns = {"time",
+                                      "time_step",
+                                      "kinetic_energy",
+                                      "internal_energy",
+                                      "hourglass_energy",
+                                      "contact_energy",
+                                      "external_work",
+                                      "energy_balance_error"};
   for (const Tool& t : model.tools) {
     columns.push_back(t.name + "_travel");
     columns.push_back(t.name + "_force");
@@ -82,8 +87,8 @@ void FrameOutput::write_frame(const Model& model, const SolutionState& s) {
 void FrameOutput::append_history(const Model& model, const SolutionState& s) {
   std::size_t k = 0;
   const Energies& e = s.energies;
-  for (double value : {s.time, s.dt, e.kinetic, e.internal, e.hourglass, e.contact,
-                       e.external_work, e.balance_error()}) {
+  for (double value : {s.time, s.dt, e.kinetic, e.internal, e.hourglass, e.contact, e.external_work,
+                       e.balance_error()}) {
     row_[k++] = value;
   }
   for (std::size_t t = 0; t < model.tools.size(); ++t) {
@@ -95,6 +100,8 @@ void FrameOutput::append_history(const Model& model, const SolutionState& s) {
   writer_->append_history(row_);
 }
 
-void FrameOutput::flush() { writer_->flush_history(); }
+void FrameOutput::flush() {
+  writer_->flush_history();
+}
 
 }  // namespace sf

@@ -1,6 +1,7 @@
 #pragma once
 // Turns the solution state into results frames and history rows (HDF5 + XDMF, see
-// docs/results-format.md). Buffers are allocated once; frames are rare, so this is off the hot path.
+// docs/results-format.md). Buffers are allocated once; frames are rare, so this is off the hot
+// path.
 #include <filesystem>
 #include <memory>
 

@@ -5,18 +5,15 @@
 namespace sf {
 
 Progress::Progress(const Model& model, int interval_cycles)
-    : interval_cycles_(interval_cycles),
-      start_(std::chrono::steady_clock::now()),
-      last_(start_) {
-  log_info("{:>9} {:>12} {:>7} {:>11} {:>8} {:>9} {:>8}\n", "cycle", "time [s]", "stroke",
-           "dt [s]", "KE/IE", "energy", "ETA");
+    : interval_cycles_(interval_cycles), start_(std::chrono::steady_clock::now()), last_(start_) {
+  log_info("{:>9} {:>12} {:>7} {:>11} {:>8} {:>9} {:>8}\n", "cycle", "time [s]", "stroke", "dt [s]",
+           "KE/IE", "energy", "ETA");
 }
 
 void Progress::report(const Model& model, const SolutionState& s, bool final) {
   const auto now = std::chrono::steady_clock::now();
-  const bool due = interval_cycles_ > 0
-                       ? s.cycle % interval_cycles_ == 0
-                       : std::chrono::duration<double>(now - last_).count() >= 2.0;
+  const bool due = interval_cycles_ > 0 ? s.cycle % interval_cycles_ == 0
+                                        : std::chrono::duration<double>(now - last_).count() >= 2.0;
   if (!due && !final) {
     return;
   }

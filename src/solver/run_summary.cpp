@@ -45,8 +45,8 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
     for (int node : group.nodes) {
       sum += (s.x.col(node) - model.blank.mesh.nodes.col(node)).dot(direction);
     }
-    r.draw_ins.push_back({dc.name, sum / static_cast<double>(group.nodes.size()), dc.measured,
-                          dc.source});
+    r.draw_ins.push_back(
+        {dc.name, sum / static_cast<double>(group.nodes.size()), dc.measured, dc.source});
   }
   return r;
 }
@@ -59,10 +59,11 @@ std::string format_run_summary(const RunSummary& r) {
   add(fmt::format("  end time            {:.6e} s", r.end_time));
   add(fmt::format("  wall time           {:.2f} s ({:.0f} ns per element-cycle, {} elements)",
                   r.wall_seconds, r.ns_per_element_cycle, r.elements));
-  add(fmt::format("  energies [N mm]     kinetic {:.4e}, internal {:.4e}, hourglass {:.4e}, "
+  add(
+      fmt::format("  energies [N mm]     kinetic {:.4e}, internal {:.4e}, hourglass {:.4e}, "
                   "contact {:.4e}, external work {:.4e}",
-                  r.energies.kinetic, r.energies.internal, r.energies.hourglass,
-                  r.energies.contact, r.energies.external_work));
+                  r.energies.kinetic, r.energies.internal, r.energies.hourglass, r.energies.contact,
+                  r.energies.external_work));
   add(fmt::format("  energy balance      {:+.3e} (total - external work, relative)",
                   r.energies.balance_error()));
   add(fmt::format("  kinetic / internal  {:.4f} at the end, {:.4f} at most after 10% of the run",
@@ -76,9 +77,9 @@ std::string format_run_summary(const RunSummary& r) {
   }
   for (const DrawInResult& d : r.draw_ins) {
     if (d.measured >= 0.0) {
-      add(fmt::format("  draw-in {:<11} {:7.3f} mm   measured {:7.3f} mm   deviation {:+.1f} %  ({})",
-                      d.name, d.computed, d.measured, 100.0 * (d.computed - d.measured) / d.measured,
-                      d.source));
+      add(fmt::format(
+          "  draw-in {:<11} {:7.3f} mm   measured {:7.3f} mm   deviation {:+.1f} %  ({})", d.name,
+          d.computed, d.measured, 100.0 * (d.computed - d.measured) / d.measured, d.source));
     } else {
       add(fmt::format("  draw-in {:<11} {:7.3f} mm", d.name, d.computed));
     }
@@ -109,8 +110,8 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
   j["max_thickness_mm"] = r.max_thickness;
   j["max_plastic_strain"] = r.max_plastic_strain;
   for (const ToolSummary& t : r.tools) {
-    j["tools"][t.name] = {{"travel_mm", t.travel}, {"final_force_N", t.final_force},
-                          {"peak_force_N", t.peak_force}};
+    j["tools"][t.name] = {
+        {"travel_mm", t.travel}, {"final_force_N", t.final_force}, {"peak_force_N", t.peak_force}};
   }
   for (const DrawInResult& d : r.draw_ins) {
     nlohmann::json entry = {{"computed_mm", d.computed}};

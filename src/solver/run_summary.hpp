@@ -12,30 +12,30 @@ namespace sf {
 
 struct DrawInResult {
   std::string name;
-  double computed = 0.0;  ///< mm
-  double measured = -1.0; ///< mm, < 0 when none was given
+  double computed = 0.0;   ///< mm
+  double measured = -1.0;  ///< mm, < 0 when none was given
   std::string source;
 };
 
 struct ToolSummary {
   std::string name;
-  double travel = 0.0;      ///< mm, at the end
-  double final_force = 0.0; ///< N, pushing force along the motion at the end
-  double peak_force = 0.0;  ///< N
+  double travel = 0.0;       ///< mm, at the end
+  double final_force = 0.0;  ///< N, pushing force along the motion at the end
+  double peak_force = 0.0;   ///< N
 };
 
 struct RunSummary {
   long cycles = 0;
-  double end_time = 0.0;          ///< s
-  double wall_seconds = 0.0;      ///< s
+  double end_time = 0.0;              ///< s
+  double wall_seconds = 0.0;          ///< s
   double ns_per_element_cycle = 0.0;  ///< whole loop wall time per element and cycle
   int elements = 0;
   int nodes = 0;
   Energies energies;
-  double peak_kinetic_ratio = 0.0;  ///< largest kinetic/internal after the first tenth
-  double added_mass_fraction = 0.0; ///< added / physical mass
-  double min_thickness = 0.0;       ///< mm
-  double max_thickness = 0.0;       ///< mm
+  double peak_kinetic_ratio = 0.0;   ///< largest kinetic/internal after the first tenth
+  double added_mass_fraction = 0.0;  ///< added / physical mass
+  double min_thickness = 0.0;        ///< mm
+  double max_thickness = 0.0;        ///< mm
   double max_plastic_strain = 0.0;
   std::vector<ToolSummary> tools;
   std::vector<DrawInResult> draw_ins;

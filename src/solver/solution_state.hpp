@@ -10,25 +10,25 @@
 namespace sf {
 
 struct ToolState {
-  double travel = 0.0;        ///< mm along the motion direction
+  double travel = 0.0;               ///< mm along the motion direction
   Vec3 displacement = Vec3::Zero();  ///< mm
-  Vec3 force = Vec3::Zero();  ///< N, force of the blank on the tool
+  Vec3 force = Vec3::Zero();         ///< N, force of the blank on the tool
   int nodes_in_contact = 0;
-  double peak_force = 0.0;    ///< N, largest pushing force along the direction so far
+  double peak_force = 0.0;  ///< N, largest pushing force along the direction so far
   Vec3 previous_displacement = Vec3::Zero();  ///< mm, a step ago (for the work increment)
   Vec3 previous_force = Vec3::Zero();         ///< N, a step ago
 };
 
 struct SolutionState {
-  double time = 0.0;      ///< s
+  double time = 0.0;  ///< s
   long cycle = 0;
-  double dt = 0.0;        ///< s, the last step taken
-  Matrix3X x;             ///< mm, current coordinates
-  Matrix3X v;             ///< mm/s, at the half step
-  Matrix3X omega;         ///< rad/s, at the half step
-  Matrix3X f_int;         ///< N, internal forces (resisting)
-  Matrix3X m_int;         ///< N mm, internal moments (resisting)
-  Matrix3X f_contact;     ///< N, contact forces on the blank nodes
+  double dt = 0.0;          ///< s, the last step taken
+  Matrix3X x;               ///< mm, current coordinates
+  Matrix3X v;               ///< mm/s, at the half step
+  Matrix3X omega;           ///< rad/s, at the half step
+  Matrix3X f_int;           ///< N, internal forces (resisting)
+  Matrix3X m_int;           ///< N mm, internal moments (resisting)
+  Matrix3X f_contact;       ///< N, contact forces on the blank nodes
   Matrix3X f_int_previous;  ///< N, for the trapezoidal work increment
   Matrix3X m_int_previous;  ///< N mm
   VectorX half_thickness;   ///< mm per node, the contact offset

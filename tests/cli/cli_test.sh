@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# The sheetform command: exit codes and messages for good and bad input.
+#   cli_test.sh SHEETFORM SOURCE_DIR WORK_DIR
+set -u
+sheetform="$1"; src="$2"; work="$3"
+rm -rf "$work"; mkdir -p "$work"
+failures=0; passed=0
+
+expect() {  # expect NAME CODE PATTERN -- command...
+  local name="$1" code="$2" pattern="$3"; shift 4
+  local out rc
+  out=$("$@" 2>&1); rc=$?
+  if [ "$rc" -ne "$code" ]; then
+    echo "FAIL $name: exit code $rc, expected $code"; echo "$out" | tail -5; failures=$((failures+1)); return
+  fi
+  if ! grep -qE -- "$pattern" <<<"$out"; then
+    echo "FAIL $name: output lacks /$pattern/"; echo "$out" | tail -5; failures=$((failures+1)); return
+  fi
+  echo "ok   $name"; passed=$((passed+1))
+}
+
+# Work on a copy of the demo case folder (geometry files are found relative to the case file).
+cp -r "$src/cases/square_cup" "$work/case"; rm -rf "$work/case/results"
+demo="$work/case/case.toml"
+expect "check demo" 0 "Case is valid" -- "$sheetform" check "$demo"
+expect "check prints cycles" 0 "Cycles +about [0-9]+" -- "$sheetform" check "$demo"
+expect "missing case file" 2 "case.toml" -- "$sheetform" run "$work/nowhere/case.toml"
+expect "no subcommand" 2 "subcommand" -- "$sheetform"
+
+# A case with an unknown key: exit 2 and the key is named.
+sed 's/^thickness = 0.81 .*/thickness = 0.81\nthicknes = 0.8/' "$demo" > "$work/case/cli_test_unknown.toml"
+expect "unknown key" 2 "thicknes" -- "$sheetform" check "$work/case/cli_test_unknown.toml"
+# A negative thickness: exit 2, the key named.
+sed 's/^thickness = 0.81/thickness = -0.81/' "$demo" > "$work/case/cli_test_negative.toml"
+expect "negative thickness" 2 "blank.thickness" -- "$sheetform" check "$work/case/cli_test_negative.toml"
+# A missing physical group: exit 2, the group named.
+sed 's/^group = "blank"/group = "no_such_group"/' "$demo" > "$work/case/cli_test_group.toml"
+expect "missing group" 2 "no_such_group" -- "$sheetform" check "$work/case/cli_test_group.toml"
+# A strict energy-balance limit (total energy may exceed the external work by 0.1 % only) trips
+# during the run: it stops as unstable (exit 3) with a diagnosis, and the frames so far stay readable.
+# (A coarse 5 mm blank keeps it quick: its balance error passes +0.1 % near 9.6 mm of stroke.)
+sed -e 's/^output_frames = 30/output_frames = 30\nenergy_blowup_ratio = 1.001/' \
+    -e 's/^element_size = 2.5 .*/element_size = 5.0/' "$demo" > "$work/case/cli_test_unstable.toml"
+expect "unstable run" 3 "unstable: energy blow-up at t = .* cycle [0-9]+" -- "$sheetform" run "$work/case/cli_test_unstable.toml" -o "$work/unstable" --stroke 12
+if h5ls "$work/unstable/results.h5/parts/blank/frames" >/dev/null 2>&1 && grep -q "<Time" "$work/unstable/blank.xdmf"; then
+  passed=$((passed+1))
+else
+  echo "FAIL unstable run: results not readable after the stop"; failures=$((failures+1))
+fi
+
+# mesh writes the parts; a short run writes results, the summary and the resolved case.
+expect "mesh" 0 "Meshes written" -- "$sheetform" mesh "$demo" -o "$work/mesh"
+for f in results.h5 blank.xdmf punch.xdmf die.xdmf holder.xdmf; do
+  [ -f "$work/mesh/$f" ] && passed=$((passed+1)) || { echo "FAIL mesh: $f missing"; failures=$((failures+1)); }
+done
+expect "short run" 0 "draw-in DX" -- "$sheetform" run "$demo" -o "$work/run" --stroke 0.5
+for f in results.h5 blank.xdmf summary.json case.resolved.toml; do
+  [ -f "$work/run/$f" ] && passed=$((passed+1)) || { echo "FAIL run: $f missing"; failures=$((failures+1)); }
+done
+# ParaView opens what the run wrote: every part, all frames, all arrays (scripts/run_tests.sh
+# installs ParaView, so a missing pvpython is a failure, not a skip).
+if command -v pvpython >/dev/null; then
+  # The times ParaView must show: the frames' time attributes in results.h5 (31 frames).
+  times=$(/usr/bin/python3 -c "import h5py,sys; g=h5py.File(sys.argv[1],'r')['parts/blank/frames']; print(' '.join(repr(float(g[k].attrs['time'])) for k in sorted(g)))" "$work/run/results.h5")
+  [ "$(wc -w <<<"$times")" -eq 31 ] && passed=$((passed+1)) || { echo "FAIL run: expected 31 frames, got: $times"; failures=$((failures+1)); }
+  expect "ParaView reads blank.xdmf" 0 "" -- pvpython "$src/scripts/check_xdmf.py" "$work/run/blank.xdmf" --times $times \
+    --points 961 --cells 900 --point-arrays displacement:3 velocity:3 contact_force:3 \
+    --cell-arrays thickness:1 plastic_strain:1 stress_mid:6 stress_top:6 stress_bottom:6
+  for tool in punch die holder; do
+    expect "ParaView reads $tool.xdmf" 0 "" -- pvpython "$src/scripts/check_xdmf.py" "$work/run/$tool.xdmf" --times $times \
+      --points "$(grep -o 'Dimensions="[0-9]* 3"' "$work/run/$tool.xdmf" | sed -n 2p | grep -o '[0-9]*' | head -1)" \
+      --cells "$(grep -o 'NumberOfElements="[0-9]*"' "$work/run/$tool.xdmf" | head -1 | grep -o '[0-9]*')" \
+      --point-arrays displacement:3
+  done
+else
+  echo "FAIL ParaView: pvpython not found (scripts/run_tests.sh installs it)"; failures=$((failures+1))
+fi
+# The resolved case is itself a valid case.
+cp "$work/run/case.resolved.toml" "$work/case/cli_test_resolved.toml"
+expect "resolved case re-reads" 0 "Case is valid" -- "$sheetform" check "$work/case/cli_test_resolved.toml"
+
+echo "$passed passed, $failures failed"
+[ "$failures" -eq 0 ]

@@ -1,0 +1,61 @@
+// The bundled demo (NUMISHEET'93 square cup, quarter model), run for a short stroke: the energy
+// balance holds, the punch reaches the stroke, the results are written frame by frame.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "io/case_config.hpp"
+#include "model/build_model.hpp"
+#include "solver/explicit_driver.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+TEST(DemoRun, ShortSquareCupDrawKeepsTheEnergyBalance) {
+  sf::CaseConfig config = sf::read_case(fs::path(SF_SOURCE_DIR) / "cases/square_cup/case.toml");
+  config.control.stroke = 3.0;  // mm: punch well into the sheet, flange drawing in
+  config.control.output_frames = 6;
+  sf::Model model = sf::build_model(config);
+  const fs::path out = fs::path(SF_BINARY_DIR) / "test_output" / "demo_short";
+  fs::remove_all(out);
+  sf::RunOptions options;
+  options.output_directory = out;
+  const sf::RunSummary summary = sf::run_explicit(model, options);
+
+  // Stroke reached exactly: the end time is found from the motion curve and the last step lands
+  // on it (tolerance: round-off of the curve integral).
+  ASSERT_EQ(summary.tools.front().name, "punch");
+  EXPECT_NEAR(summary.tools.front().travel, 3.0, 1e-9);
+  // The punch did work and the blank deformed plastically.
+  EXPECT_GT(summary.energies.external_work, 0.0);
+  EXPECT_GT(summary.max_plastic_strain, 0.0);
+  EXPECT_GT(summary.tools.front().peak_force, 0.0);
+  // Energy balance: kinetic + internal + hourglass + contact = external work within 2 % (a common
+  // acceptance bound for explicit forming runs; the solver reports the figure in every summary).
+  EXPECT_LT(std::abs(summary.energies.balance_error()), 0.02);
+  // Quasi-static: hourglass energy a small share of the internal energy (< 10 %, the usual bound).
+  EXPECT_LT(summary.energies.hourglass, 0.1 * summary.energies.internal);
+  // Results: one HDF5 file and one XDMF per part.
+  for (const char* name : {"results.h5", "blank.xdmf", "punch.xdmf", "die.xdmf", "holder.xdmf"}) {
+    EXPECT_TRUE(fs::exists(out / name)) << name;
+  }
+}
+
+TEST(DemoRun, SerialRunIsBitReproducible) {
+  // Two runs of the same build and case give identical results, bit for bit.
+  sf::CaseConfig config = sf::read_case(fs::path(SF_SOURCE_DIR) / "cases/square_cup/case.toml");
+  config.control.stroke = 0.5;
+  sf::RunOptions options;
+  options.write_results = false;
+  sf::Model first = sf::build_model(config);
+  const sf::RunSummary a = sf::run_explicit(first, options);
+  sf::Model second = sf::build_model(config);
+  const sf::RunSummary b = sf::run_explicit(second, options);
+  EXPECT_EQ(a.cycles, b.cycles);
+  EXPECT_EQ(a.energies.internal, b.energies.internal);
+  EXPECT_EQ(a.energies.external_work, b.energies.external_work);
+  EXPECT_EQ(a.tools.front().final_force, b.tools.front().final_force);
+}
+
+}  // namespace
