@@ -98,6 +98,7 @@ double compute_forces(Model& model, SolutionState& s, double dt) {
   s.m_int.setZero();
   s.f_contact.setZero();
   double hourglass_power = 0.0;
+  const auto element_start = std::chrono::steady_clock::now();
   try {
     hourglass_power = compute_shell_internal_forces(model.blank.part, s.x, s.v, s.omega, dt,
                                                     s.shell, s.f_int, s.m_int)
@@ -105,6 +106,8 @@ double compute_forces(Model& model, SolutionState& s, double dt) {
   } catch (const InstabilityError& e) {
     throw InstabilityError(fmt::format("{} at t = {:.6e} s, cycle {}", e.what(), s.time, s.cycle));
   }
+  const auto contact_start = std::chrono::steady_clock::now();
+  s.element_seconds += std::chrono::duration<double>(contact_start - element_start).count();
   // Half thickness per node: the mean over the elements around it.
   s.half_thickness.setZero();
   const QuadConn& quads = model.blank.part.quads;
@@ -128,6 +131,8 @@ double compute_forces(Model& model, SolutionState& s, double dt) {
     tool.nodes_in_contact += r.nodes_in_contact;
     s.energies.contact += r.energy;
   }
+  s.contact_seconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_start).count();
   return hourglass_power;
 }
 

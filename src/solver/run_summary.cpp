@@ -21,6 +21,10 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
   if (r.cycles > 0 && r.elements > 0) {
     r.ns_per_element_cycle = 1e9 * wall_seconds / (static_cast<double>(r.cycles) * r.elements);
   }
+  if (wall_seconds > 0.0) {
+    r.element_share = s.element_seconds / wall_seconds;
+    r.contact_share = s.contact_seconds / wall_seconds;
+  }
   r.energies = s.energies;
   r.peak_kinetic_ratio = s.peak_kinetic_ratio;
   r.added_mass_fraction = model.blank.added_mass / model.blank.physical_mass;
@@ -59,6 +63,9 @@ std::string format_run_summary(const RunSummary& r) {
   add(fmt::format("  end time            {:.6e} s", r.end_time));
   add(fmt::format("  wall time           {:.2f} s ({:.0f} ns per element-cycle, {} elements)",
                   r.wall_seconds, r.ns_per_element_cycle, r.elements));
+  add(fmt::format("  time split          elements {:.0f} %, contact {:.0f} %, rest {:.0f} %",
+                  100.0 * r.element_share, 100.0 * r.contact_share,
+                  100.0 * (1.0 - r.element_share - r.contact_share)));
   add(
       fmt::format("  energies [N mm]     kinetic {:.4e}, internal {:.4e}, hourglass {:.4e}, "
                   "contact {:.4e}, external work {:.4e}",
@@ -95,6 +102,8 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
   j["end_time_s"] = r.end_time;
   j["wall_seconds"] = r.wall_seconds;
   j["ns_per_element_cycle"] = r.ns_per_element_cycle;
+  j["element_time_share"] = r.element_share;
+  j["contact_time_share"] = r.contact_share;
   j["elements"] = r.elements;
   j["nodes"] = r.nodes;
   j["energy_Nmm"] = {{"kinetic", r.energies.kinetic},

@@ -29,6 +29,8 @@ struct RunSummary {
   double end_time = 0.0;              ///< s
   double wall_seconds = 0.0;          ///< s
   double ns_per_element_cycle = 0.0;  ///< whole loop wall time per element and cycle
+  double element_share = 0.0;         ///< share of the wall time in the element forces
+  double contact_share = 0.0;         ///< share of the wall time in contact (search + penalty)
   int elements = 0;
   int nodes = 0;
   Energies energies;

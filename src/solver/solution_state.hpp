@@ -36,6 +36,8 @@ struct SolutionState {
   std::vector<ToolState> tools;
   Energies energies;
   double peak_kinetic_ratio = 0.0;  ///< after the first tenth of the run
+  double element_seconds = 0.0;     ///< wall time spent in the element forces
+  double contact_seconds = 0.0;     ///< wall time spent in contact search and penalty forces
 };
 
 }  // namespace sf
