@@ -70,9 +70,8 @@ void print_model(const sf::Model& model) {
   sf::log_info("Mass        {:.6e} tonne physical, {:.6e} tonne added by mass scaling ({:.2f} %)\n",
                blank.physical_mass, blank.added_mass,
                100.0 * blank.added_mass / blank.physical_mass);
-  for (std::size_t i = 0; i < model.config.boundaries.size(); ++i) {
-    const sf::BoundaryConfig& b = model.config.boundaries[i];
-    sf::log_info("Boundary    '{}': {} nodes, {}\n", b.group, blank.groups[i].nodes.size(),
+  for (const sf::BoundaryConfig& b : model.config.boundaries) {
+    sf::log_info("Boundary    '{}': {} nodes, {}\n", b.group, blank.group(b.group).nodes.size(),
                  b.type == sf::BoundaryConfig::Type::fixed
                      ? std::string("fixed")
                      : fmt::format("symmetry plane normal to {}", "xyz"[b.axis]));

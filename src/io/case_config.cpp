@@ -274,10 +274,109 @@ void read_draw_ins(const TomlSection& top, std::vector<DrawInConfig>& draw_ins) 
   }
 }
 
+// A three-number array (any values, unlike read_direction); absent leaves the default.
+void read_vector(const TomlSection& s, std::string_view key, std::array<double, 3>& value) {
+  const toml::node* node = s.find(key);
+  if (!node) {
+    return;
+  }
+  const toml::array* array = node->as_array();
+  if (!array || array->size() != 3) {
+    s.fail_value(key, "an array of 3 numbers");
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::optional<double> v = number_of(*array->get(i));
+    if (!v || !std::isfinite(*v)) {
+      s.fail_value(key, "an array of 3 finite numbers");
+    }
+    value[i] = *v;
+  }
+}
+
+void read_loads(const TomlSection& top, std::vector<LoadConfig>& loads) {
+  using Type = LoadConfig::Type;
+  for (const TomlSection& s : top.table_array("load")) {
+    s.check_keys({"group", "type", "value", "pressure", "curve"});
+    LoadConfig load;
+    s.read_string("group", load.group, Presence::required);
+    s.read_choice("type", load.type,
+                  {{"force", Type::force}, {"moment", Type::moment}, {"pressure", Type::pressure}},
+                  Presence::required);
+    if (load.type == Type::pressure) {
+      if (s.has("value")) {
+        s.fail_forbidden("value", "a pressure load takes `pressure` (MPa)");
+      }
+      s.read_number("pressure", load.pressure, NumberRange{}, Presence::required);
+    } else {
+      if (s.has("pressure")) {
+        s.fail_forbidden("pressure", "a force or moment load takes `value` (3 numbers per node)");
+      }
+      if (!s.has("value")) {
+        s.fail_missing("value", "an array of 3 numbers (N or N mm per node)");
+      }
+      read_vector(s, "value", load.value);
+    }
+    if (s.has("curve")) {
+      read_curve(s, "curve", load.curve);
+    }
+    loads.push_back(std::move(load));
+  }
+}
+
+void read_initial_velocities(const TomlSection& top, std::vector<InitialVelocityConfig>& out) {
+  for (const TomlSection& s : top.table_array("initial_velocity")) {
+    s.check_keys({"group", "velocity"});
+    InitialVelocityConfig iv;
+    s.read_string("group", iv.group);
+    if (!s.has("velocity")) {
+      s.fail_missing("velocity", "an array of 3 numbers (mm/s)");
+    }
+    read_vector(s, "velocity", iv.velocity);
+    out.push_back(std::move(iv));
+  }
+}
+
+void read_prescribed_velocities(const TomlSection& top,
+                                std::vector<PrescribedVelocityConfig>& out) {
+  for (const TomlSection& s : top.table_array("prescribed_velocity")) {
+    s.check_keys({"group", "velocity", "components", "curve"});
+    PrescribedVelocityConfig pv;
+    s.read_string("group", pv.group, Presence::required);
+    if (!s.has("velocity")) {
+      s.fail_missing("velocity", "an array of 3 numbers (mm/s)");
+    }
+    read_vector(s, "velocity", pv.velocity);
+    if (const toml::node* node = s.find("components")) {
+      const toml::array* array = node->as_array();
+      pv.components = {false, false, false};
+      bool any = false;
+      for (std::size_t i = 0; array && i < array->size(); ++i) {
+        const auto* name = array->get(i)->as_string();
+        const std::string text = name ? name->get() : "";
+        if (text != "x" && text != "y" && text != "z") {
+          s.fail_value("components", "an array of \"x\", \"y\", \"z\"");
+        }
+        pv.components[static_cast<std::size_t>(text[0] - 'x')] = true;
+        any = true;
+      }
+      if (!array || !any) {
+        s.fail_value("components", "a non-empty array of \"x\", \"y\", \"z\"");
+      }
+    }
+    if (s.has("curve")) {
+      read_curve(s, "curve", pv.curve);
+    }
+    out.push_back(std::move(pv));
+  }
+}
+
 void read_control(const TomlSection& top, const CaseConfig& config, ControlConfig& control) {
   const TomlSection s = *top.sub_table("control", Presence::required);
   s.check_keys({"end_time", "stroke", "stroke_tool", "output_frames", "history_interval",
-                "progress_interval", "time_step_safety", "mass_scaling_dt", "energy_blowup_ratio"});
+                "progress_interval", "time_step_safety", "mass_scaling_dt", "energy_blowup_ratio",
+                "gravity", "damping"});
+  read_vector(s, "gravity", control.gravity);
+  s.read_number("damping", control.damping, at_least(0.0, "1/s"));
   s.read_number("end_time", control.end_time, at_least(0.0, "s"));
   s.read_number("stroke", control.stroke, at_least(0.0, "mm"));
   if (control.end_time > 0.0 && control.stroke > 0.0) {
@@ -389,7 +488,7 @@ CaseConfig read_case(const fs::path& case_file) {
 
   const TomlSection top(root, "", file);
   top.check_keys({"title", "units", "blank", "materials", "tools", "contact", "boundary", "draw_in",
-                  "control", "output"});
+                  "load", "initial_velocity", "prescribed_velocity", "control", "output"});
   top.read_string("title", config.title, Presence::optional, true);
   top.read_string("units", config.units);
   read_materials(top, config.materials);
@@ -398,6 +497,9 @@ CaseConfig read_case(const fs::path& case_file) {
   read_contacts(top, config, config.contacts);
   read_boundaries(top, config.boundaries);
   read_draw_ins(top, config.draw_ins);
+  read_loads(top, config.loads);
+  read_initial_velocities(top, config.initial_velocities);
+  read_prescribed_velocities(top, config.prescribed_velocities);
   read_control(top, config, config.control);
   read_output(top, folder, config.output);
   return config;

@@ -85,6 +85,30 @@ struct BoundaryConfig {
   int axis = 0;
 };
 
+/// A load on blank nodes or elements, scaled over time by an optional curve (default 1).
+struct LoadConfig {
+  enum class Type { force, moment, pressure };
+  std::string group;  ///< physical group of blank nodes (force, moment) or elements (pressure)
+  Type type = Type::force;
+  std::array<double, 3> value{0.0, 0.0, 0.0};  ///< force: N per node; moment: N mm per node
+  double pressure = 0.0;  ///< MPa on the top face (the +normal side): pushes along -normal
+  CurveConfig curve;      ///< scale factor against time; empty = 1
+};
+
+/// A velocity given to blank nodes at time 0 (mm/s). An empty group means every blank node.
+struct InitialVelocityConfig {
+  std::string group;
+  std::array<double, 3> velocity{0.0, 0.0, 0.0};
+};
+
+/// Velocity components held at prescribed values (mm/s) on blank nodes, scaled by a curve.
+struct PrescribedVelocityConfig {
+  std::string group;
+  std::array<double, 3> velocity{0.0, 0.0, 0.0};     ///< mm/s
+  std::array<bool, 3> components{true, true, true};  ///< which of x, y, z are prescribed
+  CurveConfig curve;                                 ///< scale factor against time; empty = 1
+};
+
 struct ControlConfig {
   double end_time = 0.0;       ///< s; 0 = run until the stroke is reached
   double stroke = 0.0;         ///< mm of travel of `stroke_tool`; 0 = use end_time
@@ -95,6 +119,8 @@ struct ControlConfig {
   double time_step_safety = 0.9;      ///< factor on the elements' critical time step
   double mass_scaling_dt = 0.0;       ///< s; target time step for mass scaling; 0 = off
   double energy_blowup_ratio = 10.0;  ///< stop when total energy exceeds this x external work (+1)
+  std::array<double, 3> gravity{0.0, 0.0, 0.0};  ///< mm/s^2 (forming cases: 0, or -9810 in z)
+  double damping = 0.0;  ///< 1/s, mass-proportional: force -damping * m * v on every node
 };
 
 /// A draw-in measurement: the in-plane displacement of a blank node along a direction at the end of
@@ -123,7 +149,10 @@ struct CaseConfig {
   std::vector<BoundaryConfig> boundaries;
   ControlConfig control;
   OutputConfig output;
-  std::vector<DrawInConfig> draw_ins;  ///< [[draw_in]] tables
+  std::vector<DrawInConfig> draw_ins;                           ///< [[draw_in]] tables
+  std::vector<LoadConfig> loads;                                ///< [[load]] tables
+  std::vector<InitialVelocityConfig> initial_velocities;        ///< [[initial_velocity]]
+  std::vector<PrescribedVelocityConfig> prescribed_velocities;  ///< [[prescribed_velocity]]
 
   /// The material named by blank.material (the reader guarantees it exists).
   const MaterialConfig& blank_material() const;

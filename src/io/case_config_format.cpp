@@ -27,12 +27,14 @@ class TomlWriter {
   void integer(std::string_view key, long long value, std::string_view unit = {}) {
     entry(key, fmt::format("{}", value), unit);
   }
+  void raw(std::string_view key, std::string_view value) { entry(key, value, {}); }
   void boolean(std::string_view key, bool value) { entry(key, value ? "true" : "false", {}); }
-  void vector(std::string_view key, const std::array<double, 3>& v) {
+  void vector(std::string_view key, const std::array<double, 3>& v,
+              std::string_view unit = "unit vector") {
     entry(key,
           fmt::format("[{}, {}, {}]", format_toml_number(v[0]), format_toml_number(v[1]),
                       format_toml_number(v[2])),
-          "unit vector");
+          unit);
   }
   void curve(std::string_view key, const CurveConfig& curve, std::string_view unit) {
     std::string points;
@@ -166,6 +168,52 @@ void write_draw_in(TomlWriter& w, const DrawInConfig& draw_in) {
   w.string("source", draw_in.source);
 }
 
+void write_load(TomlWriter& w, const LoadConfig& load) {
+  w.array_header("load");
+  w.string("group", load.group);
+  switch (load.type) {
+    case LoadConfig::Type::force:
+      w.string("type", "force");
+      w.vector("value", load.value, "N per node");
+      break;
+    case LoadConfig::Type::moment:
+      w.string("type", "moment");
+      w.vector("value", load.value, "N mm per node");
+      break;
+    case LoadConfig::Type::pressure:
+      w.string("type", "pressure");
+      w.number("pressure", load.pressure, "MPa on the top face");
+      break;
+  }
+  if (!load.curve.times.empty()) {
+    w.curve("curve", load.curve, "[[time (s), scale factor], ...]");
+  }
+}
+
+void write_initial_velocity(TomlWriter& w, const InitialVelocityConfig& iv) {
+  w.array_header("initial_velocity");
+  if (!iv.group.empty()) {
+    w.string("group", iv.group);
+  }
+  w.vector("velocity", iv.velocity, "mm/s");
+}
+
+void write_prescribed_velocity(TomlWriter& w, const PrescribedVelocityConfig& pv) {
+  w.array_header("prescribed_velocity");
+  w.string("group", pv.group);
+  w.vector("velocity", pv.velocity, "mm/s");
+  std::string components;
+  for (int i = 0; i < 3; ++i) {
+    if (pv.components[static_cast<std::size_t>(i)]) {
+      components += fmt::format("{}\"{}\"", components.empty() ? "" : ", ", "xyz"[i]);
+    }
+  }
+  w.raw("components", "[" + components + "]");
+  if (!pv.curve.times.empty()) {
+    w.curve("curve", pv.curve, "[[time (s), scale factor], ...]");
+  }
+}
+
 void write_control(TomlWriter& w, const ControlConfig& c) {
   w.header("control");
   w.number("end_time", c.end_time, "s; 0 = run until the stroke is reached");
@@ -181,6 +229,8 @@ void write_control(TomlWriter& w, const ControlConfig& c) {
   w.number("time_step_safety", c.time_step_safety);
   w.number("mass_scaling_dt", c.mass_scaling_dt, "s; 0 = no mass scaling");
   w.number("energy_blowup_ratio", c.energy_blowup_ratio);
+  w.vector("gravity", c.gravity, "mm/s^2");
+  w.number("damping", c.damping, "1/s, mass-proportional");
 }
 
 }  // namespace
@@ -208,6 +258,15 @@ std::string format_resolved_case(const CaseConfig& config) {
   }
   for (const auto& draw_in : config.draw_ins) {
     write_draw_in(w, draw_in);
+  }
+  for (const auto& load : config.loads) {
+    write_load(w, load);
+  }
+  for (const auto& iv : config.initial_velocities) {
+    write_initial_velocity(w, iv);
+  }
+  for (const auto& pv : config.prescribed_velocities) {
+    write_prescribed_velocity(w, pv);
   }
   write_control(w, config.control);
   w.header("output");

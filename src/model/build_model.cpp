@@ -45,11 +45,31 @@ void read_blank(const CaseConfig& config, Model& model) {
     throw InputError(fmt::format("{}: group '{}' holds no quadrilaterals", bc.mesh.file.string(),
                                  bc.mesh.group));
   }
+  std::vector<std::string> names;
   for (const BoundaryConfig& b : config.boundaries) {
-    blank.groups.push_back(extract_node_group(gmsh_model, blank.mesh, b.group));
+    names.push_back(b.group);
   }
   for (const DrawInConfig& d : config.draw_ins) {
-    blank.groups.push_back(extract_node_group(gmsh_model, blank.mesh, d.group));
+    names.push_back(d.group);
+  }
+  for (const LoadConfig& l : config.loads) {
+    names.push_back(l.group);
+  }
+  for (const InitialVelocityConfig& v : config.initial_velocities) {
+    if (!v.group.empty()) {
+      names.push_back(v.group);
+    }
+  }
+  for (const PrescribedVelocityConfig& v : config.prescribed_velocities) {
+    names.push_back(v.group);
+  }
+  for (const std::string& name : names) {
+    const bool seen = std::any_of(blank.groups.begin(), blank.groups.end(),
+                                  [&](const NodeGroup& g) { return g.name == name; });
+    if (!seen) {
+      blank.groups.push_back(extract_node_group(gmsh_model, blank.mesh, name));
+      blank.groups.back().name = name;
+    }
   }
 
   blank.inverse_element_count = VectorX::Zero(blank.mesh.nodes.cols());
@@ -96,9 +116,8 @@ void read_tools(const CaseConfig& config, Model& model) {
 
 void apply_boundaries(const CaseConfig& config, Model& model) {
   model.constraints.mask.assign(static_cast<std::size_t>(model.blank.mesh.nodes.cols()), 0);
-  for (std::size_t i = 0; i < config.boundaries.size(); ++i) {
-    const BoundaryConfig& b = config.boundaries[i];
-    for (int node : model.blank.groups[i].nodes) {
+  for (const BoundaryConfig& b : config.boundaries) {
+    for (int node : model.blank.group(b.group).nodes) {
       if (b.type == BoundaryConfig::Type::symmetry) {
         model.constraints.add_symmetry(node, b.axis);
       } else {
@@ -108,6 +127,53 @@ void apply_boundaries(const CaseConfig& config, Model& model) {
   }
 }
 
+LoadCurve make_scale_curve(const CurveConfig& curve) {
+  return curve.times.empty() ? LoadCurve({0.0}, {1.0}) : LoadCurve(curve.times, curve.values);
+}
+
+void set_up_loads(const CaseConfig& config, Model& model) {
+  ExternalLoads& loads = model.loads;
+  const Blank& blank = model.blank;
+  for (const LoadConfig& lc : config.loads) {
+    const NodeGroup& group = blank.group(lc.group);
+    if (lc.type == LoadConfig::Type::pressure) {
+      // The elements whose four nodes all lie in the group.
+      std::vector<char> in_group(static_cast<std::size_t>(blank.mesh.nodes.cols()), 0);
+      for (int node : group.nodes) {
+        in_group[static_cast<std::size_t>(node)] = 1;
+      }
+      PressureLoad pressure{{}, lc.pressure, make_scale_curve(lc.curve)};
+      for (Eigen::Index e = 0; e < blank.mesh.quads.cols(); ++e) {
+        bool all = true;
+        for (int a = 0; a < 4; ++a) {
+          all = all && in_group[static_cast<std::size_t>(blank.mesh.quads(a, e))];
+        }
+        if (all) {
+          pressure.elements.push_back(static_cast<int>(e));
+        }
+      }
+      if (pressure.elements.empty()) {
+        throw InputError(
+            fmt::format("{}: pressure load on group '{}': the group holds no whole "
+                        "element of the blank (give a surface group)",
+                        config.file.string(), lc.group));
+      }
+      loads.pressures.push_back(std::move(pressure));
+    } else {
+      loads.nodal.push_back({group.nodes, Vec3(lc.value[0], lc.value[1], lc.value[2]),
+                             lc.type == LoadConfig::Type::moment, make_scale_curve(lc.curve)});
+    }
+  }
+  for (const PrescribedVelocityConfig& pc : config.prescribed_velocities) {
+    loads.prescribed_velocities.push_back({blank.group(pc.group).nodes,
+                                           Vec3(pc.velocity[0], pc.velocity[1], pc.velocity[2]),
+                                           pc.components, make_scale_curve(pc.curve)});
+  }
+  loads.gravity =
+      Vec3(config.control.gravity[0], config.control.gravity[1], config.control.gravity[2]);
+  loads.damping = config.control.damping;
+}
+
 // Uniform density scaling up to the target step: the simplest mass scaling, exact for a uniform
 // mesh and reported as added mass. Selective (per-element) scaling is a later refinement.
 void set_mass_and_time_step(const CaseConfig& config, Model& model, const ShellState& state) {
@@ -115,6 +181,7 @@ void set_mass_and_time_step(const CaseConfig& config, Model& model, const ShellS
   const ControlConfig& control = config.control;
   compute_lumped_mass(blank.part, blank.mesh.nodes, state, blank.mass, blank.rotational_inertia);
   blank.physical_mass = blank.mass.sum();
+  blank.physical_nodal_mass = blank.mass;
   StableStep step = compute_stable_time_step(blank.part, blank.mesh.nodes, state);
   double dt = control.time_step_safety * step.dt;
   if (control.mass_scaling_dt > dt) {
@@ -184,6 +251,15 @@ void set_end_time(const CaseConfig& config, Model& model) {
 
 }  // namespace
 
+const NodeGroup& Blank::group(const std::string& name) const {
+  for (const NodeGroup& g : groups) {
+    if (g.name == name) {
+      return g;
+    }
+  }
+  throw std::logic_error("node group '" + name + "' was not read by build_model");
+}
+
 Model build_model(const CaseConfig& config) {
   Model model;
   model.config = config;
@@ -196,6 +272,7 @@ Model build_model(const CaseConfig& config) {
   set_mass_and_time_step(config, model, state);
   set_up_contacts(config, model, state);
   set_end_time(config, model);
+  set_up_loads(config, model);
   // The contact pairs point at the tools' surfaces: the tools vector must not move again.
   for (ContactInterface& c : model.contacts) {
     c.pair.surface = &model.tools[static_cast<std::size_t>(c.tool)].surface;

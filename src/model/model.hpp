@@ -24,7 +24,46 @@ struct Blank {
   double physical_mass = 0.0;     ///< tonne, before mass scaling
   double added_mass = 0.0;        ///< tonne, added by mass scaling
   VectorX inverse_element_count;  ///< per node, 1 / (elements sharing it), for nodal averages
-  std::vector<NodeGroup> groups;  ///< the boundary groups and measurement points the case names
+  VectorX physical_nodal_mass;    ///< tonne per node before mass scaling (for gravity)
+  std::vector<NodeGroup> groups;  ///< every node group the case names, each once
+
+  /// The node group of this name (build_model reads every group the case names).
+  const NodeGroup& group(const std::string& name) const;
+};
+
+/// A force or moment per node, scaled over time.
+struct NodalLoad {
+  std::vector<int> nodes;
+  Vec3 value = Vec3::Zero();  ///< N (force) or N mm (moment) per node
+  bool moment = false;
+  LoadCurve scale;  ///< scale factor against time
+};
+
+/// A pressure on the top face of a set of elements, following the deforming surface.
+struct PressureLoad {
+  std::vector<int> elements;
+  double pressure = 0.0;  ///< MPa
+  LoadCurve scale;
+};
+
+/// Velocity components held at prescribed values on a set of nodes.
+struct PrescribedVelocity {
+  std::vector<int> nodes;
+  Vec3 velocity = Vec3::Zero();  ///< mm/s
+  std::array<bool, 3> components{true, true, true};
+  LoadCurve scale;
+};
+
+/// Everything that loads the blank besides the tools.
+struct ExternalLoads {
+  std::vector<NodalLoad> nodal;
+  std::vector<PressureLoad> pressures;
+  std::vector<PrescribedVelocity> prescribed_velocities;
+  Vec3 gravity = Vec3::Zero();  ///< mm/s^2
+  double damping = 0.0;         ///< 1/s, mass-proportional
+  bool empty() const {
+    return nodal.empty() && pressures.empty() && gravity.isZero() && prescribed_velocities.empty();
+  }
 };
 
 /// A rigid tool: its triangulated surface in the reference position and its prescribed motion.
@@ -47,6 +86,7 @@ struct Model {
   std::vector<Tool> tools;
   std::vector<ContactInterface> contacts;
   NodalConstraints constraints;
+  ExternalLoads loads;
   double end_time = 0.0;   ///< s, from control.end_time or the stroke
   int stroke_tool = -1;    ///< index of the tool whose travel is the stroke, or -1
   double time_step = 0.0;  ///< s, the initial stable step with the safety factor (after scaling)

@@ -8,10 +8,14 @@ struct Energies {
   double internal = 0.0;       ///< work of the element forces, hourglass work excluded
   double hourglass = 0.0;      ///< work of the hourglass forces
   double contact = 0.0;        ///< elastic energy stored in the penalty springs, 1/2 k g^2
-  double external_work = 0.0;  ///< work done on the blank by the moving tools (and loads)
+  double damping = 0.0;        ///< dissipated by mass-proportional damping
+  double external_work = 0.0;  ///< work done on the blank by the tools, loads and prescribed motion
+  double initial_kinetic = 0.0;  ///< kinetic energy of the initial velocities
 
-  double total() const { return kinetic + internal + hourglass + contact; }
-  /// (total - external work) relative to the larger of the two; 0 when nothing has happened.
+  double total() const { return kinetic + internal + hourglass + contact + damping; }
+  /// What the total must equal: the work put in plus the initial kinetic energy.
+  double supplied() const { return external_work + initial_kinetic; }
+  /// (total - supplied) relative to the larger of the two; 0 when nothing has happened.
   double balance_error() const;
   /// kinetic / internal, the quasi-static check of a forming run (0 while nothing is strained).
   double kinetic_ratio() const {
@@ -20,11 +24,11 @@ struct Energies {
 };
 
 inline double Energies::balance_error() const {
-  const double scale = external_work > total() ? external_work : total();
+  const double scale = supplied() > total() ? supplied() : total();
   if (scale <= 0.0) {
     return 0.0;
   }
-  return (total() - external_work) / scale;
+  return (total() - supplied()) / scale;
 }
 
 }  // namespace sf

@@ -26,18 +26,76 @@ double kinetic_energy(const Model& model, const SolutionState& s) {
 
 // Accelerations from the nodal force balance, straight into the half-step velocity update.
 // Returns false if any value is not finite (the caller then finds and names the node).
+// Mass-proportional damping acts on the old half-step velocity (force -c m v), which keeps the
+// update explicit; it is stable for c dt < 2.
 bool update_velocities(const Model& model, SolutionState& s, double weight) {
   const Eigen::Index n = s.v.cols();
+  const double c = model.loads.damping;
   double check = 0.0;
   for (Eigen::Index i = 0; i < n; ++i) {
     const double inv_m = 1.0 / model.blank.mass[i];
     const double inv_i = 1.0 / model.blank.rotational_inertia[i];
-    s.v.col(i) += (weight * inv_m) * (s.f_contact.col(i) - s.f_int.col(i));
-    s.omega.col(i) -= (weight * inv_i) * s.m_int.col(i);
+    s.v.col(i) += (weight * inv_m) * (s.f_ext.col(i) + s.f_contact.col(i) - s.f_int.col(i)) -
+                  (weight * c) * s.v.col(i);
+    s.omega.col(i) +=
+        (weight * inv_i) * (s.m_ext.col(i) - s.m_int.col(i)) - (weight * c) * s.omega.col(i);
     check += s.v.col(i).sum() + s.omega.col(i).sum();
   }
   model.constraints.apply(s.v, s.omega);
   return std::isfinite(check);
+}
+
+// Holds the prescribed velocity components; returns the work (N mm) of the reactions that do
+// so over the step dt: reaction = m (v_prescribed - v_free) / weight, times v_prescribed dt.
+double apply_prescribed_velocities(const Model& model, SolutionState& s, double weight, double dt) {
+  double work = 0.0;
+  const double t_mid = s.time + 0.5 * dt;
+  for (const PrescribedVelocity& p : model.loads.prescribed_velocities) {
+    const Vec3 target = p.scale.value(t_mid) * p.velocity;
+    for (int node : p.nodes) {
+      for (int c = 0; c < 3; ++c) {
+        if (p.components[static_cast<std::size_t>(c)]) {
+          const double reaction = model.blank.mass[node] * (target[c] - s.v(c, node)) / weight;
+          s.v(c, node) = target[c];
+          work += reaction * target[c] * dt;
+        }
+      }
+    }
+  }
+  return work;
+}
+
+// Applied forces and moments at the current time and configuration.
+void compute_external_forces(const Model& model, SolutionState& s) {
+  const ExternalLoads& loads = model.loads;
+  s.f_ext.setZero();
+  s.m_ext.setZero();
+  if (!loads.gravity.isZero()) {
+    for (Eigen::Index i = 0; i < s.f_ext.cols(); ++i) {
+      s.f_ext.col(i) = model.blank.physical_nodal_mass[i] * loads.gravity;
+    }
+  }
+  for (const NodalLoad& load : loads.nodal) {
+    const Vec3 value = load.scale.value(s.time) * load.value;
+    Matrix3X& target = load.moment ? s.m_ext : s.f_ext;
+    for (int node : load.nodes) {
+      target.col(node) += value;
+    }
+  }
+  const QuadConn& quads = model.blank.part.quads;
+  for (const PressureLoad& load : loads.pressures) {
+    const double p = load.scale.value(s.time) * load.pressure;
+    for (int e : load.elements) {
+      // Vector area of the quad, (x3 - x1) x (x4 - x2) / 2, shared equally by its nodes; the
+      // pressure on the top face pushes along -normal.
+      const Vec3 area = 0.5 * (s.x.col(quads(2, e)) - s.x.col(quads(0, e)))
+                                  .cross(s.x.col(quads(3, e)) - s.x.col(quads(1, e)));
+      const Vec3 f = (-0.25 * p) * area;
+      for (int a = 0; a < 4; ++a) {
+        s.f_ext.col(quads(a, e)) += f;
+      }
+    }
+  }
 }
 
 [[noreturn]] void throw_non_finite(const Model& model, const SolutionState& s) {
@@ -58,12 +116,12 @@ bool update_velocities(const Model& model, SolutionState& s, double weight) {
 void check_energy(const Model& model, const SolutionState& s, double energy_scale) {
   const Energies& e = s.energies;
   const double ratio = model.config.control.energy_blowup_ratio;
-  if (e.total() > ratio * std::max(e.external_work, energy_scale)) {
+  if (e.total() > ratio * std::max(e.supplied(), energy_scale)) {
     throw InstabilityError(fmt::format(
         "energy blow-up at t = {:.6e} s, cycle {}: total energy {:.6e} N mm exceeds {} x the "
-        "external work {:.6e} N mm (kinetic {:.4e}, internal {:.4e}, hourglass {:.4e}, contact "
+        "work supplied {:.6e} N mm (kinetic {:.4e}, internal {:.4e}, hourglass {:.4e}, contact "
         "{:.4e}); reduce the time-step safety factor or the penalty scale",
-        s.time, s.cycle, e.total(), ratio, e.external_work, e.kinetic, e.internal, e.hourglass,
+        s.time, s.cycle, e.total(), ratio, e.supplied(), e.kinetic, e.internal, e.hourglass,
         e.contact));
   }
 }
@@ -79,12 +137,29 @@ SolutionState make_initial_state(const Model& model) {
   s.f_int = Matrix3X::Zero(3, n);
   s.m_int = Matrix3X::Zero(3, n);
   s.f_contact = Matrix3X::Zero(3, n);
+  s.f_ext = Matrix3X::Zero(3, n);
+  s.m_ext = Matrix3X::Zero(3, n);
+  s.f_ext_previous = Matrix3X::Zero(3, n);
+  s.m_ext_previous = Matrix3X::Zero(3, n);
   s.f_int_previous = Matrix3X::Zero(3, n);
   s.m_int_previous = Matrix3X::Zero(3, n);
   s.half_thickness = VectorX::Zero(n);
   s.shell = make_shell_state(static_cast<int>(model.blank.part.quads.cols()),
                              model.config.blank.integration_points, model.config.blank.thickness);
   s.tools.resize(model.tools.size());
+  for (const InitialVelocityConfig& iv : model.config.initial_velocities) {
+    const Vec3 velocity(iv.velocity[0], iv.velocity[1], iv.velocity[2]);
+    if (iv.group.empty()) {
+      s.v.colwise() = velocity;
+    } else {
+      for (int node : model.blank.group(iv.group).nodes) {
+        s.v.col(node) = velocity;
+      }
+    }
+  }
+  model.constraints.apply(s.v, s.omega);
+  s.energies.kinetic = kinetic_energy(model, s);
+  s.energies.initial_kinetic = s.energies.kinetic;
   return s;
 }
 
@@ -97,6 +172,7 @@ double compute_forces(Model& model, SolutionState& s, double dt) {
   s.f_int.setZero();
   s.m_int.setZero();
   s.f_contact.setZero();
+  compute_external_forces(model, s);
   double hourglass_power = 0.0;
   const auto element_start = std::chrono::steady_clock::now();
   try {
@@ -137,9 +213,11 @@ double compute_forces(Model& model, SolutionState& s, double dt) {
 }
 
 void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previous) {
-  if (!update_velocities(model, s, velocity_update_weight(dt, dt_previous))) {
+  const double weight = velocity_update_weight(dt, dt_previous);
+  if (!update_velocities(model, s, weight)) {
     throw_non_finite(model, s);
   }
+  const double prescribed_work = apply_prescribed_velocities(model, s, weight, dt);
   s.x += dt * s.v;
   s.time += dt;
   s.cycle += 1;
@@ -155,17 +233,28 @@ void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previ
 
   s.f_int_previous.swap(s.f_int);
   s.m_int_previous.swap(s.m_int);
+  s.f_ext_previous.swap(s.f_ext);
+  s.m_ext_previous.swap(s.m_ext);
   const double hourglass_power = compute_forces(model, s, dt);
 
   // Energies by the trapezoidal rule on the work increments.
   Energies& e = s.energies;
   double element_work = 0.0;
+  double load_work = 0.0;
+  double damping_power = 0.0;
   const Eigen::Index n = s.x.cols();
   for (Eigen::Index i = 0; i < n; ++i) {
     element_work += 0.5 * dt *
                     ((s.f_int.col(i) + s.f_int_previous.col(i)).dot(s.v.col(i)) +
                      (s.m_int.col(i) + s.m_int_previous.col(i)).dot(s.omega.col(i)));
+    load_work += 0.5 * dt *
+                 ((s.f_ext.col(i) + s.f_ext_previous.col(i)).dot(s.v.col(i)) +
+                  (s.m_ext.col(i) + s.m_ext_previous.col(i)).dot(s.omega.col(i)));
+    damping_power += model.blank.mass[i] * s.v.col(i).squaredNorm() +
+                     model.blank.rotational_inertia[i] * s.omega.col(i).squaredNorm();
   }
+  e.external_work += load_work + prescribed_work;
+  e.damping += model.loads.damping * damping_power * dt;
   const double hourglass_work = hourglass_power * dt;
   e.hourglass += hourglass_work;
   e.internal += element_work - hourglass_work;

@@ -40,10 +40,8 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
     ts.peak_force = s.tools[t].peak_force;
     r.tools.push_back(ts);
   }
-  const std::size_t first_draw_in_group = model.config.boundaries.size();
-  for (std::size_t d = 0; d < model.config.draw_ins.size(); ++d) {
-    const DrawInConfig& dc = model.config.draw_ins[d];
-    const NodeGroup& group = model.blank.groups[first_draw_in_group + d];
+  for (const DrawInConfig& dc : model.config.draw_ins) {
+    const NodeGroup& group = model.blank.group(dc.group);
     const Vec3 direction(dc.direction[0], dc.direction[1], dc.direction[2]);
     double sum = 0.0;
     for (int node : group.nodes) {
@@ -110,6 +108,8 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
                      {"internal", r.energies.internal},
                      {"hourglass", r.energies.hourglass},
                      {"contact", r.energies.contact},
+                     {"damping", r.energies.damping},
+                     {"initial_kinetic", r.energies.initial_kinetic},
                      {"external_work", r.energies.external_work},
                      {"balance_error", r.energies.balance_error()}};
   j["kinetic_ratio_end"] = r.energies.kinetic_ratio();

@@ -29,6 +29,10 @@ struct SolutionState {
   Matrix3X f_int;           ///< N, internal forces (resisting)
   Matrix3X m_int;           ///< N mm, internal moments (resisting)
   Matrix3X f_contact;       ///< N, contact forces on the blank nodes
+  Matrix3X f_ext;           ///< N, applied forces (loads, pressure, gravity)
+  Matrix3X m_ext;           ///< N mm, applied moments
+  Matrix3X f_ext_previous;  ///< N, a step ago (for the work increment)
+  Matrix3X m_ext_previous;  ///< N mm
   Matrix3X f_int_previous;  ///< N, for the trapezoidal work increment
   Matrix3X m_int_previous;  ///< N mm
   VectorX half_thickness;   ///< mm per node, the contact offset
