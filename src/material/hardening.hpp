@@ -1,6 +1,8 @@
 #pragma once
-// Isotropic hardening laws: flow stress as a function of the equivalent plastic strain.
+// Isotropic hardening laws: flow stress (MPa) as a function of the equivalent plastic strain (-).
+#include <filesystem>
 #include <variant>
+#include <vector>
 
 namespace sf {
 
@@ -38,8 +40,36 @@ struct LinearHardening {
   FlowStress evaluate(double eps_p) const { return {flow_stress(eps_p), H}; }
 };
 
+/// Voce (1948) saturation hardening: sigma_y = sigma0 + Q (1 - exp(-b eps_p)), slope
+/// Q b exp(-b eps_p). Needs sigma0 > 0, Q >= 0, b > 0.
+struct VoceHardening {
+  double sigma0 = 0.0;  ///< MPa, initial yield stress
+  double Q = 0.0;       ///< MPa, saturation increase (sigma_y -> sigma0 + Q)
+  double b = 0.0;       ///< -, saturation rate
+
+  double flow_stress(double eps_p) const { return evaluate(eps_p).stress; }
+  double slope(double eps_p) const { return evaluate(eps_p).slope; }
+  /// Both at once (one exp).
+  FlowStress evaluate(double eps_p) const;
+};
+
+/// Tabulated hardening: points (eps_p[i], stress[i]) of true stress (MPa) against equivalent
+/// plastic strain (-), interpolated linearly and extrapolated beyond the last point with the last
+/// segment's slope (a single point: perfect plasticity). Valid tables (check_hardening): at least
+/// one point, eps_p[0] = 0, eps_p strictly increasing, stress > 0 and non-decreasing, all finite.
+/// At a breakpoint the slope is the one of the segment to its right.
+struct TabulatedHardening {
+  std::vector<double> eps_p;   ///< -, equivalent plastic strain of each point
+  std::vector<double> stress;  ///< MPa, true flow stress of each point
+
+  double flow_stress(double e) const { return evaluate(e).stress; }
+  double slope(double e) const { return evaluate(e).slope; }
+  /// Both at once (binary search, no allocation).
+  FlowStress evaluate(double e) const;
+};
+
 /// A hardening law, chosen once per material.
-using Hardening = std::variant<SwiftHardening, LinearHardening>;
+using Hardening = std::variant<SwiftHardening, LinearHardening, VoceHardening, TabulatedHardening>;
 
 /// Flow stress (MPa) of any hardening law at eps_p (-).
 double flow_stress(const Hardening& hardening, double eps_p);
@@ -49,7 +79,14 @@ double hardening_slope(const Hardening& hardening, double eps_p);
 inline FlowStress evaluate_hardening(const Hardening& hardening, double eps_p) {
   return std::visit([eps_p](const auto& h) { return h.evaluate(eps_p); }, hardening);
 }
-/// Throws InputError (naming `what`) unless the parameters are physically admissible.
+/// Throws InputError (naming `what`, and the row of a table, 1-based) unless the parameters are
+/// physically admissible.
 void check_hardening(const Hardening& hardening, const char* what);
+
+/// Reads a hardening table: two columns per line, equivalent plastic strain (-) and true stress
+/// (MPa), separated by a comma, semicolon or white space; '#' starts a comment; one header line
+/// (the first non-comment line, if it is not numeric) is allowed. Throws InputError naming the
+/// file and line for an unreadable file, a bad row, or a table check_hardening would reject.
+TabulatedHardening read_hardening_csv(const std::filesystem::path& path);
 
 }  // namespace sf

@@ -19,9 +19,13 @@ struct PlaneStressState {
 struct PlaneStressUpdate {
   Vec3 stress;   ///< new (sxx, syy, sxy), MPa
   double eps_p;  ///< new equivalent plastic strain, -
-  double
-      d_ezz;  ///< through-thickness strain increment, - (plane stress + plastic incompressibility)
+  /// Through-thickness strain increment, - (plane stress + plastic incompressibility).
+  double d_ezz;
   bool plastic;  ///< true when the step was plastic
+  /// Plastic work increment per unit volume, MPa (= N mm / mm^3): sigma_mid . d_eps^p with
+  /// sigma_mid = (sigma_n + sigma_{n+1}) / 2, so that the element's trapezoidal stress work
+  /// sigma_mid . d_eps equals the elastic energy change plus this, exactly. 0 for elastic steps.
+  double d_plastic_work = 0.0;
 };
 
 /// Linear isotropic elasticity in plane stress (Hooke).
@@ -36,7 +40,8 @@ struct ElasticPlaneStress {
 
 /// Von Mises (J2) elastic-plastic plane stress with isotropic hardening, integrated by the closed-
 /// point return mapping of Simo & Taylor (1986), Simo & Hughes (1998) sect. 3.4 (Newton on the
-/// consistency parameter, relative tolerance 1e-10 on the yield condition).
+/// consistency parameter, relative tolerance 1e-10 on the yield condition). Equal to
+/// Hill48PlaneStress with r0 = r45 = r90 = 1.
 struct J2PlaneStress {
   using State = PlaneStressState;
   double E = 0.0;   ///< Young's modulus, MPa
@@ -48,8 +53,55 @@ struct J2PlaneStress {
   PlaneStressUpdate update(const State& old, const Vec3& d_strain) const;
 };
 
+/// Hill (1948) quadratic anisotropic yield function coefficients, normalised with the rolling
+/// direction (RD) as reference: G + H = 1, so sigma_eq = sigma_y in uniaxial tension along RD.
+/// From the Lankford coefficients: G = 1/(1 + r0), H = r0/(1 + r0), F = r0/(r90 (1 + r0)),
+/// N = (r0 + r90)(1 + 2 r45) / (2 r90 (1 + r0)).
+struct Hill48Coefficients {
+  double F, G, H, N;  ///< -
+};
+/// Hill48 coefficients from r0, r45, r90 (> 0; not checked here, see check_material).
+Hill48Coefficients hill48_coefficients(double r0, double r45, double r90);
+/// Hill48 plane-stress equivalent stress (MPa) of (sxx, syy, sxy) in material axes:
+/// sigma_eq^2 = G sxx^2 + F syy^2 + H (sxx - syy)^2 + 2 N sxy^2.
+double hill48_equivalent_stress(const Hill48Coefficients& c, const Vec3& stress);
+
+/// Hill (1948) orthotropic elastic-plastic plane stress with isotropic elasticity, associated
+/// flow and isotropic hardening (hardening gives sigma_y of the rolling direction, the reference).
+/// The return is the closed-point (backward-Euler) return of the J2 law generalised to the Hill
+/// matrix P: C^-1 and P are diagonalised together (a 2 x 2 generalised eigenproblem for the normal
+/// components; the shear decouples), so the stress is a closed-form scaling in that basis and only
+/// a scalar consistency equation is solved (Newton, relative tolerance 1e-10 on the yield
+/// condition). See docs/material.md.
+///
+/// FRAME: stress and strain are in the MATERIAL axes (x = rolling direction, y = transverse
+/// direction). The caller rotates d_strain (engineering shear) into the rolling-direction frame
+/// with rotate_strain and the stress back with rotate_stress; State.stress is stored in material
+/// axes. Used directly (unrotated), the element frame is taken as the material frame.
+struct Hill48PlaneStress {
+  using State = PlaneStressState;
+  double E = 0.0;    ///< Young's modulus, MPa
+  double nu = 0.0;   ///< Poisson's ratio, -
+  double r0 = 1.0;   ///< Lankford coefficient at 0 deg to the rolling direction, -
+  double r45 = 1.0;  ///< Lankford coefficient at 45 deg, -
+  double r90 = 1.0;  ///< Lankford coefficient at 90 deg, -
+  Hardening hardening = LinearHardening{};  ///< flow stress in the rolling direction
+
+  /// New state after the strain increment d_strain = (d_exx, d_eyy, d_gxy) in material axes.
+  /// Throws InstabilityError if the return mapping fails (non-finite input).
+  PlaneStressUpdate update(const State& old, const Vec3& d_strain) const;
+};
+
 /// A shell part's material law, chosen once per part (visit it outside element loops).
-using Material = std::variant<ElasticPlaneStress, J2PlaneStress>;
+using Material = std::variant<ElasticPlaneStress, J2PlaneStress, Hill48PlaneStress>;
+
+/// Components of a strain (exx, eyy, gxy; engineering shear) in axes rotated by `angle` (rad,
+/// counter-clockwise about e3) from the current ones: e' = R^T e R, R = [[c, -s], [s, c]].
+/// rotate_strain(rotate_strain(e, a), -a) = e.
+Vec3 rotate_strain(const Vec3& strain, double angle);
+/// Components of a stress (sxx, syy, sxy; tensor shear) in axes rotated by `angle` (rad,
+/// counter-clockwise about e3): s' = R^T s R. The work s . e (Voigt) is invariant.
+Vec3 rotate_stress(const Vec3& stress, double angle);
 
 /// Plane-stress elastic stiffness C (MPa), Voigt with engineering shear.
 Mat3 plane_stress_stiffness(double E, double nu);
@@ -63,7 +115,8 @@ double plane_stress_wave_speed(double E, double nu, double rho);
 double young_modulus(const Material& material);
 /// Poisson's ratio of any material.
 double poisson_ratio(const Material& material);
-/// Throws InputError (naming `what`) unless E > 0, -1 < nu < 0.5 and the hardening is admissible.
+/// Throws InputError (naming `what`) unless E > 0, -1 < nu < 0.5, the hardening is admissible
+/// and (Hill48) r0, r45, r90 are finite and > 0.
 void check_material(const Material& material, const char* what);
 
 }  // namespace sf

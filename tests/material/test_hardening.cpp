@@ -1,0 +1,151 @@
+// Voce and tabulated hardening, the hardening-table reader, and J2 with a tabulated Swift curve.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "core/errors.hpp"
+#include "material/plane_stress.hpp"
+
+namespace sf {
+namespace {
+
+// Writes `text` to a file in the test's temporary directory and returns its path.
+std::filesystem::path write_file(const std::string& name, const std::string& text) {
+  const auto path = std::filesystem::temp_directory_path() / ("sf_test_hardening_" + name);
+  std::ofstream(path) << text;
+  return path;
+}
+
+// Message of the InputError `f` throws ("" if none).
+template <class F>
+std::string input_error(F f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Hardening, VoceAgainstClosedForm) {
+  // Closed form sigma0 + Q (1 - exp(-b e)), slope Q b exp(-b e); tolerance 1e-13 relative (round-
+  // off); slope also against a central difference (h = 1e-6, O(h^2) error ~ 1e-9 relative).
+  const VoceHardening v{200.0, 150.0, 12.0};
+  for (const double e : {0.0, 0.01, 0.1, 0.5}) {
+    const double s = 200.0 + 150.0 * (1.0 - std::exp(-12.0 * e));
+    EXPECT_NEAR(flow_stress(Hardening{v}, e) / s, 1.0, 1e-13);
+    EXPECT_NEAR(hardening_slope(Hardening{v}, e) / (1800.0 * std::exp(-12.0 * e)), 1.0, 1e-13);
+    const double h = 1e-6;
+    const double fd = (v.flow_stress(e + h) - v.flow_stress(e - h)) / (2 * h);
+    EXPECT_NEAR(v.slope(e) / fd, 1.0, 1e-8);
+  }
+  EXPECT_THROW(check_hardening(Hardening{VoceHardening{200.0, -1.0, 12.0}}, "m"), InputError);
+  EXPECT_THROW(check_hardening(Hardening{VoceHardening{200.0, 10.0, 0.0}}, "m"), InputError);
+  EXPECT_NO_THROW(check_hardening(Hardening{v}, "m"));
+}
+
+TEST(Hardening, TabulatedInterpolatesAndExtrapolates) {
+  // Piecewise linear through the points; last slope beyond the table; exact to 1e-12 MPa.
+  const TabulatedHardening t{{0.0, 0.1, 0.3}, {200.0, 300.0, 340.0}};
+  EXPECT_NEAR(t.flow_stress(0.0), 200.0, 1e-12);
+  EXPECT_NEAR(t.flow_stress(0.05), 250.0, 1e-12);
+  EXPECT_NEAR(t.slope(0.05), 1000.0, 1e-9);
+  EXPECT_NEAR(t.flow_stress(0.1), 300.0, 1e-12);
+  EXPECT_NEAR(t.slope(0.1), 200.0, 1e-9);  // right-hand segment at a breakpoint
+  EXPECT_NEAR(t.flow_stress(0.2), 320.0, 1e-12);
+  EXPECT_NEAR(t.flow_stress(0.5), 380.0, 1e-12);  // extrapolated with slope 200
+  EXPECT_NEAR(t.slope(0.5), 200.0, 1e-9);
+  EXPECT_NEAR(TabulatedHardening({{0.0}, {250.0}}).flow_stress(0.3), 250.0, 0.0);
+  EXPECT_NO_THROW(check_hardening(Hardening{t}, "m"));
+}
+
+TEST(Hardening, TabulatedValidationNamesTheRow) {
+  const auto msg = [](std::vector<double> e, std::vector<double> s) {
+    return input_error([&] { check_hardening(Hardening{TabulatedHardening{e, s}}, "alu"); });
+  };
+  EXPECT_NE(msg({0.0, 0.2, 0.1}, {200, 300, 310}).find("row 3"), std::string::npos);
+  EXPECT_NE(msg({0.0, 0.1, 0.2}, {200, 300, 290}).find("row 3"), std::string::npos);
+  EXPECT_NE(msg({0.01, 0.1}, {200, 300}).find("row 1"), std::string::npos);
+  EXPECT_NE(msg({0.0, 0.1, 0.1}, {200, 300, 300}).find("row 3"), std::string::npos);
+  EXPECT_NE(msg({0.0, 0.1}, {200}), "");
+  EXPECT_EQ(msg({0.0, 0.1, 0.2}, {200, 300, 300}), "");  // flat segment is allowed
+}
+
+TEST(Hardening, CsvReaderReadsCommentsAndHeader) {
+  const auto path = write_file("good.csv",
+                               "# NUMISHEET-like curve\n"
+                               "plastic_strain, true_stress_MPa\n"
+                               "0, 200   # first point\n"
+                               "\n"
+                               "0.1;300\n"
+                               "0.3 340\n");
+  const TabulatedHardening t = read_hardening_csv(path);
+  ASSERT_EQ(t.eps_p.size(), 3u);
+  EXPECT_EQ(t.eps_p[1], 0.1);
+  EXPECT_EQ(t.stress[2], 340.0);
+}
+
+TEST(Hardening, CsvReaderErrorsNameFileAndLine) {
+  const auto bad_number = write_file("bad_number.csv", "eps,stress\n0,200\n0.1,3x0\n");
+  std::string m = input_error([&] { read_hardening_csv(bad_number); });
+  EXPECT_NE(m.find("bad_number.csv"), std::string::npos) << m;
+  EXPECT_NE(m.find("line 3"), std::string::npos) << m;
+
+  const auto decreasing = write_file("decreasing.csv", "# c\n0,200\n0.2,300\n0.1,310\n");
+  m = input_error([&] { read_hardening_csv(decreasing); });
+  EXPECT_NE(m.find("decreasing.csv"), std::string::npos) << m;
+  EXPECT_NE(m.find("line 4"), std::string::npos) << m;
+
+  const auto second_header = write_file("two_headers.csv", "eps,stress\nmore,words\n0,200\n");
+  m = input_error([&] { read_hardening_csv(second_header); });
+  EXPECT_NE(m.find("line 2"), std::string::npos) << m;
+
+  const auto three_columns = write_file("three.csv", "0,200\n0.1,300,1\n");
+  m = input_error([&] { read_hardening_csv(three_columns); });
+  EXPECT_NE(m.find("line 2"), std::string::npos) << m;
+
+  m = input_error([&] { read_hardening_csv("/nonexistent/curve.csv"); });
+  EXPECT_NE(m.find("curve.csv"), std::string::npos) << m;
+}
+
+TEST(Hardening, J2WithDenseTabulatedSwiftMatchesSwift) {
+  // NUMISHEET'93 aluminium Swift curve (REFERENCES.md, grade C), sampled at spacing h = 1e-4 on
+  // [0, 0.5]. Linear-interpolation error bound: |e| <= h^2/8 max|sigma''| on each segment; the
+  // largest |sigma''| = n (1 - n) K eps0^(n-2) (at eps_p = 0) = 1.1e5 MPa gives 1.4e-4 MPa, i.e.
+  // 1.05e-6 relative to sigma_y(0) = 132 MPa. A mixed strain path of 100 steps then checks the
+  // stress against J2 with Swift with tolerance 2 x that bound (relative; the factor 2 covers the
+  // error carried from step to step) and eps_p to 5e-7 absolute.
+  const SwiftHardening swift{576.79, 0.01658, 0.3593};
+  TabulatedHardening table;
+  for (int i = 0; i <= 5000; ++i) {
+    table.eps_p.push_back(1e-4 * i);
+    table.stress.push_back(swift.flow_stress(1e-4 * i));
+  }
+  const double bound = 1e-8 / 8 * 0.3593 * (1 - 0.3593) * 576.79 * std::pow(0.01658, 0.3593 - 2);
+  const double tol = 2.0 * bound / swift.flow_stress(0.0);
+  EXPECT_LT(tol, 2.2e-6);
+  const J2PlaneStress a{71000.0, 0.33, swift};
+  const J2PlaneStress b{71000.0, 0.33, table};
+  PlaneStressState sa;
+  PlaneStressState sb;
+  double max_err = 0.0;
+  for (int i = 0; i < 100; ++i) {
+    const Vec3 d(2e-3, -1e-3, 2e-4);
+    const PlaneStressUpdate ua = a.update(sa, d);
+    const PlaneStressUpdate ub = b.update(sb, d);
+    max_err = std::max(max_err, (ua.stress - ub.stress).norm() / ua.stress.norm());
+    EXPECT_NEAR(ua.eps_p, ub.eps_p, 5e-7);
+    sa = {ua.stress, ua.eps_p};
+    sb = {ub.stress, ub.eps_p};
+  }
+  EXPECT_GT(sa.eps_p, 0.15);
+  EXPECT_LT(max_err, tol);
+  std::printf("tabulated vs Swift: max rel stress difference %.3e (bound %.3e)\n", max_err,
+              bound / swift.flow_stress(0.0));
+}
+
+}  // namespace
+}  // namespace sf
