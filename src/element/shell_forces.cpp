@@ -1,6 +1,8 @@
 #include "element/shell_forces.hpp"
 
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <variant>
@@ -11,6 +13,16 @@
 namespace sf {
 
 namespace {
+
+// Gathers the 4 nodal columns of element e from a column-major 3 x n array (no bounds checks).
+inline void gather(const double* a, const int* nodes, Quad3& q) {
+  for (int i = 0; i < 4; ++i) {
+    const double* c = a + 3 * static_cast<std::ptrdiff_t>(nodes[i]);
+    q(0, i) = c[0];
+    q(1, i) = c[1];
+    q(2, i) = c[2];
+  }
+}
 
 // The element loop, instantiated once per material type (the variant is visited outside it).
 template <class Law>
@@ -23,13 +35,37 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
   const double ks_g = 5.0 / 6.0 * shear_modulus;  // shear correction factor 5/6
   const double c = plane_stress_wave_speed(law.E, law.nu, part.density);
   const double plate = law.E / (12.0 * (1.0 - law.nu * law.nu));  // D / t^3
+  const double membrane = law.E / (1.0 - law.nu * law.nu);        // membrane stiffness / t
   const double kappa = part.hourglass_coefficient;
+  const bool stiffness_form = part.hourglass_form == HourglassForm::stiffness;
+  // Per-section constants, hoisted: zeta_k / 2 and w_k / 2.
+  std::array<double, 9> half_zeta{};
+  std::array<double, 9> half_weight{};
+  for (int k = 0; k < np; ++k) {
+    half_zeta[k] = 0.5 * part.section.zeta[k];
+    half_weight[k] = 0.5 * part.section.weight[k];
+  }
+  const int* conn = part.quads.data();
+  const double* xd = x.data();
+  const double* vd = v.data();
+  const double* wd = omega.data();
+  double* fd = f_int.data();
+  double* md = m_int.data();
+  double* sxx = st.sxx.data();
+  double* syy = st.syy.data();
+  double* sxy = st.sxy.data();
+  double* eps = st.eps_p.data();
+  double* hg_state = st.hourglass.data();
   ShellForceResult result;
 
   for (int e = 0; e < n_el; ++e) {
-    const Quad3 xe = gather_quad(x, part.quads, e);
-    const Quad3 ve = gather_quad(v, part.quads, e);
-    const Quad3 we = gather_quad(omega, part.quads, e);
+    const int* nodes = conn + 4 * static_cast<std::ptrdiff_t>(e);
+    Quad3 xe;
+    Quad3 ve;
+    Quad3 we;
+    gather(xd, nodes, xe);
+    gather(vd, nodes, ve);
+    gather(wd, nodes, we);
     if (!ve.allFinite() || !we.allFinite()) {
       throw InstabilityError("shell element " + std::to_string(e) +
                              ": non-finite nodal velocity or angular velocity");
@@ -48,6 +84,8 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     const Vec3 d_k(-bx.dot(wl.row(1)), by.dot(wl.row(0)), bx.dot(wl.row(0)) - by.dot(wl.row(1)));
     const double g_xz = bx.dot(vl.row(2)) + 0.25 * wl.row(1).sum();
     const double g_yz = by.dot(vl.row(2)) - 0.25 * wl.row(0).sum();
+    const Vec3 dt_d_m = dt * d_m;
+    const Vec3 dt_d_k = dt * d_k;
 
     // 2. Material update through the thickness, resultants N = int s dz, M = -int z s dz.
     const double t = st.thickness[e];
@@ -55,37 +93,42 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     Vec3 m_res = Vec3::Zero();
     double d_ezz_mean = 0.0;
     double work = 0.0;
+    const std::size_t base = static_cast<std::size_t>(e) * static_cast<std::size_t>(np);
     for (int k = 0; k < np; ++k) {
-      const std::size_t i = static_cast<std::size_t>(e) * np + k;
-      const double z = 0.5 * t * part.section.zeta[k];
-      const double hw = 0.5 * t * part.section.weight[k];
-      const Vec3 d_eps = dt * (d_m - z * d_k);
+      const std::size_t i = base + static_cast<std::size_t>(k);
+      const double z = t * half_zeta[k];
+      const double hw = t * half_weight[k];
+      // dt (d_m - z d_k), as dt d_m - z (dt d_k): equal to round-off.
+      const Vec3 d_eps = dt_d_m - z * dt_d_k;
       typename Law::State old;
-      old.stress = Vec3(st.sxx[i], st.syy[i], st.sxy[i]);
-      old.eps_p = st.eps_p[i];
+      old.stress = Vec3(sxx[i], syy[i], sxy[i]);
+      old.eps_p = eps[i];
       const PlaneStressUpdate up = law.update(old, d_eps);
-      st.sxx[i] = up.stress(0);
-      st.syy[i] = up.stress(1);
-      st.sxy[i] = up.stress(2);
-      st.eps_p[i] = up.eps_p;
+      sxx[i] = up.stress(0);
+      syy[i] = up.stress(1);
+      sxy[i] = up.stress(2);
+      eps[i] = up.eps_p;
       n_res += hw * up.stress;
       m_res -= (hw * z) * up.stress;
-      d_ezz_mean += 0.5 * part.section.weight[k] * up.d_ezz;
+      d_ezz_mean += half_weight[k] * up.d_ezz;
       work += hw * 0.5 * (old.stress + up.stress).dot(d_eps);
     }
     // Transverse shear: elastic, shear-corrected, constant through the thickness.
     const double sxz_old = st.sxz[e];
     const double syz_old = st.syz[e];
-    st.sxz[e] = sxz_old + ks_g * dt * g_xz;
-    st.syz[e] = syz_old + ks_g * dt * g_yz;
-    const double q_x = t * st.sxz[e];
-    const double q_y = t * st.syz[e];
-    work += t * dt * 0.5 * ((sxz_old + st.sxz[e]) * g_xz + (syz_old + st.syz[e]) * g_yz);
+    const double sxz_new = sxz_old + ks_g * dt * g_xz;
+    const double syz_new = syz_old + ks_g * dt * g_yz;
+    st.sxz[e] = sxz_new;
+    st.syz[e] = syz_new;
+    const double q_x = t * sxz_new;
+    const double q_y = t * syz_new;
+    work += t * dt * 0.5 * ((sxz_old + sxz_new) * g_xz + (syz_old + syz_new) * g_yz);
     result.internal_work += gm.area * work;
     if (!n_res.allFinite() || !m_res.allFinite() || !std::isfinite(q_x + q_y)) {
       throw InstabilityError("shell element " + std::to_string(e) + ": non-finite stress");
     }
-    // Thickness: plane stress gives d_ezz at each point; the mean over the thickness stretches it.
+    // Thickness: plane stress gives d_ezz at each point; the mean over the thickness stretches
+    // it.
     st.thickness[e] = t * (1.0 + d_ezz_mean);
 
     // 3. Nodal forces and moments on the end-of-step configuration (conjugate to step 1).
@@ -105,35 +148,95 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     ml.row(1).array() += 0.25 * a * q_x;
     ml.row(2).setZero();
 
-    // 4. Viscous hourglass control on the end-of-step geometry, coefficients a = kappa/2 m w
-    //    (m the nodal mass or inertia, w the highest frequency of that kind): see the docs.
+    // 4. Hourglass control on the end-of-step geometry (Flanagan & Belytschko 1981): hourglass
+    //    rates q = gamma . v of the in-plane (vx, vy), out-of-plane (vz) and rotational (thx,
+    //    thy) modes, nodal forces f_I = Q gamma_I. See docs/element-and-material.md for
+    //    coefficients.
     if (kappa > 0.0) {
       const Quad3 vh = g.frame.transpose() * ve;
       const Quad3 wh = g.frame.transpose() * we;
-      const double m_node = 0.25 * part.density * t * a;
-      const double i_node = rotational_inertia_factor(a, t) * m_node;
-      const double a_m = 0.5 * kappa * m_node * 2.0 * c / std::sqrt(a);
-      const double a_w = 0.5 * kappa * m_node * 4.0 * c * t / (std::sqrt(12.0) * a);
-      const double a_r = 0.5 * kappa * std::sqrt(2.0 * plate * t * t * t * i_node);
-      const double qx = g.gamma.dot(vh.row(0));
-      const double qy = g.gamma.dot(vh.row(1));
-      const double qz = g.gamma.dot(vh.row(2));
-      const double rx = g.gamma.dot(wh.row(0));
-      const double ry = g.gamma.dot(wh.row(1));
-      fl.row(0) += (a_m * qx) * g.gamma;
-      fl.row(1) += (a_m * qy) * g.gamma;
-      fl.row(2) += (a_w * qz) * g.gamma;
-      ml.row(0) += (a_r * rx) * g.gamma;
-      ml.row(1) += (a_r * ry) * g.gamma;
-      result.hourglass_power +=
-          a_m * (qx * qx + qy * qy) + a_w * qz * qz + a_r * (rx * rx + ry * ry);
+      // Warping correction (always on; no effect on flat elements): the nodes' offsets from the
+      // projected plane are z_I = w h_I, so a rigid rotation about e1, e2 (rates B_y.v_z,
+      // -B_x.v_z) moves the nodes in-plane by (omega_y z_I, -omega_x z_I), an in-plane hourglass
+      // pattern. That part is removed from the in-plane hourglass rates: q_x = gamma.v_x +
+      // (gamma.z) B_x.v_z, q_y = gamma.v_y + (gamma.z) B_y.v_z (Belytschko-Wong-Chiang 1992 idea);
+      // the forces below are the transpose of this operator, so power = f.v stays exact.
+      // The stiffness form integrates the rates into displacements, so it takes them on the
+      // mid-step configuration, where a rigid rotation step is exactly skew (as the strains do);
+      // the viscous form takes them on the end-of-step geometry (power = f.v exactly).
+      const ShellGeometry& gr = stiffness_form ? gm : g;
+      const Quad3& vr = stiffness_form ? vl : vh;
+      const Quad3& wr = stiffness_form ? wl : wh;
+      const Quad3& xr = stiffness_form ? xm : xe;
+      const Vec3 e3 = gr.frame.col(2);
+      const Vec3 centre = 0.25 * xr.rowwise().sum();
+      const Row4 z = e3.transpose() * (xr.colwise() - centre);
+      const double gz_r = gr.gamma.dot(z);
+      const double q[kHourglassModes] = {
+          gr.gamma.dot(vr.row(0)) + gz_r * gr.b.row(0).dot(vr.row(2)),
+          gr.gamma.dot(vr.row(1)) + gz_r * gr.b.row(1).dot(vr.row(2)), gr.gamma.dot(vr.row(2)),
+          gr.gamma.dot(wr.row(0)), gr.gamma.dot(wr.row(1))};
+      // Forces on the end-of-step geometry, the transpose of the (corrected) rate operator there.
+      const double gz =
+          stiffness_form
+              ? g.gamma.dot(g.frame.col(2).transpose() * (xe.colwise() - 0.25 * xe.rowwise().sum()))
+              : gz_r;
+      double coef[kHourglassModes];
+      double res[kHourglassModes];
+      double power = 0.0;
+      if (!stiffness_form) {
+        // Viscous: Q = a q, a = kappa/2 m w (m the nodal mass or inertia, w the highest
+        // frequency of that kind); power a q^2 >= 0.
+        const double m_node = 0.25 * part.density * t * a;
+        const double i_node = rotational_inertia_factor(a, t) * m_node;
+        coef[0] = 0.5 * kappa * m_node * 2.0 * c / std::sqrt(a);
+        coef[1] = coef[0];
+        coef[2] = 0.5 * kappa * m_node * 4.0 * c * t / (std::sqrt(12.0) * a);
+        coef[3] = 0.5 * kappa * std::sqrt(2.0 * plate * t * t * t * i_node);
+        coef[4] = coef[3];
+        for (int mode = 0; mode < kHourglassModes; ++mode) {
+          res[mode] = coef[mode] * q[mode];
+          power += res[mode] * q[mode];
+        }
+      } else {
+        // Stiffness: Q += k dt q (the hourglass displacement increment), stored in the
+        // corotational frame; k scaled by the element's membrane and bending stiffness (|B|^2 =
+        // B_x.B_x + B_y.B_y). Power of the mid-step resultant (trapezoidal, as the driver's
+        // work).
+        const double ab2 = a * (gx.squaredNorm() + gy.squaredNorm());  // 2 for a square
+        const double d_plate = plate * t * t * t;
+        coef[0] = 0.125 * kappa * membrane * t * ab2;
+        coef[1] = coef[0];
+        coef[2] = 0.25 * kappa * d_plate * ab2 * ab2 / a;
+        coef[3] = 0.25 * kappa * d_plate * ab2;
+        coef[4] = coef[3];
+        double* hs = hg_state + kHourglassModes * static_cast<std::ptrdiff_t>(e);
+        for (int mode = 0; mode < kHourglassModes; ++mode) {
+          const double old_res = hs[mode];
+          res[mode] = old_res + coef[mode] * dt * q[mode];
+          hs[mode] = res[mode];
+          power += 0.5 * (old_res + res[mode]) * q[mode];
+        }
+      }
+      fl.row(0) += res[0] * g.gamma;
+      fl.row(1) += res[1] * g.gamma;
+      fl.row(2) += res[2] * g.gamma + (res[0] * gz) * gx + (res[1] * gz) * gy;
+      ml.row(0) += res[3] * g.gamma;
+      ml.row(1) += res[4] * g.gamma;
+      result.hourglass_power += power;
     }
 
     const Quad3 fg = g.frame * fl;
     const Quad3 mg = g.frame * ml;
     for (int i = 0; i < 4; ++i) {
-      f_int.col(part.quads(i, e)) += fg.col(i);
-      m_int.col(part.quads(i, e)) += mg.col(i);
+      double* fc = fd + 3 * static_cast<std::ptrdiff_t>(nodes[i]);
+      double* mc = md + 3 * static_cast<std::ptrdiff_t>(nodes[i]);
+      fc[0] += fg(0, i);
+      fc[1] += fg(1, i);
+      fc[2] += fg(2, i);
+      mc[0] += mg(0, i);
+      mc[1] += mg(1, i);
+      mc[2] += mg(2, i);
     }
   }
   return result;
@@ -151,7 +254,9 @@ ShellForceResult compute_shell_internal_forces(const ShellPart& part, const Matr
       m_int.cols() != n_nodes || state.n_points != part.section.n_points ||
       state.n_elements != n_el ||
       state.sxx.size() != static_cast<std::size_t>(n_el * part.section.n_points) ||
-      state.thickness.size() != static_cast<std::size_t>(n_el)) {
+      state.thickness.size() != static_cast<std::size_t>(n_el) ||
+      (part.hourglass_form == HourglassForm::stiffness &&
+       state.hourglass.size() != static_cast<std::size_t>(n_el * kHourglassModes))) {
     throw std::invalid_argument("compute_shell_internal_forces: inconsistent array sizes");
   }
   return std::visit(

@@ -1,6 +1,7 @@
 #pragma once
 // Internal forces of the Belytschko-Lin-Tsay shell (Belytschko, Lin & Tsay 1984; Hallquist,
-// LS-DYNA Theory Manual), with viscous hourglass control (Flanagan & Belytschko 1981).
+// LS-DYNA Theory Manual), with viscous or stiffness hourglass control (Flanagan & Belytschko
+// 1981).
 #include "core/types.hpp"
 #include "element/shell_part.hpp"
 

@@ -56,6 +56,74 @@ ShellSection make_gauss_section(int n_points) {
   return s;
 }
 
+namespace {
+
+// Legendre polynomials P_m(x) and P_{m-1}(x) by the three-term recurrence (m >= 1).
+void evaluate_legendre(int m, double x, double& p_m, double& p_m_minus_1) {
+  double p0 = 1.0;
+  double p1 = x;
+  for (int k = 2; k <= m; ++k) {
+    const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
+    p0 = p1;
+    p1 = p2;
+  }
+  p_m = p1;
+  p_m_minus_1 = p0;
+}
+
+// Gauss-Lobatto rule with n >= 2 points (Abramowitz & Stegun 25.4.32): x = -1, +1 and the n - 2
+// roots of P'_{n-1}; weights 2 / (n (n - 1) P_{n-1}(x)^2).
+ShellSection make_lobatto_section(int n) {
+  ShellSection s;
+  s.n_points = n;
+  s.rule = ThroughThicknessRule::lobatto;
+  const int m = n - 1;
+  const double end_weight = 2.0 / (n * (n - 1.0));
+  s.zeta[0] = -1.0;
+  s.zeta[n - 1] = 1.0;
+  s.weight[0] = end_weight;
+  s.weight[n - 1] = end_weight;
+  for (int i = 1; i < n - 1; ++i) {
+    // Interior roots of P'_m, Newton from the Chebyshev-Lobatto guess -cos(pi i / m) (ascending).
+    // P'_m = m (P_{m-1} - x P_m) / (1 - x^2), P''_m = (2 x P'_m - m (m + 1) P_m) / (1 - x^2).
+    double x = -std::cos(std::numbers::pi * i / m);
+    for (int it = 0; it < 100; ++it) {
+      double pm = 0.0;
+      double pm1 = 0.0;
+      evaluate_legendre(m, x, pm, pm1);
+      const double one_minus_x2 = 1.0 - x * x;
+      const double dp = m * (pm1 - x * pm) / one_minus_x2;
+      const double d2p = (2.0 * x * dp - m * (m + 1.0) * pm) / one_minus_x2;
+      const double dx = dp / d2p;
+      x -= dx;
+      if (std::abs(dx) < 1e-16) {
+        break;
+      }
+    }
+    double pm = 0.0;
+    double pm1 = 0.0;
+    evaluate_legendre(m, x, pm, pm1);
+    s.zeta[i] = std::abs(x) < 1e-15 ? 0.0 : x;
+    s.weight[i] = end_weight / (pm * pm);
+  }
+  return s;
+}
+
+}  // namespace
+
+ShellSection make_section(int n_points, ThroughThicknessRule rule) {
+  if (rule == ThroughThicknessRule::gauss) {
+    return make_gauss_section(n_points);
+  }
+  if (n_points < 2 || n_points > 9) {
+    throw InputError(
+        "shell section: the number of Lobatto integration points through the thickness must be "
+        "2..9 (got " +
+        std::to_string(n_points) + ")");
+  }
+  return make_lobatto_section(n_points);
+}
+
 ShellState make_shell_state(int n_elements, int n_points, double thickness) {
   ShellState st;
   st.n_elements = n_elements;
@@ -68,6 +136,7 @@ ShellState make_shell_state(int n_elements, int n_points, double thickness) {
   st.sxz.assign(n_elements, 0.0);
   st.syz.assign(n_elements, 0.0);
   st.thickness.assign(n_elements, thickness);
+  st.hourglass.assign(static_cast<std::size_t>(n_elements) * kHourglassModes, 0.0);
   return st;
 }
 

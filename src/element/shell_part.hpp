@@ -8,17 +8,29 @@
 
 namespace sf {
 
-/// Through-thickness integration rule: n_points Gauss-Legendre points, ordered from the bottom
-/// (zeta = -1 side) to the top (zeta = +1 side, the side the normal e3 points to).
+/// Through-thickness quadrature family.
+enum class ThroughThicknessRule {
+  gauss,    ///< Gauss-Legendre, 1..9 points, exact to degree 2n - 1, interior points only
+  lobatto,  ///< Gauss-Lobatto, 2..9 points, exact to degree 2n - 3, includes both surfaces
+};
+
+/// Through-thickness integration rule: n_points points, ordered from the bottom (zeta = -1 side)
+/// to the top (zeta = +1 side, the side the normal e3 points to).
 struct ShellSection {
   int n_points = 5;
+  ThroughThicknessRule rule = ThroughThicknessRule::gauss;
   std::array<double, 9> zeta{};    ///< positions in [-1, 1]; z = zeta t / 2
-  std::array<double, 9> weight{};  ///< Gauss weights, summing to 2
+  std::array<double, 9> weight{};  ///< quadrature weights, summing to 2
 };
 
 /// The Gauss-Legendre rule with n_points (1..9) points; exact for polynomials of degree
 /// 2 n_points - 1 in zeta. Throws InputError outside 1..9.
 ShellSection make_gauss_section(int n_points);
+
+/// The rule of the given family: Gauss-Legendre (1..9 points) or Gauss-Lobatto (2..9 points; the
+/// end points zeta = -1, +1 are the bottom and top surfaces; exact to degree 2 n_points - 3).
+/// Throws InputError for a point count outside the family's range.
+ShellSection make_section(int n_points, ThroughThicknessRule rule);
 
 /// Integration-point state of a shell part, structure of arrays. In-plane quantities are indexed
 /// e * n_points + k (k = 0 bottom .. n_points - 1 top); stresses are components in the element's
@@ -31,19 +43,35 @@ struct ShellState {
   std::vector<double> sxz, syz;       ///< MPa, per element: transverse shear stress averaged over
                                       ///< the thickness (Q / t, shear-corrected)
   std::vector<double> thickness;      ///< mm, per element, current
+  /// Stiffness-form hourglass resultants per element, 5 per element (index 5 e + j), in the
+  /// element's corotational frame: j = 0, 1 in-plane (N), 2 out-of-plane (N), 3, 4 rotational
+  /// (N mm). Unused (stays 0) with the viscous form.
+  std::vector<double> hourglass;
 };
+
+/// Number of hourglass resultants stored per element in ShellState::hourglass.
+inline constexpr int kHourglassModes = 5;
 
 /// A stress-free state with uniform thickness (mm).
 ShellState make_shell_state(int n_elements, int n_points, double thickness);
 
+/// Hourglass control form (Flanagan & Belytschko 1981).
+enum class HourglassForm {
+  viscous,    ///< forces proportional to the hourglass velocity (LS-DYNA type 1 style)
+  stiffness,  ///< forces from the accumulated hourglass displacement, stored per element
+};
+
 /// A shell part: connectivity (node indices, counter-clockwise seen from the +normal side),
-/// section, material and the viscous hourglass coefficient.
+/// section, material and the hourglass control.
 struct ShellPart {
   QuadConn quads;
   ShellSection section = make_gauss_section(5);
   Material material = ElasticPlaneStress{};
-  double density = 0.0;                ///< tonne/mm^3
-  double hourglass_coefficient = 0.1;  ///< -, fraction (x 4) of critical damping, see docs
+  double density = 0.0;  ///< tonne/mm^3
+  /// -, viscous: fraction (x 4) of critical damping; stiffness: hourglass mode stiffness as a
+  /// fraction of the element's membrane / bending stiffness. See docs/element-and-material.md.
+  double hourglass_coefficient = 0.1;
+  HourglassForm hourglass_form = HourglassForm::viscous;
 };
 
 }  // namespace sf
