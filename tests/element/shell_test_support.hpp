@@ -57,4 +57,30 @@ inline QuadConn patch_quads() {
   return q;
 }
 
+/// A strip of n_el elements (len x b mm each) along x, bent cylindrically to curvature c (1/mm)
+/// in one step: the displacement u and rotation phi of the exact constant-curvature field.
+struct BentStrip {
+  Matrix3X x0, u, phi;
+  QuadConn quads;
+};
+inline BentStrip make_bent_strip(int n_el, double len, double b, double c) {
+  BentStrip s;
+  s.x0.resize(3, 2 * (n_el + 1));
+  s.quads.resize(4, n_el);
+  for (int i = 0; i <= n_el; ++i) {
+    s.x0.col(2 * i) = Vec3(i * len, 0.0, 0.0);
+    s.x0.col(2 * i + 1) = Vec3(i * len, b, 0.0);
+  }
+  for (int e = 0; e < n_el; ++e) {
+    s.quads.col(e) << 2 * e, 2 * e + 2, 2 * e + 3, 2 * e + 1;
+  }
+  s.u = Matrix3X::Zero(3, s.x0.cols());
+  s.phi = Matrix3X::Zero(3, s.x0.cols());
+  for (int i = 0; i < s.x0.cols(); ++i) {
+    s.u(2, i) = -0.5 * c * s.x0(0, i) * s.x0(0, i);
+    s.phi(1, i) = c * s.x0(0, i);
+  }
+  return s;
+}
+
 }  // namespace sf::test

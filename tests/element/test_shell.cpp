@@ -235,21 +235,11 @@ TEST(ShellPatch, ConstantCurvatureGivesPlateMoment) {
   const double t = 1.5;
   const double c = 1e-9;
   const double dt = 1e-6;
-  Matrix3X x0(3, 2 * (n_el + 1));
-  QuadConn q(4, n_el);
-  for (int i = 0; i <= n_el; ++i) {
-    x0.col(2 * i) = Vec3(i * len, 0.0, 0.0);
-    x0.col(2 * i + 1) = Vec3(i * len, b, 0.0);
-  }
-  for (int e = 0; e < n_el; ++e) {
-    q.col(e) << 2 * e, 2 * e + 2, 2 * e + 3, 2 * e + 1;
-  }
-  Matrix3X u = Matrix3X::Zero(3, x0.cols());
-  Matrix3X phi = Matrix3X::Zero(3, x0.cols());
-  for (int i = 0; i < x0.cols(); ++i) {
-    u(2, i) = -0.5 * c * x0(0, i) * x0(0, i);
-    phi(1, i) = c * x0(0, i);
-  }
+  const test::BentStrip strip = test::make_bent_strip(n_el, len, b, c);
+  const Matrix3X& x0 = strip.x0;
+  const QuadConn& q = strip.quads;
+  const Matrix3X& u = strip.u;
+  const Matrix3X& phi = strip.phi;
   const double d_plate = kE * t * t * t / (12.0 * (1 - kNu * kNu));
   const double m_exact = d_plate * c * b;
   for (int np : {2, 5}) {

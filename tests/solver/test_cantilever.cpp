@@ -25,6 +25,13 @@ constexpr double young = 210000.0;                                            //
 constexpr double density = 7.85e-9;                                           // tonne/mm^3
 constexpr double inertia = width * thickness * thickness * thickness / 12.0;  // mm^4
 
+// First bending frequency of the clamped-free strip (rad/s), Euler-Bernoulli:
+// omega1 = 1.8751^2 sqrt(E I / (rho A L^4)).
+double first_bending_frequency() {
+  return 1.8751 * 1.8751 *
+         std::sqrt(young * inertia / (density * width * thickness * std::pow(length, 4)));
+}
+
 // Writes a case around tests/data/strip.geo (clamped at x = 0, loaded at x = L) and builds it.
 sf::Model build_strip_case(const std::string& name, const std::string& load_and_control) {
   const fs::path folder = fs::path(SF_BINARY_DIR) / "test_output" / name;
@@ -51,9 +58,7 @@ type = "fixed"
 TEST(Cantilever, SuddenlyAppliedTipForcePeaksAt1966TimesStatic) {
   const double force = 1.0;  // N in total, small: a linear response
   // First period of the clamped-free beam, T1 = 2 pi / (1.8751^2 sqrt(E I / (rho A L^4))).
-  const double omega1 =
-      1.8751 * 1.8751 *
-      std::sqrt(young * inertia / (density * width * thickness * std::pow(length, 4)));
+  const double omega1 = first_bending_frequency();
   const double period = 2.0 * std::numbers::pi / omega1;
   sf::Model model = build_strip_case("cantilever_step", R"(
 [[load]]
@@ -97,9 +102,7 @@ end_time = )" + std::to_string(0.8 * period) + "\n");
 TEST(Cantilever, EndMomentSmallRotationMatchesTheElastica) {
   const double theta = 0.02 * std::numbers::pi;            // rad, M L / (E I)
   const double moment = theta * young * inertia / length;  // N mm, in total
-  const double omega1 =
-      1.8751 * 1.8751 *
-      std::sqrt(young * inertia / (density * width * thickness * std::pow(length, 4)));
+  const double omega1 = first_bending_frequency();
   const double period = 2.0 * std::numbers::pi / omega1;
   // Ramped over 10 first periods and held, with damping near critical for the first mode so the
   // run settles to the static elastica (dynamic relaxation).
