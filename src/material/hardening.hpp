@@ -1,5 +1,6 @@
 #pragma once
 // Isotropic hardening laws: flow stress (MPa) as a function of the equivalent plastic strain (-).
+#include <cmath>
 #include <filesystem>
 #include <variant>
 #include <vector>
@@ -26,6 +27,23 @@ struct SwiftHardening {
   /// Both at once (one pow): slope = n sigma_y / (eps0 + eps_p).
   FlowStress evaluate(double eps_p) const {
     const double s = flow_stress(eps_p);
+    return {s, n * s / (eps0 + eps_p)};
+  }
+  /// The same as evaluate(eps_p), from a known evaluation `at_ref` at eps_ref, without `pow` when
+  /// the step is small: sigma_y(eps_p) = sigma_y(eps_ref) (1 + x)^n, x = (eps_p - eps_ref) /
+  /// (eps0 + eps_ref), by its binomial series to x^5 for |x| <= 1e-2 (truncation below
+  /// |C(n,6)| x^6 < 1e-13 relative for 0 <= n <= 1; a return-mapping step is far smaller).
+  FlowStress evaluate_near(double eps_p, double eps_ref, const FlowStress& at_ref) const {
+    const double x = (eps_p - eps_ref) / (eps0 + eps_ref);
+    if (!(std::abs(x) <= 1e-2)) {
+      return evaluate(eps_p);
+    }
+    const double c1 = n;
+    const double c2 = c1 * (n - 1.0) / 2.0;
+    const double c3 = c2 * (n - 2.0) / 3.0;
+    const double c4 = c3 * (n - 3.0) / 4.0;
+    const double c5 = c4 * (n - 4.0) / 5.0;
+    const double s = at_ref.stress * (1.0 + x * (c1 + x * (c2 + x * (c3 + x * (c4 + x * c5)))));
     return {s, n * s / (eps0 + eps_p)};
   }
 };

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <type_traits>
 
 #include "core/errors.hpp"
 
@@ -58,6 +59,7 @@ ModalReturn solve_consistency(const double (&A)[3], const double (&lam)[3], doub
   double phi = phi_tr;
   double eps = eps_n;
   double c[3] = {1.0, 1.0, 1.0};
+  const FlowStress h_n = h;  // at eps_n
   const double grow = 1.0 / std::max({lam[0], lam[1], lam[2]});
   for (int it = 0; it < 100; ++it) {
     // h = (sigma_y, slope) at eps; the first pass reuses the trial check's evaluation (D = 0).
@@ -90,7 +92,11 @@ ModalReturn solve_consistency(const double (&A)[3], const double (&lam)[3], doub
     }
     phi = std::sqrt(phi2);
     eps = eps_n + D * phi;
-    h = law.evaluate(eps);
+    if constexpr (std::is_same_v<Law, SwiftHardening>) {
+      h = law.evaluate_near(eps, eps_n, h_n);  // no pow for the small steps of a return
+    } else {
+      h = law.evaluate(eps);
+    }
   }
   throw InstabilityError(std::string(name) +
                          ": return mapping did not converge (trial equivalent stress " +

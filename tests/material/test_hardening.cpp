@@ -149,3 +149,22 @@ TEST(Hardening, J2WithDenseTabulatedSwiftMatchesSwift) {
 
 }  // namespace
 }  // namespace sf
+
+// The pow-free evaluation used inside the return mapping equals the closed form: truncation of
+// the binomial series below |C(n,6)| x^6 for |x| <= 1e-2, i.e. < 1e-13 relative (tolerance 1e-13);
+// beyond |x| = 1e-2 it falls back to the closed form (exact).
+TEST(Hardening, SwiftEvaluateNearEqualsTheClosedForm) {
+  for (double n : {0.0, 0.26, 0.5, 1.0}) {
+    const sf::SwiftHardening swift{565.0, 0.007, n};
+    for (double eps_ref : {0.0, 0.05, 0.4}) {
+      const sf::FlowStress at_ref = swift.evaluate(eps_ref);
+      for (double x : {-1e-2, -1e-4, 0.0, 1e-7, 1e-4, 3e-3, 1e-2, 5e-2}) {
+        const double eps = eps_ref + x * (swift.eps0 + eps_ref);
+        const sf::FlowStress near = swift.evaluate_near(eps, eps_ref, at_ref);
+        const sf::FlowStress exact = swift.evaluate(eps);
+        EXPECT_NEAR(near.stress, exact.stress, 1e-13 * exact.stress) << "n " << n << " x " << x;
+        EXPECT_NEAR(near.slope, exact.slope, 1e-13 * std::abs(exact.slope) + 1e-300);
+      }
+    }
+  }
+}
