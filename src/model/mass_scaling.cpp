@@ -20,7 +20,7 @@ void set_up_mass_scaling(const ShellPart& part, const Matrix3X& x, const ShellSt
 
 TimeStepCheck scale_mass_to_time_step(const ShellPart& part, const Matrix3X& x,
                                       MassScaling& scaling, VectorX& nodal_mass,
-                                      VectorX& rotational_inertia, Matrix3X* v, Matrix3X* omega) {
+                                      VectorX& rotational_inertia) {
   const StableStep physical = compute_element_time_steps(part, x, scaling.element_dt);
   TimeStepCheck check;
   if (!scaling.enabled()) {
@@ -45,21 +45,8 @@ TimeStepCheck scale_mass_to_time_step(const ShellPart& part, const Matrix3X& x,
       const double node_inertia = scaling.inertia_factor[ei] * node_mass;
       for (int a = 0; a < 4; ++a) {
         const int node = part.quads(a, e);
-        const double m_old = nodal_mass[node];
-        const double i_old = rotational_inertia[node];
-        nodal_mass[node] = m_old + node_mass;
-        rotational_inertia[node] = i_old + node_inertia;
-        // Fixed momentum: v_new = v m_old / m_new, removing m_old v^2 (1 - m_old / m_new) / 2.
-        if (v != nullptr) {
-          const double r = m_old / nodal_mass[node];
-          check.kinetic_removed += 0.5 * m_old * v->col(node).squaredNorm() * (1.0 - r);
-          v->col(node) *= r;
-        }
-        if (omega != nullptr) {
-          const double r = i_old / rotational_inertia[node];
-          check.kinetic_removed += 0.5 * i_old * omega->col(node).squaredNorm() * (1.0 - r);
-          omega->col(node) *= r;
-        }
+        nodal_mass[node] += node_mass;
+        rotational_inertia[node] += node_inertia;
       }
       if (factor == 1.0) {
         ++scaling.scaled_elements;

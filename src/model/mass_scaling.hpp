@@ -28,10 +28,9 @@ struct MassScaling {
 
 /// What one time-step evaluation found.
 struct TimeStepCheck {
-  double dt = 0.0;               ///< s, the stable step with the safety factor (after any scaling)
-  int element = -1;              ///< the element that limits it
-  double mass_added = 0.0;       ///< tonne added in this call
-  double kinetic_removed = 0.0;  ///< N mm: kinetic energy removed by adding mass at fixed momentum
+  double dt = 0.0;          ///< s, the stable step with the safety factor (after any scaling)
+  int element = -1;         ///< the element that limits it
+  double mass_added = 0.0;  ///< tonne added in this call
 };
 
 /// Relative shortfall below the target tolerated before an element is scaled (again): without it,
@@ -48,12 +47,11 @@ void set_up_mass_scaling(const ShellPart& part, const Matrix3X& x, const ShellSt
 /// first raises the density of every element whose step is below target_dt (1 - tolerance) so
 /// that its step is target_dt: rho_e = rho (target_dt / (safety dt_e))^2 with dt_e the element's
 /// step at the physical density. The element's added mass is spread equally on its four nodes,
-/// into nodal_mass (tonne) and rotational_inertia (tonne mm^2). Nodal momentum is kept: when v and
-/// omega are given, the velocities (mm/s) and angular velocities (rad/s) of those nodes are scaled
-/// by m_old / m_new, and the kinetic energy this removes is returned. No allocation.
+/// into nodal_mass (tonne) and rotational_inertia (tonne mm^2), alpha_e times as much inertia as
+/// mass (as the lumped mass does). Velocities are the caller's business (the explicit driver keeps
+/// the nodal momentum). No allocation.
 TimeStepCheck scale_mass_to_time_step(const ShellPart& part, const Matrix3X& x,
                                       MassScaling& scaling, VectorX& nodal_mass,
-                                      VectorX& rotational_inertia, Matrix3X* v = nullptr,
-                                      Matrix3X* omega = nullptr);
+                                      VectorX& rotational_inertia);
 
 }  // namespace sf

@@ -114,6 +114,42 @@ void compute_external_forces(const Model& model, SolutionState& s) {
       fmt::format("non-finite state at t = {:.6e} s, cycle {}", s.time, s.cycle));
 }
 
+// Mass was added at some nodes (blank.mass against s.mass_before): their half-step velocities are
+// lowered to keep the momentum, v' = r v with r = m_old / m_new (likewise the angular velocities).
+// The energy this takes out, counted in energies.mass_scaling, is the one that keeps the
+// central-difference balance exact: the trapezoidal work already counted the force F_n (applied +
+// contact - internal) at this time against v, while the next velocity update works with v', so
+//   dE = (1 - r) v . (m_old v + dt F_n) / 2,
+// about (1 - r) m_old v(n-1/2) . v(n+1/2) / 2, the product form of the kinetic energy at time n.
+// dt: the step about to be taken (s).
+void keep_momentum(const Model& model, SolutionState& s, double dt) {
+  const Eigen::Index n = s.v.cols();
+  double removed = 0.0;
+  double kinetic_drop = 0.0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double m_new = model.blank.mass[i];
+    const double m_old = s.mass_before[i];
+    if (m_new != m_old) {
+      const double r = m_old / m_new;
+      const Vec3 force = s.f_ext.col(i) + s.f_contact.col(i) - s.f_int.col(i);
+      removed += 0.5 * (1.0 - r) * s.v.col(i).dot(m_old * s.v.col(i) + dt * force);
+      kinetic_drop += 0.5 * (1.0 - r) * m_old * s.v.col(i).squaredNorm();
+      s.v.col(i) *= r;
+    }
+    const double i_new = model.blank.rotational_inertia[i];
+    const double i_old = s.inertia_before[i];
+    if (i_new != i_old) {
+      const double r = i_old / i_new;
+      const Vec3 moment = s.m_ext.col(i) - s.m_int.col(i);
+      removed += 0.5 * (1.0 - r) * s.omega.col(i).dot(i_old * s.omega.col(i) + dt * moment);
+      kinetic_drop += 0.5 * (1.0 - r) * i_old * s.omega.col(i).squaredNorm();
+      s.omega.col(i) *= r;
+    }
+  }
+  s.energies.mass_scaling += removed;
+  s.energies.kinetic -= kinetic_drop;
+}
+
 void check_energy(const Model& model, const SolutionState& s, double energy_scale) {
   const Energies& e = s.energies;
   const double ratio = model.config.control.energy_blowup_ratio;
@@ -145,6 +181,10 @@ SolutionState make_initial_state(const Model& model) {
   s.f_int_previous = Matrix3X::Zero(3, n);
   s.m_int_previous = Matrix3X::Zero(3, n);
   s.half_thickness = VectorX::Zero(n);
+  if (model.blank.scaling.enabled()) {
+    s.mass_before = model.blank.mass;
+    s.inertia_before = model.blank.rotational_inertia;
+  }
   s.shell = make_shell_state(static_cast<int>(model.blank.part.quads.cols()),
                              model.config.blank.integration_points, model.config.blank.thickness);
   s.tools.resize(model.tools.size());
@@ -168,10 +208,15 @@ SolutionState make_initial_state(const Model& model) {
 
 double compute_time_step(Model& model, SolutionState& s) {
   Blank& blank = model.blank;
-  const TimeStepCheck check = scale_mass_to_time_step(blank.part, s.x, blank.scaling, blank.mass,
-                                                      blank.rotational_inertia, &s.v, &s.omega);
-  s.energies.mass_scaling += check.kinetic_removed;
-  s.energies.kinetic -= check.kinetic_removed;
+  if (blank.scaling.enabled()) {
+    s.mass_before = blank.mass;  // same size: no allocation
+    s.inertia_before = blank.rotational_inertia;
+  }
+  const TimeStepCheck check =
+      scale_mass_to_time_step(blank.part, s.x, blank.scaling, blank.mass, blank.rotational_inertia);
+  if (check.mass_added > 0.0) {
+    keep_momentum(model, s, check.dt);
+  }
   const double limit = model.config.control.mass_scaling_max_added;
   if (check.mass_added > 0.0 && limit > 0.0 &&
       blank.scaling.added_mass > limit * blank.physical_mass) {

@@ -41,6 +41,8 @@ struct SolutionState {
   Matrix3X f_int_previous;     ///< N, for the trapezoidal work increment
   Matrix3X m_int_previous;     ///< N mm
   VectorX half_thickness;      ///< mm per node, the contact offset
+  VectorX mass_before;         ///< tonne per node, scratch: the masses before this cycle's scaling
+  VectorX inertia_before;      ///< tonne mm^2 per node, likewise
   ShellState shell;
   std::vector<ToolState> tools;
   Energies energies;
