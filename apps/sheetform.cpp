@@ -67,9 +67,16 @@ void print_model(const sf::Model& model) {
       "{} thickness points, material '{}'\n",
       blank.mesh.nodes.cols(), blank.mesh.quads.cols(), model.config.blank.thickness,
       model.config.blank.integration_points, model.config.blank.material);
-  sf::log_info("Mass        {:.6e} tonne physical, {:.6e} tonne added by mass scaling ({:.2f} %)\n",
-               blank.physical_mass, blank.added_mass,
-               100.0 * blank.added_mass / blank.physical_mass);
+  sf::log_info(
+      "Mass        {:.6e} tonne physical, {:.6e} tonne added by mass scaling ({:.2f} %, "
+      "{} elements)\n",
+      blank.physical_mass, blank.scaling.added_mass,
+      100.0 * blank.scaling.added_mass / blank.physical_mass, blank.scaling.scaled_elements);
+  if (blank.scaling.enabled()) {
+    sf::log_info(
+        "Mass scale  target step {:.4e} s; elements below it get mass during the run too\n",
+        blank.scaling.target_dt);
+  }
   for (const sf::BoundaryConfig& b : model.config.boundaries) {
     sf::log_info("Boundary    '{}': {} nodes, {}\n", b.group, blank.group(b.group).nodes.size(),
                  b.type == sf::BoundaryConfig::Type::fixed

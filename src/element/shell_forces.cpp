@@ -93,6 +93,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     Vec3 m_res = Vec3::Zero();
     double d_ezz_mean = 0.0;
     double work = 0.0;
+    double plastic_work = 0.0;
     const std::size_t base = static_cast<std::size_t>(e) * static_cast<std::size_t>(np);
     for (int k = 0; k < np; ++k) {
       const std::size_t i = base + static_cast<std::size_t>(k);
@@ -112,6 +113,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
       m_res -= (hw * z) * up.stress;
       d_ezz_mean += half_weight[k] * up.d_ezz;
       work += hw * 0.5 * (old.stress + up.stress).dot(d_eps);
+      plastic_work += hw * up.d_plastic_work;
     }
     // Transverse shear: elastic, shear-corrected, constant through the thickness.
     const double sxz_old = st.sxz[e];
@@ -124,6 +126,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     const double q_y = t * syz_new;
     work += t * dt * 0.5 * ((sxz_old + sxz_new) * g_xz + (syz_old + syz_new) * g_yz);
     result.internal_work += gm.area * work;
+    result.plastic_work += gm.area * plastic_work;
     if (!n_res.allFinite() || !m_res.allFinite() || !std::isfinite(q_x + q_y)) {
       throw InstabilityError("shell element " + std::to_string(e) + ": non-finite stress");
     }

@@ -13,6 +13,8 @@ struct ShellForceResult {
                                  ///< (>= 0, dissipated); hourglass energy += dt * this
   double internal_work = 0.0;    ///< N mm, increment of the stress work of this step (trapezoidal
                                  ///< rule on stress, mid-step volume; excludes hourglass)
+  double plastic_work = 0.0;     ///< N mm, the plastic part of internal_work (>= 0, dissipated):
+                                 ///< the points' d_plastic_work on the same quadrature
 };
 
 /// Adds every element's internal nodal forces (N) and moments (N mm) into f_int and m_int

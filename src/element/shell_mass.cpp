@@ -1,7 +1,9 @@
 #include "element/shell_mass.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "element/shell_geometry.hpp"
 
@@ -24,25 +26,67 @@ void compute_lumped_mass(const ShellPart& part, const Matrix3X& x, const ShellSt
   }
 }
 
+namespace {
+
+// L / c of one element: L = A / max side (LS-DYNA ISDO = 0), c the plate wave speed.
+double element_time_step(const Quad3& xe, int e, double c, ShellGeometry& g) {
+  compute_shell_geometry_or_throw(xe, e, "time step", g);
+  double side2 = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    side2 = std::max(side2, (xe.col((i + 1) % 4) - xe.col(i)).squaredNorm());
+  }
+  return g.area / (std::sqrt(side2) * c);
+}
+
+}  // namespace
+
 StableStep compute_stable_time_step(const ShellPart& part, const Matrix3X& x,
-                                    const ShellState& state) {
+                                    const ShellState& /*state*/) {
   const double c = plane_stress_wave_speed(young_modulus(part.material),
                                            poisson_ratio(part.material), part.density);
   StableStep best{std::numeric_limits<double>::infinity(), -1};
   ShellGeometry g;
   for (int e = 0; e < part.quads.cols(); ++e) {
-    const Quad3 xe = gather_quad(x, part.quads, e);
-    compute_shell_geometry_or_throw(xe, e, "time step", g);
-    double side2 = 0.0;
-    for (int i = 0; i < 4; ++i) {
-      side2 = std::max(side2, (xe.col((i + 1) % 4) - xe.col(i)).squaredNorm());
-    }
-    const double dt = g.area / (std::sqrt(side2) * c);
+    const double dt = element_time_step(gather_quad(x, part.quads, e), e, c, g);
     if (dt < best.dt) {
       best = {dt, e};
     }
   }
   return best;
+}
+
+StableStep compute_element_time_steps(const ShellPart& part, const Matrix3X& x,
+                                      std::span<double> element_dt) {
+  if (element_dt.size() != static_cast<std::size_t>(part.quads.cols())) {
+    throw std::invalid_argument("compute_element_time_steps: one value per element expected");
+  }
+  const double c = plane_stress_wave_speed(young_modulus(part.material),
+                                           poisson_ratio(part.material), part.density);
+  StableStep best{std::numeric_limits<double>::infinity(), -1};
+  ShellGeometry g;
+  for (int e = 0; e < part.quads.cols(); ++e) {
+    const double dt = element_time_step(gather_quad(x, part.quads, e), e, c, g);
+    element_dt[static_cast<std::size_t>(e)] = dt;
+    if (dt < best.dt) {
+      best = {dt, e};
+    }
+  }
+  return best;
+}
+
+void compute_element_masses(const ShellPart& part, const Matrix3X& x, const ShellState& state,
+                            std::vector<double>& mass, std::vector<double>& inertia_factor) {
+  const auto n = static_cast<std::size_t>(part.quads.cols());
+  mass.assign(n, 0.0);
+  inertia_factor.assign(n, 0.0);
+  ShellGeometry g;
+  for (std::size_t e = 0; e < n; ++e) {
+    const int ei = static_cast<int>(e);
+    compute_shell_geometry_or_throw(gather_quad(x, part.quads, ei), ei, "mass", g);
+    const double t = state.thickness[e];
+    mass[e] = part.density * t * g.area;
+    inertia_factor[e] = rotational_inertia_factor(g.area, t);
+  }
 }
 
 }  // namespace sf

@@ -1,5 +1,8 @@
 #pragma once
 // Lumped mass, rotational inertia and critical time step of a shell part.
+#include <span>
+#include <vector>
+
 #include "core/types.hpp"
 #include "element/shell_part.hpp"
 
@@ -23,5 +26,19 @@ struct StableStep {
 /// Throws InstabilityError on a degenerate element.
 StableStep compute_stable_time_step(const ShellPart& part, const Matrix3X& x,
                                     const ShellState& state);
+
+/// The same critical step for every element (s, before any safety factor, at the part's density
+/// part.density) into element_dt, which holds one value per element (sized by the caller; not
+/// resized, so no allocation in the time loop). Returns the smallest and its element. Throws
+/// InstabilityError on a degenerate element.
+StableStep compute_element_time_steps(const ShellPart& part, const Matrix3X& x,
+                                      std::span<double> element_dt);
+
+/// Each element's mass rho t A (tonne, at part.density and the thickness in `state`) and its
+/// rotational inertia factor alpha = (A + t^2) / 4 (mm^2), so that it gives m / 4 of mass and
+/// alpha m / 4 of rotational inertia to each of its nodes (as compute_lumped_mass). Both vectors
+/// are resized to the element count.
+void compute_element_masses(const ShellPart& part, const Matrix3X& x, const ShellState& state,
+                            std::vector<double>& mass, std::vector<double>& inertia_factor);
 
 }  // namespace sf

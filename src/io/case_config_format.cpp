@@ -228,6 +228,8 @@ void write_control(TomlWriter& w, const ControlConfig& c) {
   w.integer("progress_interval", c.progress_interval, "cycles; 0 = about every 2 s");
   w.number("time_step_safety", c.time_step_safety);
   w.number("mass_scaling_dt", c.mass_scaling_dt, "s; 0 = no mass scaling");
+  w.number("mass_scaling_max_added", c.mass_scaling_max_added,
+           "fraction of the physical mass; 0 = no limit");
   w.number("energy_blowup_ratio", c.energy_blowup_ratio);
   w.vector("gravity", c.gravity, "mm/s^2");
   w.number("damping", c.damping, "1/s, mass-proportional");

@@ -174,25 +174,28 @@ void set_up_loads(const CaseConfig& config, Model& model) {
   loads.damping = config.control.damping;
 }
 
-// Uniform density scaling up to the target step: the simplest mass scaling, exact for a uniform
-// mesh and reported as added mass. Selective (per-element) scaling is a later refinement.
+// Selective mass scaling (docs/time-integration.md): every element whose stable step is below
+// control.mass_scaling_dt gets the density that brings it to that step; the others keep theirs.
 void set_mass_and_time_step(const CaseConfig& config, Model& model, const ShellState& state) {
   Blank& blank = model.blank;
   const ControlConfig& control = config.control;
   compute_lumped_mass(blank.part, blank.mesh.nodes, state, blank.mass, blank.rotational_inertia);
   blank.physical_mass = blank.mass.sum();
   blank.physical_nodal_mass = blank.mass;
-  StableStep step = compute_stable_time_step(blank.part, blank.mesh.nodes, state);
-  double dt = control.time_step_safety * step.dt;
-  if (control.mass_scaling_dt > dt) {
-    const double factor = (control.mass_scaling_dt / dt) * (control.mass_scaling_dt / dt);
-    blank.part.density *= factor;
-    compute_lumped_mass(blank.part, blank.mesh.nodes, state, blank.mass, blank.rotational_inertia);
-    step = compute_stable_time_step(blank.part, blank.mesh.nodes, state);
-    dt = control.time_step_safety * step.dt;
+  set_up_mass_scaling(blank.part, blank.mesh.nodes, state, control.mass_scaling_dt,
+                      control.time_step_safety, blank.scaling);
+  const TimeStepCheck step = scale_mass_to_time_step(blank.part, blank.mesh.nodes, blank.scaling,
+                                                     blank.mass, blank.rotational_inertia);
+  const double limit = control.mass_scaling_max_added;
+  if (limit > 0.0 && blank.scaling.added_mass > limit * blank.physical_mass) {
+    throw InputError(fmt::format(
+        "{}: control.mass_scaling_dt = {:.4e} s adds {:.2f} % of the blank's mass at the start, "
+        "more than control.mass_scaling_max_added = {:.2f} %; lower the target step or raise "
+        "the limit",
+        config.file.string(), control.mass_scaling_dt,
+        100.0 * blank.scaling.added_mass / blank.physical_mass, 100.0 * limit));
   }
-  blank.added_mass = blank.mass.sum() - blank.physical_mass;
-  model.time_step = dt;
+  model.time_step = step.dt;
   model.limiting_element = step.element;
 }
 

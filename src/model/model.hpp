@@ -11,6 +11,7 @@
 #include "mesh/mesh_data.hpp"
 #include "mesh/triangle_surface.hpp"
 #include "model/boundary_conditions.hpp"
+#include "model/mass_scaling.hpp"
 #include "model/rigid_tool_motion.hpp"
 
 namespace sf {
@@ -19,10 +20,10 @@ namespace sf {
 struct Blank {
   PartMesh mesh;
   ShellPart part;
-  VectorX mass;                   ///< tonne per node (after any mass scaling)
-  VectorX rotational_inertia;     ///< tonne mm^2 per node
+  VectorX mass;                   ///< tonne per node (after any mass scaling; grows in the run)
+  VectorX rotational_inertia;     ///< tonne mm^2 per node (likewise)
   double physical_mass = 0.0;     ///< tonne, before mass scaling
-  double added_mass = 0.0;        ///< tonne, added by mass scaling
+  MassScaling scaling;            ///< per-element density factors and the added mass
   VectorX inverse_element_count;  ///< per node, 1 / (elements sharing it), for nodal averages
   VectorX physical_nodal_mass;    ///< tonne per node before mass scaling (for gravity)
   std::vector<NodeGroup> groups;  ///< every node group the case names, each once
@@ -87,10 +88,10 @@ struct Model {
   std::vector<ContactInterface> contacts;
   NodalConstraints constraints;
   ExternalLoads loads;
-  double end_time = 0.0;   ///< s, from control.end_time or the stroke
-  int stroke_tool = -1;    ///< index of the tool whose travel is the stroke, or -1
-  double time_step = 0.0;  ///< s, the initial stable step with the safety factor (after scaling)
-  int limiting_element = -1;
+  double end_time = 0.0;      ///< s, from control.end_time or the stroke
+  int stroke_tool = -1;       ///< index of the tool whose travel is the stroke, or -1
+  double time_step = 0.0;     ///< s, the initial stable step with the safety factor (after scaling)
+  int limiting_element = -1;  ///< the element limiting time_step
 };
 
 }  // namespace sf

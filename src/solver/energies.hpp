@@ -11,8 +11,15 @@ struct Energies {
   double damping = 0.0;        ///< dissipated by mass-proportional damping
   double external_work = 0.0;  ///< work done on the blank by the tools, loads and prescribed motion
   double initial_kinetic = 0.0;  ///< kinetic energy of the initial velocities
+  /// Kinetic energy taken out by mass added during the run: mass is added at fixed nodal momentum,
+  /// which lowers the velocity by m_old / m_new; per node (1 - m_old / m_new) v . (m_old v + dt F)
+  /// / 2 (F the net force), the central-difference form of the drop (see docs/time-integration.md).
+  double mass_scaling = 0.0;
+  /// Plastic dissipation at the integration points. Informational: it is PART of `internal`
+  /// (internal = elastic energy + plastic work), not a term of its own in the balance.
+  double plastic_work = 0.0;
 
-  double total() const { return kinetic + internal + hourglass + contact + damping; }
+  double total() const { return kinetic + internal + hourglass + contact + damping + mass_scaling; }
   /// What the total must equal: the work put in plus the initial kinetic energy.
   double supplied() const { return external_work + initial_kinetic; }
   /// (total - supplied) relative to the larger of the two; 0 when nothing has happened.

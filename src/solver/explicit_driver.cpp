@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -113,6 +114,42 @@ void compute_external_forces(const Model& model, SolutionState& s) {
       fmt::format("non-finite state at t = {:.6e} s, cycle {}", s.time, s.cycle));
 }
 
+// Mass was added at some nodes (blank.mass against s.mass_before): their half-step velocities are
+// lowered to keep the momentum, v' = r v with r = m_old / m_new (likewise the angular velocities).
+// The energy this takes out, counted in energies.mass_scaling, is the one that keeps the
+// central-difference balance exact: the trapezoidal work already counted the force F_n (applied +
+// contact - internal) at this time against v, while the next velocity update works with v', so
+//   dE = (1 - r) v . (m_old v + dt F_n) / 2,
+// about (1 - r) m_old v(n-1/2) . v(n+1/2) / 2, the product form of the kinetic energy at time n.
+// dt: the step about to be taken (s).
+void keep_momentum(const Model& model, SolutionState& s, double dt) {
+  const Eigen::Index n = s.v.cols();
+  double removed = 0.0;
+  double kinetic_drop = 0.0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double m_new = model.blank.mass[i];
+    const double m_old = s.mass_before[i];
+    if (m_new != m_old) {
+      const double r = m_old / m_new;
+      const Vec3 force = s.f_ext.col(i) + s.f_contact.col(i) - s.f_int.col(i);
+      removed += 0.5 * (1.0 - r) * s.v.col(i).dot(m_old * s.v.col(i) + dt * force);
+      kinetic_drop += 0.5 * (1.0 - r) * m_old * s.v.col(i).squaredNorm();
+      s.v.col(i) *= r;
+    }
+    const double i_new = model.blank.rotational_inertia[i];
+    const double i_old = s.inertia_before[i];
+    if (i_new != i_old) {
+      const double r = i_old / i_new;
+      const Vec3 moment = s.m_ext.col(i) - s.m_int.col(i);
+      removed += 0.5 * (1.0 - r) * s.omega.col(i).dot(i_old * s.omega.col(i) + dt * moment);
+      kinetic_drop += 0.5 * (1.0 - r) * i_old * s.omega.col(i).squaredNorm();
+      s.omega.col(i) *= r;
+    }
+  }
+  s.energies.mass_scaling += removed;
+  s.energies.kinetic -= kinetic_drop;
+}
+
 void check_energy(const Model& model, const SolutionState& s, double energy_scale) {
   const Energies& e = s.energies;
   const double ratio = model.config.control.energy_blowup_ratio;
@@ -144,6 +181,10 @@ SolutionState make_initial_state(const Model& model) {
   s.f_int_previous = Matrix3X::Zero(3, n);
   s.m_int_previous = Matrix3X::Zero(3, n);
   s.half_thickness = VectorX::Zero(n);
+  if (model.blank.scaling.enabled()) {
+    s.mass_before = model.blank.mass;
+    s.inertia_before = model.blank.rotational_inertia;
+  }
   s.shell = make_shell_state(static_cast<int>(model.blank.part.quads.cols()),
                              model.config.blank.integration_points, model.config.blank.thickness);
   s.tools.resize(model.tools.size());
@@ -160,25 +201,52 @@ SolutionState make_initial_state(const Model& model) {
   model.constraints.apply(s.v, s.omega);
   s.energies.kinetic = kinetic_energy(model, s);
   s.energies.initial_kinetic = s.energies.kinetic;
+  s.stable_dt = model.time_step;
+  s.dt_element = model.limiting_element;
   return s;
 }
 
-double compute_time_step(const Model& model, const SolutionState& state) {
-  return model.config.control.time_step_safety *
-         compute_stable_time_step(model.blank.part, state.x, state.shell).dt;
+double compute_time_step(Model& model, SolutionState& s) {
+  Blank& blank = model.blank;
+  if (blank.scaling.enabled()) {
+    s.mass_before = blank.mass;  // same size: no allocation
+    s.inertia_before = blank.rotational_inertia;
+  }
+  const TimeStepCheck check =
+      scale_mass_to_time_step(blank.part, s.x, blank.scaling, blank.mass, blank.rotational_inertia);
+  if (check.mass_added > 0.0) {
+    keep_momentum(model, s, check.dt);
+  }
+  const double limit = model.config.control.mass_scaling_max_added;
+  if (check.mass_added > 0.0 && limit > 0.0 &&
+      blank.scaling.added_mass > limit * blank.physical_mass) {
+    throw InstabilityError(fmt::format(
+        "added mass {:.3f} % of the blank's mass passed control.mass_scaling_max_added = {:.3f} % "
+        "at t = {:.6e} s, cycle {} ({} elements scaled; element {} limits the step): elements "
+        "are being crushed below the target step {:.4e} s",
+        100.0 * blank.scaling.added_mass / blank.physical_mass, 100.0 * limit, s.time, s.cycle,
+        blank.scaling.scaled_elements, check.element, blank.scaling.target_dt));
+  }
+  s.stable_dt = check.dt;
+  s.dt_element = check.element;
+  if (s.min_stable_dt == 0.0 || check.dt < s.min_stable_dt) {
+    s.min_stable_dt = check.dt;
+    s.min_dt_element = check.element;
+  }
+  s.max_stable_dt = std::max(s.max_stable_dt, check.dt);
+  return check.dt;
 }
 
-double compute_forces(Model& model, SolutionState& s, double dt) {
+ShellForceResult compute_forces(Model& model, SolutionState& s, double dt) {
   s.f_int.setZero();
   s.m_int.setZero();
   s.f_contact.setZero();
   compute_external_forces(model, s);
-  double hourglass_power = 0.0;
+  ShellForceResult element_result;
   const auto element_start = std::chrono::steady_clock::now();
   try {
-    hourglass_power = compute_shell_internal_forces(model.blank.part, s.x, s.v, s.omega, dt,
-                                                    s.shell, s.f_int, s.m_int)
-                          .hourglass_power;
+    element_result = compute_shell_internal_forces(model.blank.part, s.x, s.v, s.omega, dt, s.shell,
+                                                   s.f_int, s.m_int);
   } catch (const InstabilityError& e) {
     throw InstabilityError(fmt::format("{} at t = {:.6e} s, cycle {}", e.what(), s.time, s.cycle));
   }
@@ -209,7 +277,7 @@ double compute_forces(Model& model, SolutionState& s, double dt) {
   }
   s.contact_seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_start).count();
-  return hourglass_power;
+  return element_result;
 }
 
 void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previous) {
@@ -235,7 +303,7 @@ void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previ
   s.m_int_previous.swap(s.m_int);
   s.f_ext_previous.swap(s.f_ext);
   s.m_ext_previous.swap(s.m_ext);
-  const double hourglass_power = compute_forces(model, s, dt);
+  const ShellForceResult element_result = compute_forces(model, s, dt);
 
   // Energies by the trapezoidal rule on the work increments.
   Energies& e = s.energies;
@@ -255,7 +323,8 @@ void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previ
   }
   e.external_work += load_work + prescribed_work;
   e.damping += model.loads.damping * damping_power * dt;
-  const double hourglass_work = hourglass_power * dt;
+  const double hourglass_work = element_result.hourglass_power * dt;
+  e.plastic_work += element_result.plastic_work;
   e.hourglass += hourglass_work;
   e.internal += element_work - hourglass_work;
   for (std::size_t t = 0; t < s.tools.size(); ++t) {
@@ -303,6 +372,21 @@ RunSummary run_explicit(Model& model, const RunOptions& options) {
   const double initial_dt = model.time_step;
   double dt_previous = 0.0;
   Progress progress(model, control.progress_interval);
+  // Added mass above this share of the physical mass is worth a warning (once).
+  constexpr double warn_fraction = 0.05;
+  bool warned = false;
+  auto warn_about_added_mass = [&]() {
+    const double fraction = model.blank.scaling.added_mass / model.blank.physical_mass;
+    if (!warned && fraction > warn_fraction) {
+      warned = true;
+      log_warning(
+          "mass scaling has added {:.2f} % of the blank's mass by t = {:.6e} s, cycle {} ({} "
+          "elements scaled); check that the inertia forces stay small (kinetic / internal energy) "
+          "or set control.mass_scaling_max_added\n",
+          100.0 * fraction, s.time, s.cycle, model.blank.scaling.scaled_elements);
+    }
+  };
+  warn_about_added_mass();
 
   try {
     while (s.time < model.end_time * (1.0 - 1e-12)) {
@@ -322,11 +406,15 @@ RunSummary run_explicit(Model& model, const RunOptions& options) {
         s.peak_kinetic_ratio = std::max(s.peak_kinetic_ratio, s.energies.kinetic_ratio());
       }
       check_energy(model, s, energy_scale);
+      warn_about_added_mass();
 
-      if (output && s.cycle % control.history_interval == 0) {
+      const bool frame_due = s.time >= next_frame_time * (1.0 - 1e-12);
+      // A history row every history_interval cycles and at every frame (the frame's added mass,
+      // time step, energies).
+      if (output && (s.cycle % control.history_interval == 0 || frame_due)) {
         output->append_history(model, s);
       }
-      if (s.time >= next_frame_time * (1.0 - 1e-12)) {
+      if (frame_due) {
         if (output) {
           output->write_frame(model, s);
         }

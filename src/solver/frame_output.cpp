@@ -7,12 +7,20 @@ namespace sf {
 std::vector<std::string> history_columns(const Model& model) {
   std::vector<std::string> columns = {"time",
                                       "time_step",
+                                      "stable_time_step",
+                                      "time_step_element",
                                       "kinetic_energy",
                                       "internal_energy",
                                       "hourglass_energy",
                                       "contact_energy",
+                                      "damping_energy",
+                                      "mass_scaling_energy",
+                                      "plastic_work",
                                       "external_work",
-                                      "energy_balance_error"};
+                                      "energy_balance_error",
+                                      "added_mass",
+                                      "added_mass_percent",
+                                      "scaled_elements"};
   for (const Tool& t : model.tools) {
     columns.push_back(t.name + "_travel");
     columns.push_back(t.name + "_force");
@@ -48,6 +56,9 @@ FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& direct
   const Eigen::Index n_elements = model.blank.mesh.quads.cols();
   displacement_.resize(3, model.blank.mesh.nodes.cols());
   plastic_strain_.resize(n_elements);
+  if (model.blank.scaling.enabled()) {
+    added_mass_percent_.resize(n_elements);
+  }
   stress_mid_.resize(6, n_elements);
   stress_top_.resize(6, n_elements);
   stress_bottom_.resize(6, n_elements);
@@ -67,6 +78,15 @@ void FrameOutput::write_frame(const Model& model, const SolutionState& s) {
       {"thickness", FieldCenter::cell, 1, s.shell.thickness.data()},
       {"plastic_strain", FieldCenter::cell, 1, plastic_strain_.data()},
   };
+  if (model.blank.scaling.enabled()) {
+    // Per element: 100 (rho_e / rho - 1), the share of its own mass that scaling added.
+    const MassScaling& scaling = model.blank.scaling;
+    for (Eigen::Index e = 0; e < added_mass_percent_.size(); ++e) {
+      added_mass_percent_[e] = 100.0 * (scaling.density_factor[static_cast<std::size_t>(e)] - 1.0);
+    }
+    blank.fields.push_back(
+        {"added_mass_percent", FieldCenter::cell, 1, added_mass_percent_.data()});
+  }
   if (model.config.output.stress_layers) {
     blank.fields.push_back({"stress_mid", FieldCenter::cell, 6, stress_mid_.data()});
     blank.fields.push_back({"stress_top", FieldCenter::cell, 6, stress_top_.data()});
@@ -85,10 +105,18 @@ void FrameOutput::write_frame(const Model& model, const SolutionState& s) {
 }
 
 void FrameOutput::append_history(const Model& model, const SolutionState& s) {
+  if (s.cycle == last_history_cycle_) {
+    return;  // this cycle's row is there already
+  }
+  last_history_cycle_ = s.cycle;
   std::size_t k = 0;
   const Energies& e = s.energies;
-  for (double value : {s.time, s.dt, e.kinetic, e.internal, e.hourglass, e.contact, e.external_work,
-                       e.balance_error()}) {
+  const MassScaling& scaling = model.blank.scaling;
+  for (double value : {s.time, s.dt, s.stable_dt, static_cast<double>(s.dt_element), e.kinetic,
+                       e.internal, e.hourglass, e.contact, e.damping, e.mass_scaling,
+                       e.plastic_work, e.external_work, e.balance_error(), scaling.added_mass,
+                       100.0 * scaling.added_mass / model.blank.physical_mass,
+                       static_cast<double>(scaling.scaled_elements)}) {
     row_[k++] = value;
   }
   for (std::size_t t = 0; t < model.tools.size(); ++t) {

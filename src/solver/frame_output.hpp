@@ -16,6 +16,7 @@ class FrameOutput {
   /// Creates the results directory's files, and writes the resolved case and build information.
   FrameOutput(const Model& model, const std::filesystem::path& directory);
   void write_frame(const Model& model, const SolutionState& state);
+  /// Buffers a history row of the current state (none if this cycle has one already).
   void append_history(const Model& model, const SolutionState& state);
   void flush();
 
@@ -23,14 +24,17 @@ class FrameOutput {
   std::unique_ptr<ResultsWriter> writer_;
   Matrix3X displacement_;
   VectorX plastic_strain_;
+  VectorX added_mass_percent_;  ///< per element, written when mass scaling is on
   Eigen::Matrix<double, 6, Eigen::Dynamic> stress_mid_, stress_top_, stress_bottom_;
   std::vector<Matrix3X> tool_coordinates_;
   std::vector<Matrix3X> tool_displacement_;
   std::vector<double> row_;
+  long last_history_cycle_ = -1;  ///< one row per cycle at most
 };
 
-/// The history columns, in order: time, dt, the energies, then per tool its travel, force and
-/// contact node count.
+/// The history columns, in order: time, the step taken and the stable step with its limiting
+/// element, the energies, the added mass, then per tool its travel, force and contact node count
+/// (docs/results-format.md).
 std::vector<std::string> history_columns(const Model& model);
 
 }  // namespace sf

@@ -27,7 +27,13 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
   }
   r.energies = s.energies;
   r.peak_kinetic_ratio = s.peak_kinetic_ratio;
-  r.added_mass_fraction = model.blank.added_mass / model.blank.physical_mass;
+  r.physical_mass = model.blank.physical_mass;
+  r.added_mass = model.blank.scaling.added_mass;
+  r.added_mass_fraction = r.added_mass / r.physical_mass;
+  r.scaled_elements = model.blank.scaling.scaled_elements;
+  r.min_time_step = s.min_stable_dt;
+  r.max_time_step = s.max_stable_dt;
+  r.min_time_step_element = s.min_dt_element;
   const auto [tmin, tmax] = std::minmax_element(s.shell.thickness.begin(), s.shell.thickness.end());
   r.min_thickness = *tmin;
   r.max_thickness = *tmax;
@@ -64,16 +70,24 @@ std::string format_run_summary(const RunSummary& r) {
   add(fmt::format("  time split          elements {:.0f} %, contact {:.0f} %, rest {:.0f} %",
                   100.0 * r.element_share, 100.0 * r.contact_share,
                   100.0 * (1.0 - r.element_share - r.contact_share)));
+  add(fmt::format("  time step           {:.4e} to {:.4e} s (smallest limited by element {})",
+                  r.min_time_step, r.max_time_step, r.min_time_step_element));
   add(
       fmt::format("  energies [N mm]     kinetic {:.4e}, internal {:.4e}, hourglass {:.4e}, "
                   "contact {:.4e}, external work {:.4e}",
                   r.energies.kinetic, r.energies.internal, r.energies.hourglass, r.energies.contact,
                   r.energies.external_work));
+  add(
+      fmt::format("                      damping {:.4e}, mass scaling {:.4e}; plastic work {:.4e} "
+                  "(part of internal)",
+                  r.energies.damping, r.energies.mass_scaling, r.energies.plastic_work));
   add(fmt::format("  energy balance      {:+.3e} (total - external work, relative)",
                   r.energies.balance_error()));
   add(fmt::format("  kinetic / internal  {:.4f} at the end, {:.4f} at most after 10% of the run",
                   r.energies.kinetic_ratio(), r.peak_kinetic_ratio));
-  add(fmt::format("  added mass          {:.2f} %", 100.0 * r.added_mass_fraction));
+  add(fmt::format(
+      "  added mass          {:.4e} tonne, {:.2f} % of {:.4e} tonne ({} elements scaled)",
+      r.added_mass, 100.0 * r.added_mass_fraction, r.physical_mass, r.scaled_elements));
   add(fmt::format("  thickness           {:.4f} to {:.4f} mm", r.min_thickness, r.max_thickness));
   add(fmt::format("  max plastic strain  {:.4f}", r.max_plastic_strain));
   for (const ToolSummary& t : r.tools) {
@@ -110,11 +124,19 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
                      {"contact", r.energies.contact},
                      {"damping", r.energies.damping},
                      {"initial_kinetic", r.energies.initial_kinetic},
+                     {"mass_scaling", r.energies.mass_scaling},
+                     {"plastic_work", r.energies.plastic_work},
                      {"external_work", r.energies.external_work},
                      {"balance_error", r.energies.balance_error()}};
   j["kinetic_ratio_end"] = r.energies.kinetic_ratio();
   j["kinetic_ratio_peak"] = r.peak_kinetic_ratio;
+  j["physical_mass_tonne"] = r.physical_mass;
+  j["added_mass_tonne"] = r.added_mass;
   j["added_mass_fraction"] = r.added_mass_fraction;
+  j["added_mass_percent"] = 100.0 * r.added_mass_fraction;
+  j["scaled_elements"] = r.scaled_elements;
+  j["time_step_s"] = {
+      {"min", r.min_time_step}, {"max", r.max_time_step}, {"min_element", r.min_time_step_element}};
   j["min_thickness_mm"] = r.min_thickness;
   j["max_thickness_mm"] = r.max_thickness;
   j["max_plastic_strain"] = r.max_plastic_strain;

@@ -35,7 +35,13 @@ struct RunSummary {
   int nodes = 0;
   Energies energies;
   double peak_kinetic_ratio = 0.0;   ///< largest kinetic/internal after the first tenth
+  double physical_mass = 0.0;        ///< tonne, the blank's mass before scaling
+  double added_mass = 0.0;           ///< tonne, added by mass scaling (at the start and in the run)
   double added_mass_fraction = 0.0;  ///< added / physical mass
+  int scaled_elements = 0;           ///< elements that received mass
+  double min_time_step = 0.0;        ///< s, smallest stable step of the run (safety included)
+  double max_time_step = 0.0;        ///< s, largest stable step of the run
+  int min_time_step_element = -1;    ///< the element limiting min_time_step
   double min_thickness = 0.0;        ///< mm
   double max_thickness = 0.0;        ///< mm
   double max_plastic_strain = 0.0;

@@ -22,20 +22,27 @@ struct ToolState {
 struct SolutionState {
   double time = 0.0;  ///< s
   long cycle = 0;
-  double dt = 0.0;          ///< s, the last step taken
-  Matrix3X x;               ///< mm, current coordinates
-  Matrix3X v;               ///< mm/s, at the half step
-  Matrix3X omega;           ///< rad/s, at the half step
-  Matrix3X f_int;           ///< N, internal forces (resisting)
-  Matrix3X m_int;           ///< N mm, internal moments (resisting)
-  Matrix3X f_contact;       ///< N, contact forces on the blank nodes
-  Matrix3X f_ext;           ///< N, applied forces (loads, pressure, gravity)
-  Matrix3X m_ext;           ///< N mm, applied moments
-  Matrix3X f_ext_previous;  ///< N, a step ago (for the work increment)
-  Matrix3X m_ext_previous;  ///< N mm
-  Matrix3X f_int_previous;  ///< N, for the trapezoidal work increment
-  Matrix3X m_int_previous;  ///< N mm
-  VectorX half_thickness;   ///< mm per node, the contact offset
+  double dt = 0.0;             ///< s, the last step taken (may be cut short to land on a frame)
+  double stable_dt = 0.0;      ///< s, the last stable step (safety included, after mass scaling)
+  int dt_element = -1;         ///< the element limiting stable_dt
+  double min_stable_dt = 0.0;  ///< s, smallest stable_dt of the run so far (0 before any step)
+  double max_stable_dt = 0.0;  ///< s, largest stable_dt of the run so far
+  int min_dt_element = -1;     ///< the element limiting min_stable_dt
+  Matrix3X x;                  ///< mm, current coordinates
+  Matrix3X v;                  ///< mm/s, at the half step
+  Matrix3X omega;              ///< rad/s, at the half step
+  Matrix3X f_int;              ///< N, internal forces (resisting)
+  Matrix3X m_int;              ///< N mm, internal moments (resisting)
+  Matrix3X f_contact;          ///< N, contact forces on the blank nodes
+  Matrix3X f_ext;              ///< N, applied forces (loads, pressure, gravity)
+  Matrix3X m_ext;              ///< N mm, applied moments
+  Matrix3X f_ext_previous;     ///< N, a step ago (for the work increment)
+  Matrix3X m_ext_previous;     ///< N mm
+  Matrix3X f_int_previous;     ///< N, for the trapezoidal work increment
+  Matrix3X m_int_previous;     ///< N mm
+  VectorX half_thickness;      ///< mm per node, the contact offset
+  VectorX mass_before;         ///< tonne per node, scratch: the masses before this cycle's scaling
+  VectorX inertia_before;      ///< tonne mm^2 per node, likewise
   ShellState shell;
   std::vector<ToolState> tools;
   Energies energies;

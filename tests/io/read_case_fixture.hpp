@@ -136,6 +136,7 @@ history_interval = 50
 progress_interval = 1000
 time_step_safety = 0.8
 mass_scaling_dt = 1e-7
+mass_scaling_max_added = 0.05
 energy_blowup_ratio = 5
 
 [output]

@@ -59,6 +59,7 @@ TEST_F(ReadCase, MinimalCaseGetsEveryDocumentedDefault) {
   EXPECT_EQ(c.control.progress_interval, 0);
   EXPECT_EQ(c.control.time_step_safety, 0.9);
   EXPECT_EQ(c.control.mass_scaling_dt, 0.0);
+  EXPECT_EQ(c.control.mass_scaling_max_added, 0.0);
   EXPECT_EQ(c.control.energy_blowup_ratio, 10.0);
 
   EXPECT_EQ(c.output.directory, (dir_ / "results").string());
@@ -151,6 +152,7 @@ TEST_F(ReadCase, FullCaseReadsEveryValue) {
   EXPECT_EQ(c.control.progress_interval, 1000);
   EXPECT_EQ(c.control.time_step_safety, 0.8);
   EXPECT_EQ(c.control.mass_scaling_dt, 1e-7);
+  EXPECT_EQ(c.control.mass_scaling_max_added, 0.05);
   EXPECT_EQ(c.control.energy_blowup_ratio, 5.0);
 
   EXPECT_EQ(c.output.directory, (dir_ / "out" / "run1").string());
@@ -237,6 +239,8 @@ TEST_F(ReadCase, OutOfRangeValuesAreErrors) {
        "> 1"},
       {"end_time = 0.002", "end_time = 0.002\noutput_frames = 0", "control.output_frames", ">= 1"},
       {"end_time = 0.002", "end_time = -1.0", "control.end_time", ">= 0 (s)"},
+      {"end_time = 0.002", "end_time = 0.002\nmass_scaling_max_added = -0.1",
+       "control.mass_scaling_max_added", ">= 0"},
   };
   for (const Edit& e : edits) {
     SCOPED_TRACE(e.to);
@@ -419,6 +423,7 @@ void expect_same_case(const sf::CaseConfig& a, const sf::CaseConfig& b) {
   EXPECT_EQ(a.control.progress_interval, b.control.progress_interval);
   EXPECT_EQ(a.control.time_step_safety, b.control.time_step_safety);
   EXPECT_EQ(a.control.mass_scaling_dt, b.control.mass_scaling_dt);
+  EXPECT_EQ(a.control.mass_scaling_max_added, b.control.mass_scaling_max_added);
   EXPECT_EQ(a.control.energy_blowup_ratio, b.control.energy_blowup_ratio);
   EXPECT_EQ(a.output.directory, b.output.directory);
   EXPECT_EQ(a.output.stress_layers, b.output.stress_layers);
