@@ -63,10 +63,11 @@ void print_model(const sf::Model& model) {
   }
   sf::log_info("Units       {}\n", model.config.units);
   sf::log_info(
-      "Blank       {} nodes, {} quadrilateral shells (Belytschko-Lin-Tsay), t = {} mm, "
-      "{} thickness points, material '{}'\n",
-      blank.mesh.nodes.cols(), blank.mesh.quads.cols(), model.config.blank.thickness,
-      model.config.blank.integration_points, model.config.blank.material);
+      "Blank       {} nodes, {} quadrilateral shells (Belytschko-Lin-Tsay), {} triangular shells "
+      "(C0, DSG3), t = {} mm, {} thickness points, material '{}'\n",
+      blank.mesh.nodes.cols(), blank.mesh.quads.cols(), blank.mesh.triangles.cols(),
+      model.config.blank.thickness, model.config.blank.integration_points,
+      model.config.blank.material);
   sf::log_info(
       "Mass        {:.6e} tonne physical, {:.6e} tonne added by mass scaling ({:.2f} %, "
       "{} elements)\n",

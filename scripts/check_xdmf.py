@@ -74,9 +74,13 @@ def main():
     reader.UpdatePipelineInformation()
     errors = []
 
-    times = list(reader.TimestepValues) if reader.TimestepValues is not None else []
-    if isinstance(reader.TimestepValues, float):  # a single time step comes back as a float
-        times = [reader.TimestepValues]
+    values = reader.TimestepValues
+    if values is None:
+        times = []
+    elif isinstance(values, float):  # a single time step comes back as a float
+        times = [values]
+    else:
+        times = list(values)
     if len(times) != len(args.times) or any(
             not math.isclose(a, e, rel_tol=1e-15, abs_tol=0.0) for a, e in zip(times, args.times)):
         errors.append(f"time steps {times}, expected {args.times}")

@@ -9,6 +9,7 @@
 
 #include "core/errors.hpp"
 #include "element/shell_geometry.hpp"
+#include "element/shell_triangle.hpp"
 
 namespace sf {
 
@@ -252,7 +253,7 @@ ShellForceResult compute_shell_internal_forces(const ShellPart& part, const Matr
                                                ShellState& state, Matrix3X& f_int,
                                                Matrix3X& m_int) {
   const auto n_nodes = x.cols();
-  const auto n_el = part.quads.cols();
+  const auto n_el = static_cast<Eigen::Index>(element_count(part));
   if (v.cols() != n_nodes || omega.cols() != n_nodes || f_int.cols() != n_nodes ||
       m_int.cols() != n_nodes || state.n_points != part.section.n_points ||
       state.n_elements != n_el ||
@@ -262,11 +263,19 @@ ShellForceResult compute_shell_internal_forces(const ShellPart& part, const Matr
        state.hourglass.size() != static_cast<std::size_t>(n_el * kHourglassModes))) {
     throw std::invalid_argument("compute_shell_internal_forces: inconsistent array sizes");
   }
-  return std::visit(
-      [&](const auto& law) {
-        return compute_forces(part, law, x, v, omega, dt, state, f_int, m_int);
-      },
-      part.material);
+  ShellForceResult result;
+  if (part.quads.cols() > 0) {
+    result = std::visit(
+        [&](const auto& law) {
+          return compute_forces(part, law, x, v, omega, dt, state, f_int, m_int);
+        },
+        part.material);
+  }
+  const ShellForceResult tri =
+      compute_triangle_internal_forces(part, x, v, omega, dt, state, f_int, m_int);
+  result.internal_work += tri.internal_work;
+  result.hourglass_power += tri.hourglass_power;
+  return result;
 }
 
 }  // namespace sf

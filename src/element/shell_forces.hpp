@@ -17,7 +17,8 @@ struct ShellForceResult {
                                  ///< the points' d_plastic_work on the same quadrature
 };
 
-/// Adds every element's internal nodal forces (N) and moments (N mm) into f_int and m_int
+/// Adds every element's (quads, then triangles: see shell_triangle.hpp) internal nodal forces (N)
+/// and moments (N mm) into f_int and m_int
 /// (3 x n_nodes, global components; the caller zeroes them), updating stresses, plastic strains and
 /// thicknesses in `state`. Sign: f_int resists the motion, M a = f_ext - f_int, and
 /// f_int . v + m_int . omega is the stress power.

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "element/shell_geometry.hpp"
+#include "element/shell_triangle_geometry.hpp"
 
 namespace sf {
 
@@ -24,6 +25,19 @@ void compute_lumped_mass(const ShellPart& part, const Matrix3X& x, const ShellSt
       rotational_inertia(part.quads(i, e)) += i_node;
     }
   }
+  const int n_quads = static_cast<int>(part.quads.cols());
+  TriangleGeometry tg;
+  for (int k = 0; k < part.triangles.cols(); ++k) {
+    const int e = n_quads + k;
+    compute_triangle_geometry_or_throw(gather_triangle(x, part.triangles, k), e, k, "mass", tg);
+    const double t = state.thickness[e];
+    const double m_node = part.density * t * tg.area / 3.0;
+    const double i_node = rotational_inertia_factor(tg.area, t) * m_node;
+    for (int i = 0; i < 3; ++i) {
+      mass(part.triangles(i, k)) += m_node;
+      rotational_inertia(part.triangles(i, k)) += i_node;
+    }
+  }
 }
 
 namespace {
@@ -38,6 +52,14 @@ double element_time_step(const Quad3& xe, int e, double c, ShellGeometry& g) {
   return g.area / (std::sqrt(side2) * c);
 }
 
+// L / c of triangle e (element index, quads first): L = 2 A / max side, the smallest altitude.
+double triangle_time_step(const Matrix3X& x, const ShellPart& part, int e, double c,
+                          TriangleGeometry& tg) {
+  const int k = e - static_cast<int>(part.quads.cols());
+  compute_triangle_geometry_or_throw(gather_triangle(x, part.triangles, k), e, k, "time step", tg);
+  return triangle_characteristic_length(tg) / c;
+}
+
 }  // namespace
 
 StableStep compute_stable_time_step(const ShellPart& part, const Matrix3X& x,
@@ -46,8 +68,11 @@ StableStep compute_stable_time_step(const ShellPart& part, const Matrix3X& x,
                                            poisson_ratio(part.material), part.density);
   StableStep best{std::numeric_limits<double>::infinity(), -1};
   ShellGeometry g;
-  for (int e = 0; e < part.quads.cols(); ++e) {
-    const double dt = element_time_step(gather_quad(x, part.quads, e), e, c, g);
+  TriangleGeometry tg;
+  const int n_quads = static_cast<int>(part.quads.cols());
+  for (int e = 0; e < element_count(part); ++e) {
+    const double dt = e < n_quads ? element_time_step(gather_quad(x, part.quads, e), e, c, g)
+                                  : triangle_time_step(x, part, e, c, tg);
     if (dt < best.dt) {
       best = {dt, e};
     }
@@ -57,15 +82,18 @@ StableStep compute_stable_time_step(const ShellPart& part, const Matrix3X& x,
 
 StableStep compute_element_time_steps(const ShellPart& part, const Matrix3X& x,
                                       std::span<double> element_dt) {
-  if (element_dt.size() != static_cast<std::size_t>(part.quads.cols())) {
+  if (element_dt.size() != static_cast<std::size_t>(element_count(part))) {
     throw std::invalid_argument("compute_element_time_steps: one value per element expected");
   }
   const double c = plane_stress_wave_speed(young_modulus(part.material),
                                            poisson_ratio(part.material), part.density);
   StableStep best{std::numeric_limits<double>::infinity(), -1};
   ShellGeometry g;
-  for (int e = 0; e < part.quads.cols(); ++e) {
-    const double dt = element_time_step(gather_quad(x, part.quads, e), e, c, g);
+  TriangleGeometry tg;
+  const int n_quads = static_cast<int>(part.quads.cols());
+  for (int e = 0; e < element_count(part); ++e) {
+    const double dt = e < n_quads ? element_time_step(gather_quad(x, part.quads, e), e, c, g)
+                                  : triangle_time_step(x, part, e, c, tg);
     element_dt[static_cast<std::size_t>(e)] = dt;
     if (dt < best.dt) {
       best = {dt, e};
@@ -76,16 +104,26 @@ StableStep compute_element_time_steps(const ShellPart& part, const Matrix3X& x,
 
 void compute_element_masses(const ShellPart& part, const Matrix3X& x, const ShellState& state,
                             std::vector<double>& mass, std::vector<double>& inertia_factor) {
-  const auto n = static_cast<std::size_t>(part.quads.cols());
+  const auto n = static_cast<std::size_t>(element_count(part));
+  const auto n_quads = static_cast<std::size_t>(part.quads.cols());
   mass.assign(n, 0.0);
   inertia_factor.assign(n, 0.0);
   ShellGeometry g;
+  TriangleGeometry tg;
   for (std::size_t e = 0; e < n; ++e) {
     const int ei = static_cast<int>(e);
-    compute_shell_geometry_or_throw(gather_quad(x, part.quads, ei), ei, "mass", g);
+    double area = 0.0;
+    if (e < n_quads) {
+      compute_shell_geometry_or_throw(gather_quad(x, part.quads, ei), ei, "mass", g);
+      area = g.area;
+    } else {
+      const int k = ei - static_cast<int>(n_quads);
+      compute_triangle_geometry_or_throw(gather_triangle(x, part.triangles, k), ei, k, "mass", tg);
+      area = tg.area;
+    }
     const double t = state.thickness[e];
-    mass[e] = part.density * t * g.area;
-    inertia_factor[e] = rotational_inertia_factor(g.area, t);
+    mass[e] = part.density * t * area;
+    inertia_factor[e] = rotational_inertia_factor(area, t);
   }
 }
 

@@ -8,10 +8,12 @@
 
 namespace sf {
 
-/// Lumped nodal mass (tonne) and rotational inertia (tonne mm^2). Each element gives
-/// m_e / 4 = rho t A / 4 to each of its nodes, and alpha m_e / 4 of rotational inertia with
-/// alpha = (A + t^2) / 4 (mm^2; see rotational_inertia_factor). `mass` and `rotational_inertia`
-/// are resized to x.cols() and overwritten. Throws InstabilityError on a degenerate element.
+/// Lumped nodal mass (tonne) and rotational inertia (tonne mm^2). Each quad gives
+/// m_e / 4 = rho t A / 4 to each of its nodes and each triangle m_e / 3 = rho t A / 3; each node
+/// gets alpha times its mass share as rotational inertia, alpha = (A + t^2) / 4 (mm^2; see
+/// rotational_inertia_factor, and docs/element-and-material.md for why it also suits triangles).
+/// `mass` and `rotational_inertia` are resized to x.cols() and overwritten. Throws InstabilityError
+/// on a degenerate element.
 void compute_lumped_mass(const ShellPart& part, const Matrix3X& x, const ShellState& state,
                          VectorX& mass, VectorX& rotational_inertia);
 
@@ -22,8 +24,9 @@ struct StableStep {
 };
 
 /// dt = min over elements of L / c, with c = sqrt(E / (rho (1 - nu^2))) the plate wave speed and
-/// L = A / max(side length) the LS-DYNA default characteristic length of a quad shell (ISDO = 0).
-/// Throws InstabilityError on a degenerate element.
+/// L = A / max(side length) for a quad, the LS-DYNA default characteristic length of a quad shell
+/// (ISDO = 0), and L = 2 A / max(side length), the smallest altitude, for a triangle. Element
+/// indices as in ShellPart (quads first). Throws InstabilityError on a degenerate element.
 StableStep compute_stable_time_step(const ShellPart& part, const Matrix3X& x,
                                     const ShellState& state);
 

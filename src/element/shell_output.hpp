@@ -5,7 +5,8 @@
 
 namespace sf {
 
-/// 6 x n_elements stresses (MPa), components (xx, yy, zz, xy, yz, xz) in the global frame.
+/// 6 x n_elements stresses (MPa), elements numbered as in ShellPart (quads, then triangles),,
+/// components (xx, yy, zz, xy, yz, xz) in the global frame.
 using StressColumns = Eigen::Matrix<double, 6, Eigen::Dynamic>;
 using Stress6 = Eigen::Matrix<double, 6, 1>;
 

@@ -1,5 +1,6 @@
 #pragma once
-// Static description and integration-point state of a Belytschko-Lin-Tsay shell part.
+// Static description and integration-point state of a shell part: Belytschko-Lin-Tsay quads and
+// C0 triangles.
 #include <array>
 #include <vector>
 
@@ -32,9 +33,10 @@ ShellSection make_gauss_section(int n_points);
 /// Throws InputError for a point count outside the family's range.
 ShellSection make_section(int n_points, ThroughThicknessRule rule);
 
-/// Integration-point state of a shell part, structure of arrays. In-plane quantities are indexed
-/// e * n_points + k (k = 0 bottom .. n_points - 1 top); stresses are components in the element's
-/// corotational frame (e1, e2, e3).
+/// Integration-point state of a shell part, structure of arrays. Elements are numbered quads
+/// first, then triangles: element e < n_quads is quad e, otherwise triangle e - n_quads (see
+/// ShellPart). In-plane quantities are indexed e * n_points + k (k = 0 bottom .. n_points - 1
+/// top); stresses are components in the element's corotational frame (e1, e2, e3).
 struct ShellState {
   int n_elements = 0;
   int n_points = 0;
@@ -45,7 +47,7 @@ struct ShellState {
   std::vector<double> thickness;      ///< mm, per element, current
   /// Stiffness-form hourglass resultants per element, 5 per element (index 5 e + j), in the
   /// element's corotational frame: j = 0, 1 in-plane (N), 2 out-of-plane (N), 3, 4 rotational
-  /// (N mm). Unused (stays 0) with the viscous form.
+  /// (N mm). Unused (stays 0) with the viscous form and for triangles (no hourglass modes).
   std::vector<double> hourglass;
 };
 
@@ -61,10 +63,14 @@ enum class HourglassForm {
   stiffness,  ///< forces from the accumulated hourglass displacement, stored per element
 };
 
-/// A shell part: connectivity (node indices, counter-clockwise seen from the +normal side),
-/// section, material and the hourglass control.
+/// A shell part: connectivity (node indices, counter-clockwise seen from the +normal side) of its
+/// quads and triangles, section, material and the hourglass control (quads only). A part may hold
+/// quads, triangles or both; its elements are numbered quads first, then triangles: element e <
+/// quads.cols() is quad e, otherwise triangle e - quads.cols(). State arrays, stable-step
+/// elements and output cells use this numbering.
 struct ShellPart {
   QuadConn quads;
+  TriConn triangles;  ///< 3-node C0 shell triangles (DSG3 transverse shear)
   ShellSection section = make_gauss_section(5);
   Material material = ElasticPlaneStress{};
   double density = 0.0;  ///< tonne/mm^3
@@ -73,5 +79,10 @@ struct ShellPart {
   double hourglass_coefficient = 0.1;
   HourglassForm hourglass_form = HourglassForm::viscous;
 };
+
+/// Number of elements of a part: quads plus triangles.
+inline int element_count(const ShellPart& part) {
+  return static_cast<int>(part.quads.cols() + part.triangles.cols());
+}
 
 }  // namespace sf

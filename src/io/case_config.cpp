@@ -111,7 +111,8 @@ void read_blank(const TomlSection& top, const fs::path& folder, const CaseConfig
   s.check_keys({"mesh", "group", "element_size", "element", "thickness", "integration_points",
                 "material", "hourglass"});
   read_mesh_source(s, folder, blank.mesh);
-  s.read_choice<std::string>("element", blank.element, {{"quad", "quad"}});
+  s.read_choice<std::string>("element", blank.element,
+                             {{"quad", "quad"}, {"as_meshed", "as_meshed"}});
   s.read_number("thickness", blank.thickness, greater_than(0.0, "mm"), Presence::required);
   s.read_integer("integration_points", blank.integration_points, IntegerRange{.lo = 1, .hi = 9});
   s.read_string("material", blank.material, Presence::required);

@@ -49,10 +49,13 @@ struct MeshSourceConfig {
 
 struct BlankConfig {
   MeshSourceConfig mesh{.file = {}, .group = "blank"};  ///< group defaults to "blank"
-  std::string element = "quad";                         ///< "quad" (Belytschko-Lin-Tsay)
-  double thickness = 0.0;                               ///< mm, initial
-  int integration_points = 5;                           ///< through the thickness (Gauss), 1..9
-  std::string material;                                 ///< name of a [materials.NAME] table
+  /// "quad": a .geo is meshed with every surface recombined into quads (Belytschko-Lin-Tsay);
+  /// "as_meshed": the .geo's own Recombine commands decide. Triangles left in the mesh are C0
+  /// shell triangles either way; a .msh is read as it is.
+  std::string element = "quad";
+  double thickness = 0.0;              ///< mm, initial
+  int integration_points = 5;          ///< through the thickness (Gauss), 1..9
+  std::string material;                ///< name of a [materials.NAME] table
   double hourglass_coefficient = 0.1;  ///< viscous hourglass coefficient (Flanagan-Belytschko)
 };
 

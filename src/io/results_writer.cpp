@@ -71,9 +71,15 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
                                   std::to_string(part.cells.rows()) + " rows, expected " +
                                   std::to_string(part.nodes_per_cell));
     }
+    if (part.triangles.cols() > 0 && part.nodes_per_cell != 4) {
+      throw std::invalid_argument("part '" + part.name +
+                                  "': extra triangles are allowed only after quadrilaterals");
+    }
     const Eigen::Index node_count = part.reference_nodes.cols();
-    if (part.cells.size() > 0 &&
-        (part.cells.minCoeff() < 0 || part.cells.maxCoeff() >= node_count)) {
+    if ((part.cells.size() > 0 &&
+         (part.cells.minCoeff() < 0 || part.cells.maxCoeff() >= node_count)) ||
+        (part.triangles.size() > 0 &&
+         (part.triangles.minCoeff() < 0 || part.triangles.maxCoeff() >= node_count))) {
       throw std::invalid_argument("part '" + part.name +
                                   "': connectivity refers to a node outside 0.." +
                                   std::to_string(node_count - 1));
@@ -112,15 +118,42 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
                  std::span<const double>(part.reference_nodes.data(),
                                          static_cast<std::size_t>(part.reference_nodes.size())),
                  {nodes, 3});
-      file.write_attribute(path, "nodes_per_cell", part.nodes_per_cell);
-      file.create_group(path + "/frames");
-
+      const hsize_t triangles = to_hsize(part.triangles.cols());
       PartRecord record;
       record.grid.name = part.name;
       record.grid.nodes_per_cell = part.nodes_per_cell;
       record.grid.node_count = static_cast<std::size_t>(nodes);
-      record.grid.cell_count = static_cast<std::size_t>(cells);
+      record.grid.cell_count = static_cast<std::size_t>(cells + triangles);
       record.grid.connectivity_dataset = path + "/connectivity";
+      if (triangles > 0) {
+        // Mixed: the triangles beside the quads, and the flat XDMF "Mixed" array (type code,
+        // then the nodes, per cell) that the .xdmf points to.
+        file.write(path + "/triangle_connectivity",
+                   std::span<const int>(part.triangles.data(),
+                                        static_cast<std::size_t>(part.triangles.size())),
+                   {triangles, 3});
+        std::vector<int> mixed;
+        mixed.reserve(static_cast<std::size_t>(5 * cells + 4 * triangles));
+        for (Eigen::Index e = 0; e < part.cells.cols(); ++e) {
+          mixed.push_back(kXdmfQuadrilateral);
+          for (int a = 0; a < 4; ++a) {
+            mixed.push_back(part.cells(a, e));
+          }
+        }
+        for (Eigen::Index k = 0; k < part.triangles.cols(); ++k) {
+          mixed.push_back(kXdmfTriangle);
+          for (int a = 0; a < 3; ++a) {
+            mixed.push_back(part.triangles(a, k));
+          }
+        }
+        file.write(path + "/mixed_connectivity", std::span<const int>(mixed), {mixed.size()});
+        record.grid.connectivity_dataset = path + "/mixed_connectivity";
+        record.grid.mixed_connectivity_size = mixed.size();
+      }
+      // 4 quadrilaterals, 3 triangles, 0 mixed (quadrilaterals, then triangles).
+      file.write_attribute(path, "nodes_per_cell", triangles > 0 ? 0 : part.nodes_per_cell);
+      file.create_group(path + "/frames");
+
       parts_.push_back(std::move(record));
     }
     file.create_group("/history");

@@ -43,6 +43,10 @@ struct PartTopology {
   int nodes_per_cell = 4;  ///< 3 = triangle, 4 = quadrilateral
   /// Node indices (0-based), one column per cell, nodes_per_cell rows.
   Eigen::Matrix<int, Eigen::Dynamic, Eigen::Dynamic> cells;
+  /// A mixed part (nodes_per_cell = 4 only): triangles that follow the quadrilaterals `cells`,
+  /// so the part's cells are cells.cols() quads, then these triangles (cell fields in that
+  /// order). Empty for a part of one cell type.
+  TriConn triangles;
   Matrix3X reference_nodes;  ///< mm, column per node: the coordinates at time 0
 };
 

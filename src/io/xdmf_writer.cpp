@@ -77,11 +77,12 @@ void append_data_item(std::string& out, const std::string& indent, std::size_t r
 
 std::string make_xdmf(const XdmfPart& part, std::span<const XdmfFrame> frames,
                       const std::string& h5_file) {
-  if (part.nodes_per_cell != 3 && part.nodes_per_cell != 4) {
+  const bool mixed = part.mixed_connectivity_size > 0;
+  if (!mixed && part.nodes_per_cell != 3 && part.nodes_per_cell != 4) {
     throw std::invalid_argument("XDMF part '" + part.name + "': nodes per cell must be 3 or 4");
   }
   const std::string name = escape_xml(part.name);
-  const char* topology = part.nodes_per_cell == 4 ? "Quadrilateral" : "Triangle";
+  const char* topology = mixed ? "Mixed" : part.nodes_per_cell == 4 ? "Quadrilateral" : "Triangle";
   std::string out;
   out += "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n";
   out += "<!-- sheetform results of part '" + name + "': " + std::to_string(frames.size()) +
@@ -96,8 +97,14 @@ std::string make_xdmf(const XdmfPart& part, std::span<const XdmfFrame> frames,
     out += "        <Time Value=\"" + format_double(frame.time) + "\"/>\n";
     out += "        <Topology TopologyType=\"" + std::string(topology) + "\" NumberOfElements=\"" +
            std::to_string(part.cell_count) + "\">\n";
-    append_data_item(out, "          ", part.cell_count, part.nodes_per_cell, true, h5_file,
-                     part.connectivity_dataset);
+    if (mixed) {
+      out += "          <DataItem Dimensions=\"" + std::to_string(part.mixed_connectivity_size) +
+             "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" +
+             escape_xml(h5_file + ":" + part.connectivity_dataset) + "</DataItem>\n";
+    } else {
+      append_data_item(out, "          ", part.cell_count, part.nodes_per_cell, true, h5_file,
+                       part.connectivity_dataset);
+    }
     out += "        </Topology>\n";
     out += "        <Geometry GeometryType=\"XYZ\">\n";
     append_data_item(out, "          ", part.node_count, 3, false, h5_file,

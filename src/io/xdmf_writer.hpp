@@ -33,11 +33,19 @@ struct XdmfFrame {
 /// The static description of a part's grid.
 struct XdmfPart {
   std::string name;        ///< part name, also the collection's name
-  int nodes_per_cell = 4;  ///< 3 (Triangle) or 4 (Quadrilateral)
+  int nodes_per_cell = 4;  ///< 3 (Triangle) or 4 (Quadrilateral); ignored for a mixed part
   std::size_t node_count = 0;
   std::size_t cell_count = 0;
   std::string connectivity_dataset;  ///< HDF5 path of the [cells][nodes_per_cell] int32 array
+  /// A mixed part (TopologyType "Mixed"): the length of the flat int32 connectivity array, in
+  /// which each cell is its XDMF type code (5 Quadrilateral, 4 Triangle) followed by its nodes;
+  /// connectivity_dataset then names that array. 0 for a part of one cell type.
+  std::size_t mixed_connectivity_size = 0;
 };
+
+/// XDMF 3 cell type codes used in a "Mixed" topology's connectivity.
+inline constexpr int kXdmfTriangle = 4;
+inline constexpr int kXdmfQuadrilateral = 5;
 
 /// The XDMF 3 document for `part` with the given frames, in order. `h5_file` is the HDF5 file as
 /// DataItems name it: a name relative to the .xdmf file's folder (ParaView 5.11 resolves it

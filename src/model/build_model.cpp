@@ -32,18 +32,16 @@ Material make_material(const MaterialConfig& m) {
 
 void read_blank(const CaseConfig& config, Model& model) {
   const BlankConfig& bc = config.blank;
-  const GmshModel gmsh_model = load_gmsh_model(bc.mesh.file, bc.mesh.element_size, true);
+  // "quad": a .geo is meshed with every surface recombined (quads wherever gmsh can make them);
+  // "as_meshed": the .geo's own Recombine commands decide. Either way the blank takes quads,
+  // triangles or both (a .msh is read as it is).
+  const GmshModel gmsh_model =
+      load_gmsh_model(bc.mesh.file, bc.mesh.element_size, bc.element == "quad");
   Blank& blank = model.blank;
   blank.mesh = extract_part_mesh(gmsh_model, bc.mesh.group, "blank");
-  if (blank.mesh.triangles.cols() > 0) {
-    throw InputError(fmt::format(
-        "{}: group '{}' holds {} triangles; this release's blank takes quadrilaterals only "
-        "(mesh it with Recombine)",
-        bc.mesh.file.string(), bc.mesh.group, blank.mesh.triangles.cols()));
-  }
-  if (blank.mesh.quads.cols() == 0) {
-    throw InputError(fmt::format("{}: group '{}' holds no quadrilaterals", bc.mesh.file.string(),
-                                 bc.mesh.group));
+  if (blank.mesh.quads.cols() + blank.mesh.triangles.cols() == 0) {
+    throw InputError(fmt::format("{}: group '{}' holds no quadrilaterals or triangles",
+                                 bc.mesh.file.string(), bc.mesh.group));
   }
   std::vector<std::string> names;
   for (const BoundaryConfig& b : config.boundaries) {
@@ -78,6 +76,11 @@ void read_blank(const CaseConfig& config, Model& model) {
       blank.inverse_element_count[blank.mesh.quads(a, e)] += 1.0;
     }
   }
+  for (Eigen::Index e = 0; e < blank.mesh.triangles.cols(); ++e) {
+    for (int a = 0; a < 3; ++a) {
+      blank.inverse_element_count[blank.mesh.triangles(a, e)] += 1.0;
+    }
+  }
   for (Eigen::Index i = 0; i < blank.inverse_element_count.size(); ++i) {
     if (blank.inverse_element_count[i] == 0.0) {
       throw InputError(fmt::format("{}: blank node {} (gmsh node {}) belongs to no element",
@@ -89,6 +92,7 @@ void read_blank(const CaseConfig& config, Model& model) {
 
   const MaterialConfig& material = config.blank_material();
   blank.part.quads = blank.mesh.quads;
+  blank.part.triangles = blank.mesh.triangles;
   blank.part.section = make_gauss_section(bc.integration_points);
   blank.part.material = make_material(material);
   blank.part.density = material.density;
@@ -137,19 +141,29 @@ void set_up_loads(const CaseConfig& config, Model& model) {
   for (const LoadConfig& lc : config.loads) {
     const NodeGroup& group = blank.group(lc.group);
     if (lc.type == LoadConfig::Type::pressure) {
-      // The elements whose four nodes all lie in the group.
+      // The elements (quads, then triangles, numbered as in ShellPart) whose nodes all lie in
+      // the group.
       std::vector<char> in_group(static_cast<std::size_t>(blank.mesh.nodes.cols()), 0);
       for (int node : group.nodes) {
         in_group[static_cast<std::size_t>(node)] = 1;
       }
       PressureLoad pressure{{}, lc.pressure, make_scale_curve(lc.curve)};
-      for (Eigen::Index e = 0; e < blank.mesh.quads.cols(); ++e) {
+      const auto all_in_group = [&](const auto& conn, Eigen::Index e) {
         bool all = true;
-        for (int a = 0; a < 4; ++a) {
-          all = all && in_group[static_cast<std::size_t>(blank.mesh.quads(a, e))];
+        for (Eigen::Index a = 0; a < conn.rows(); ++a) {
+          all = all && in_group[static_cast<std::size_t>(conn(a, e))];
         }
-        if (all) {
+        return all;
+      };
+      const Eigen::Index n_quads = blank.mesh.quads.cols();
+      for (Eigen::Index e = 0; e < n_quads; ++e) {
+        if (all_in_group(blank.mesh.quads, e)) {
           pressure.elements.push_back(static_cast<int>(e));
+        }
+      }
+      for (Eigen::Index k = 0; k < blank.mesh.triangles.cols(); ++k) {
+        if (all_in_group(blank.mesh.triangles, k)) {
+          pressure.elements.push_back(static_cast<int>(n_quads + k));
         }
       }
       if (pressure.elements.empty()) {
@@ -227,8 +241,9 @@ void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& s
           config.file.string(), safety));
     }
     contact.pair.stiffness = compute_penalty_stiffness(
-        model.blank.mesh.nodes, model.blank.mesh.quads, TriConn(3, 0), model.blank.mass,
-        material.young, material.poisson, cc.penalty_scale, model.time_step, contact_cap_factor);
+        model.blank.mesh.nodes, model.blank.mesh.quads, model.blank.mesh.triangles,
+        model.blank.mass, material.young, material.poisson, cc.penalty_scale, model.time_step,
+        contact_cap_factor);
     // Nodes farther than this from the tool cannot touch it within one step.
     contact.pair.cutoff = 2.0 * config.blank.thickness;
     model.contacts.push_back(std::move(contact));
@@ -269,9 +284,8 @@ Model build_model(const CaseConfig& config) {
   read_blank(config, model);
   read_tools(config, model);
   apply_boundaries(config, model);
-  const ShellState state =
-      make_shell_state(static_cast<int>(model.blank.mesh.quads.cols()),
-                       config.blank.integration_points, config.blank.thickness);
+  const ShellState state = make_shell_state(
+      element_count(model.blank.part), config.blank.integration_points, config.blank.thickness);
   set_mass_and_time_step(config, model, state);
   set_up_contacts(config, model, state);
   set_end_time(config, model);

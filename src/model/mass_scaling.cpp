@@ -31,7 +31,8 @@ TimeStepCheck scale_mass_to_time_step(const ShellPart& part, const Matrix3X& x,
   const double target = scaling.target_dt;
   const double trigger = target * (1.0 - kMassScalingTolerance);
   check.dt = std::numeric_limits<double>::infinity();
-  const int n_el = static_cast<int>(part.quads.cols());
+  const int n_el = element_count(part);
+  const int n_quads = static_cast<int>(part.quads.cols());
   for (int e = 0; e < n_el; ++e) {
     const auto ei = static_cast<std::size_t>(e);
     const double physical_dt = scaling.safety * scaling.element_dt[ei];
@@ -41,10 +42,13 @@ TimeStepCheck scale_mass_to_time_step(const ShellPart& part, const Matrix3X& x,
       // dt_e ~ 1 / sqrt(rho): this factor brings the element's step to the target.
       const double ratio = target / physical_dt;
       const double new_factor = ratio * ratio;
-      const double node_mass = 0.25 * (new_factor - factor) * scaling.element_mass[ei];
+      // Shared equally by the element's nodes, as the lumped mass (4 for a quad, 3 for a
+      // triangle).
+      const int n_nodes = e < n_quads ? 4 : 3;
+      const double node_mass = (new_factor - factor) * scaling.element_mass[ei] / n_nodes;
       const double node_inertia = scaling.inertia_factor[ei] * node_mass;
-      for (int a = 0; a < 4; ++a) {
-        const int node = part.quads(a, e);
+      for (int a = 0; a < n_nodes; ++a) {
+        const int node = e < n_quads ? part.quads(a, e) : part.triangles(a, e - n_quads);
         nodal_mass[node] += node_mass;
         rotational_inertia[node] += node_inertia;
       }

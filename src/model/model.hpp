@@ -42,8 +42,8 @@ struct NodalLoad {
 
 /// A pressure on the top face of a set of elements, following the deforming surface.
 struct PressureLoad {
-  std::vector<int> elements;
-  double pressure = 0.0;  ///< MPa
+  std::vector<int> elements;  ///< numbered as in ShellPart: quads, then triangles
+  double pressure = 0.0;      ///< MPa
   LoadCurve scale;
 };
 

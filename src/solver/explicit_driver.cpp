@@ -84,16 +84,29 @@ void compute_external_forces(const Model& model, SolutionState& s) {
     }
   }
   const QuadConn& quads = model.blank.part.quads;
+  const TriConn& triangles = model.blank.part.triangles;
+  const Eigen::Index n_quads = quads.cols();
   for (const PressureLoad& load : loads.pressures) {
     const double p = load.scale.value(s.time) * load.pressure;
     for (int e : load.elements) {
-      // Vector area of the quad, (x3 - x1) x (x4 - x2) / 2, shared equally by its nodes; the
-      // pressure on the top face pushes along -normal.
-      const Vec3 area = 0.5 * (s.x.col(quads(2, e)) - s.x.col(quads(0, e)))
-                                  .cross(s.x.col(quads(3, e)) - s.x.col(quads(1, e)));
-      const Vec3 f = (-0.25 * p) * area;
-      for (int a = 0; a < 4; ++a) {
-        s.f_ext.col(quads(a, e)) += f;
+      // Vector area of the element, shared equally by its nodes; the pressure on the top face
+      // pushes along -normal. Quad: (x3 - x1) x (x4 - x2) / 2; triangle: (x2 - x1) x (x3 - x1) / 2.
+      if (e < n_quads) {
+        const Vec3 area = 0.5 * (s.x.col(quads(2, e)) - s.x.col(quads(0, e)))
+                                    .cross(s.x.col(quads(3, e)) - s.x.col(quads(1, e)));
+        const Vec3 f = (-0.25 * p) * area;
+        for (int a = 0; a < 4; ++a) {
+          s.f_ext.col(quads(a, e)) += f;
+        }
+      } else {
+        const Eigen::Index k = e - n_quads;
+        const Vec3 x1 = s.x.col(triangles(0, k));
+        const Vec3 area =
+            0.5 * (s.x.col(triangles(1, k)) - x1).cross(s.x.col(triangles(2, k)) - x1);
+        const Vec3 f = (-p / 3.0) * area;
+        for (int a = 0; a < 3; ++a) {
+          s.f_ext.col(triangles(a, k)) += f;
+        }
       }
     }
   }
@@ -185,8 +198,8 @@ SolutionState make_initial_state(const Model& model) {
     s.mass_before = model.blank.mass;
     s.inertia_before = model.blank.rotational_inertia;
   }
-  s.shell = make_shell_state(static_cast<int>(model.blank.part.quads.cols()),
-                             model.config.blank.integration_points, model.config.blank.thickness);
+  s.shell = make_shell_state(element_count(model.blank.part), model.config.blank.integration_points,
+                             model.config.blank.thickness);
   s.tools.resize(model.tools.size());
   for (const InitialVelocityConfig& iv : model.config.initial_velocities) {
     const Vec3 velocity(iv.velocity[0], iv.velocity[1], iv.velocity[2]);
@@ -255,9 +268,16 @@ ShellForceResult compute_forces(Model& model, SolutionState& s, double dt) {
   // Half thickness per node: the mean over the elements around it.
   s.half_thickness.setZero();
   const QuadConn& quads = model.blank.part.quads;
+  const TriConn& triangles = model.blank.part.triangles;
   for (Eigen::Index e = 0; e < quads.cols(); ++e) {
     for (int a = 0; a < 4; ++a) {
       s.half_thickness[quads(a, e)] += 0.5 * s.shell.thickness[static_cast<std::size_t>(e)];
+    }
+  }
+  for (Eigen::Index k = 0; k < triangles.cols(); ++k) {
+    const double half = 0.5 * s.shell.thickness[static_cast<std::size_t>(quads.cols() + k)];
+    for (int a = 0; a < 3; ++a) {
+      s.half_thickness[triangles(a, k)] += half;
     }
   }
   s.half_thickness.array() *= model.blank.inverse_element_count.array();

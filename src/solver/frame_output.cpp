@@ -33,8 +33,16 @@ FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& direct
   std::vector<PartTopology> parts;
   PartTopology blank;
   blank.name = "blank";
-  blank.nodes_per_cell = 4;
-  blank.cells = model.blank.mesh.quads;
+  // Cells numbered as the shell elements: quads, then triangles (one XDMF "Mixed" topology when
+  // the blank holds both).
+  if (model.blank.part.quads.cols() > 0) {
+    blank.nodes_per_cell = 4;
+    blank.cells = model.blank.part.quads;
+    blank.triangles = model.blank.part.triangles;
+  } else {
+    blank.nodes_per_cell = 3;
+    blank.cells = model.blank.part.triangles;
+  }
   blank.reference_nodes = model.blank.mesh.nodes;
   parts.push_back(std::move(blank));
   for (const Tool& t : model.tools) {
@@ -53,7 +61,7 @@ FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& direct
   writer_->write_run_info("git_hash", build_info::git_hash);
   writer_->write_run_info("build", std::string(build_info::build_type) + ", " +
                                        build_info::compiler + ", flags: " + build_info::cxx_flags);
-  const Eigen::Index n_elements = model.blank.mesh.quads.cols();
+  const Eigen::Index n_elements = element_count(model.blank.part);
   displacement_.resize(3, model.blank.mesh.nodes.cols());
   plastic_strain_.resize(n_elements);
   if (model.blank.scaling.enabled()) {

@@ -16,7 +16,7 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
   r.cycles = s.cycle;
   r.end_time = s.time;
   r.wall_seconds = wall_seconds;
-  r.elements = static_cast<int>(model.blank.mesh.quads.cols());
+  r.elements = element_count(model.blank.part);
   r.nodes = static_cast<int>(model.blank.mesh.nodes.cols());
   if (r.cycles > 0 && r.elements > 0) {
     r.ns_per_element_cycle = 1e9 * wall_seconds / (static_cast<double>(r.cycles) * r.elements);

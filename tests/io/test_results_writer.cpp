@@ -600,5 +600,62 @@ TEST(ResultsWriter, ParaViewReadsTheXdmfFiles) {
       << log;
 }
 
+TEST(ResultsWriter, MixedPartHasOneMixedTopologyThatParaViewReads) {
+  // A blank of 1 quad and 2 triangles (a mixed shell part, cells numbered quads first): the
+  // HDF5 file keeps the quads in connectivity and the triangles in triangle_connectivity,
+  // nodes_per_cell = 0 marks the mix, and the .xdmf points to mixed_connectivity, the XDMF 3
+  // "Mixed" array (type code 5 Quadrilateral or 4 Triangle, then the nodes, per cell). ParaView
+  // must read 5 points and 3 cells with a 3-cell field (when installed).
+  const fs::path dir = output_dir("mixed");
+  PartTopology blank;
+  blank.name = "blank";
+  blank.nodes_per_cell = 4;
+  blank.cells = CellMatrix(4, 1);
+  blank.cells << 0, 1, 3, 2;
+  blank.triangles = TriConn(3, 2);
+  blank.triangles.col(0) << 1, 4, 3;
+  blank.triangles.col(1) << 3, 4, 2;
+  blank.reference_nodes = Matrix3X(3, 5);
+  blank.reference_nodes << 0, 1, 0, 1, 2,  //
+      0, 0, 1, 1, 0.5,                     //
+      0, 0, 0, 0, 0;
+  const Eigen::VectorXd thickness = Eigen::Vector3d(1.0, 0.9, 0.8);
+  {
+    ResultsWriter writer(dir, {blank}, {"time"});
+    writer.write_frame(0.5, 3,
+                       {PartFrameView{"blank",
+                                      blank.reference_nodes,
+                                      {{"thickness", FieldCenter::cell, 1, thickness.data()}}}});
+  }
+  h5::File file(dir / "results.h5", h5::FileMode::read_only);
+  EXPECT_EQ(file.read_attribute_int("/parts/blank", "nodes_per_cell"), 0);
+  EXPECT_EQ(file.read_ints("/parts/blank/connectivity"), (std::vector<int>{0, 1, 3, 2}));
+  EXPECT_EQ(file.read_ints("/parts/blank/triangle_connectivity"),
+            (std::vector<int>{1, 4, 3, 3, 4, 2}));
+  EXPECT_EQ(file.read_ints("/parts/blank/mixed_connectivity"),
+            (std::vector<int>{5, 0, 1, 3, 2, 4, 1, 4, 3, 4, 3, 4, 2}));
+  file.close();
+  const std::string text = read_text(dir / "blank.xdmf");
+  EXPECT_NE(text.find(R"(<Topology TopologyType="Mixed" NumberOfElements="3">)"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find(R"(<DataItem Dimensions="13" NumberType="Int" Precision="4" )"
+                      R"(Format="HDF">results.h5:/parts/blank/mixed_connectivity</DataItem>)"),
+            std::string::npos)
+      << text;
+  if (!fs::exists("/usr/bin/pvpython")) {
+    GTEST_SKIP() << "ParaView is not installed (/usr/bin/pvpython missing); CI installs it";
+  }
+  std::string log;
+  EXPECT_EQ(run_check_xdmf(dir / "blank.xdmf",
+                           "--times 0.5 --points 5 --cells 3 --cell-arrays thickness:1", log),
+            0)
+      << log;
+  // The check can fail: a wrong cell count gives a non-zero exit code.
+  EXPECT_NE(run_check_xdmf(dir / "blank.xdmf",
+                           "--times 0.5 --points 5 --cells 2 --cell-arrays thickness:1", log),
+            0)
+      << log;
+}
+
 }  // namespace
 }  // namespace sf

@@ -1,0 +1,179 @@
+#include "element/shell_triangle.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <variant>
+
+#include "core/errors.hpp"
+#include "element/shell_triangle_geometry.hpp"
+
+namespace sf {
+
+namespace {
+
+// Gathers the 3 nodal columns of a triangle from a column-major 3 x n array (no bounds checks).
+inline void gather(const double* a, const int* nodes, Tri3& t) {
+  for (int i = 0; i < 3; ++i) {
+    const double* c = a + 3 * static_cast<std::ptrdiff_t>(nodes[i]);
+    t(0, i) = c[0];
+    t(1, i) = c[1];
+    t(2, i) = c[2];
+  }
+}
+
+std::string name_of(int element, int triangle) {
+  return "shell element " + std::to_string(element) + " (triangle " + std::to_string(triangle) +
+         ")";
+}
+
+// The triangle loop, instantiated once per material type (the variant is visited outside it).
+template <class Law>
+ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Matrix3X& x,
+                                const Matrix3X& v, const Matrix3X& omega, double dt, ShellState& st,
+                                Matrix3X& f_int, Matrix3X& m_int) {
+  const int n_quads = static_cast<int>(part.quads.cols());
+  const int n_tri = static_cast<int>(part.triangles.cols());
+  const int np = part.section.n_points;
+  const double ks_g = 5.0 / 6.0 * 0.5 * law.E / (1.0 + law.nu);  // shear correction factor 5/6
+  std::array<double, 9> half_zeta{};
+  std::array<double, 9> half_weight{};
+  for (int k = 0; k < np; ++k) {
+    half_zeta[k] = 0.5 * part.section.zeta[k];
+    half_weight[k] = 0.5 * part.section.weight[k];
+  }
+  const int* conn = part.triangles.data();
+  const double* xd = x.data();
+  const double* vd = v.data();
+  const double* wd = omega.data();
+  double* fd = f_int.data();
+  double* md = m_int.data();
+  double* sxx = st.sxx.data();
+  double* syy = st.syy.data();
+  double* sxy = st.sxy.data();
+  double* eps = st.eps_p.data();
+  ShellForceResult result;
+
+  for (int k = 0; k < n_tri; ++k) {
+    const int e = n_quads + k;  // index in the state arrays
+    const int* nodes = conn + 3 * static_cast<std::ptrdiff_t>(k);
+    Tri3 xe;
+    Tri3 ve;
+    Tri3 we;
+    gather(xd, nodes, xe);
+    gather(vd, nodes, ve);
+    gather(wd, nodes, we);
+    if (!ve.allFinite() || !we.allFinite()) {
+      throw InstabilityError(name_of(e, k) + ": non-finite nodal velocity or angular velocity");
+    }
+
+    // 1. Velocity strains on the mid-step configuration (exactly zero for a rigid rotation step:
+    //    the central-difference velocity is skew there, and every operator below is exact for
+    //    linear velocity fields and uniform angular velocity).
+    TriangleGeometry gm;
+    const Tri3 xm = xe - (0.5 * dt) * ve;
+    compute_triangle_geometry_or_throw(xm, e, k, "mid-step", gm);
+    const Tri3 vl = gm.frame.transpose() * ve;
+    const Tri3 wl = gm.frame.transpose() * we;
+    // Mindlin, v^ = v^m - z e3 x theta^: eps(z) = eps_m - z kappa (engineering shear), as the quad.
+    const Vec3 d_m(gm.bx.dot(vl.row(0)), gm.by.dot(vl.row(1)),
+                   gm.by.dot(vl.row(0)) + gm.bx.dot(vl.row(1)));
+    const Vec3 d_k(-gm.bx.dot(wl.row(1)), gm.by.dot(wl.row(0)),
+                   gm.bx.dot(wl.row(0)) - gm.by.dot(wl.row(1)));
+    const Vec2 g_s = gm.sw * vl.row(2).transpose() + gm.sx * wl.row(0).transpose() +
+                     gm.sy * wl.row(1).transpose();
+    const Vec3 dt_d_m = dt * d_m;
+    const Vec3 dt_d_k = dt * d_k;
+
+    // 2. Material update through the thickness, resultants N = int s dz, M = -int z s dz.
+    const double t = st.thickness[e];
+    Vec3 n_res = Vec3::Zero();
+    Vec3 m_res = Vec3::Zero();
+    double d_ezz_mean = 0.0;
+    double work = 0.0;
+    const std::size_t base = static_cast<std::size_t>(e) * static_cast<std::size_t>(np);
+    for (int j = 0; j < np; ++j) {
+      const std::size_t i = base + static_cast<std::size_t>(j);
+      const double z = t * half_zeta[j];
+      const double hw = t * half_weight[j];
+      const Vec3 d_eps = dt_d_m - z * dt_d_k;
+      typename Law::State old;
+      old.stress = Vec3(sxx[i], syy[i], sxy[i]);
+      old.eps_p = eps[i];
+      const PlaneStressUpdate up = law.update(old, d_eps);
+      sxx[i] = up.stress(0);
+      syy[i] = up.stress(1);
+      sxy[i] = up.stress(2);
+      eps[i] = up.eps_p;
+      n_res += hw * up.stress;
+      m_res -= (hw * z) * up.stress;
+      d_ezz_mean += half_weight[j] * up.d_ezz;
+      work += hw * 0.5 * (old.stress + up.stress).dot(d_eps);
+    }
+    // Transverse shear: elastic, shear-corrected, constant through the thickness, with the
+    // Lyly-Stenberg-Vihinen factor t^2 / (t^2 + alpha h^2) on the modulus.
+    const double shear_modulus = ks_g * triangle_shear_factor(t, gm.longest_side2);
+    const double sxz_old = st.sxz[e];
+    const double syz_old = st.syz[e];
+    const double sxz_new = sxz_old + shear_modulus * dt * g_s(0);
+    const double syz_new = syz_old + shear_modulus * dt * g_s(1);
+    st.sxz[e] = sxz_new;
+    st.syz[e] = syz_new;
+    const double q_x = t * sxz_new;
+    const double q_y = t * syz_new;
+    work += t * dt * 0.5 * ((sxz_old + sxz_new) * g_s(0) + (syz_old + syz_new) * g_s(1));
+    result.internal_work += gm.area * work;
+    if (!n_res.allFinite() || !m_res.allFinite() || !std::isfinite(q_x + q_y)) {
+      throw InstabilityError(name_of(e, k) + ": non-finite stress");
+    }
+    st.thickness[e] = t * (1.0 + d_ezz_mean);
+
+    // 3. Nodal forces and moments on the end-of-step configuration (the transpose of step 1).
+    TriangleGeometry g;
+    compute_triangle_geometry_or_throw(xe, e, k, "end of step", g);
+    if (!(g.frame.col(2).dot(gm.frame.col(2)) > 0.0)) {
+      throw InstabilityError(name_of(e, k) + ": inverted (the normal flipped within the step)");
+    }
+    const double a = g.area;
+    Tri3 fl;
+    Tri3 ml;
+    fl.row(0) = a * (n_res(0) * g.bx + n_res(2) * g.by);
+    fl.row(1) = a * (n_res(1) * g.by + n_res(2) * g.bx);
+    fl.row(2) = a * (q_x * g.sw.row(0) + q_y * g.sw.row(1));
+    ml.row(0) = a * (m_res(1) * g.by + m_res(2) * g.bx + q_x * g.sx.row(0) + q_y * g.sx.row(1));
+    ml.row(1) = a * (-m_res(0) * g.bx - m_res(2) * g.by + q_x * g.sy.row(0) + q_y * g.sy.row(1));
+    ml.row(2).setZero();
+    const Tri3 fg = g.frame * fl;
+    const Tri3 mg = g.frame * ml;
+    for (int i = 0; i < 3; ++i) {
+      double* fc = fd + 3 * static_cast<std::ptrdiff_t>(nodes[i]);
+      double* mc = md + 3 * static_cast<std::ptrdiff_t>(nodes[i]);
+      fc[0] += fg(0, i);
+      fc[1] += fg(1, i);
+      fc[2] += fg(2, i);
+      mc[0] += mg(0, i);
+      mc[1] += mg(1, i);
+      mc[2] += mg(2, i);
+    }
+  }
+  return result;
+}
+
+}  // namespace
+
+ShellForceResult compute_triangle_internal_forces(const ShellPart& part, const Matrix3X& x,
+                                                  const Matrix3X& v, const Matrix3X& omega,
+                                                  double dt, ShellState& state, Matrix3X& f_int,
+                                                  Matrix3X& m_int) {
+  if (part.triangles.cols() == 0) {
+    return {};
+  }
+  return std::visit(
+      [&](const auto& law) {
+        return compute_forces(part, law, x, v, omega, dt, state, f_int, m_int);
+      },
+      part.material);
+}
+
+}  // namespace sf
