@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <variant>
 
 #include "core/errors.hpp"
@@ -21,6 +22,33 @@ inline void gather(const double* a, const int* nodes, Quad3& q) {
     q(0, i) = c[0];
     q(1, i) = c[1];
     q(2, i) = c[2];
+  }
+}
+
+// Material axes of one element for a law that has them: cos and sin of the material angle and
+// the membrane and curvature strain increments (times dt) in those axes.
+struct MaterialFrame {
+  double c = 1.0;
+  double s = 0.0;
+  Vec3 d_m;
+  Vec3 d_k;
+};
+struct NoMaterialFrame {};
+
+// One point's update: isotropic laws in the element frame; laws with material axes in those axes
+// (state rotated in, stress rotated back out: the stored stress stays in the element frame).
+template <bool kMaterialAxes, class Law, class Frame>
+inline PlaneStressUpdate update_point(const Law& law, const typename Law::State& old,
+                                      const Vec3& d_eps, double z, const Frame& axes) {
+  if constexpr (kMaterialAxes) {
+    typename Law::State old_mat;
+    old_mat.stress = rotate_stress(old.stress, axes.c, axes.s);
+    old_mat.eps_p = old.eps_p;
+    PlaneStressUpdate up = law.update(old_mat, axes.d_m - z * axes.d_k);
+    up.stress = rotate_stress(up.stress, axes.c, -axes.s);
+    return up;
+  } else {
+    return law.update(old, d_eps);
   }
 }
 
@@ -56,6 +84,9 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
   double* sxy = st.sxy.data();
   double* eps = st.eps_p.data();
   double* hg_state = st.hourglass.data();
+  // Material axes (Hill48 only; compile-time): the angle from e1 to the rolling direction.
+  constexpr bool material_axes = kUsesMaterialAxes<Law>;
+  const double* material_angle = part.material_angle.empty() ? nullptr : part.material_angle.data();
   ShellForceResult result;
 
   for (int e = 0; e < n_el; ++e) {
@@ -86,6 +117,21 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     const double g_yz = by.dot(vl.row(2)) - 0.25 * wl.row(0).sum();
     const Vec3 dt_d_m = dt * d_m;
     const Vec3 dt_d_k = dt * d_k;
+    // Laws with material axes: components in the material axes (the element frame turned by
+    // the element's material angle theta); strains are linear in z, so dt d_m and dt d_k are
+    // turned once per element. The stress is stored in the element frame (turned back by -theta).
+    // Isotropic laws get an empty struct here: their loop is the plain one.
+    [[maybe_unused]] std::conditional_t<material_axes, MaterialFrame, NoMaterialFrame> axes;
+    if constexpr (material_axes) {
+      axes.d_m = dt_d_m;
+      axes.d_k = dt_d_k;
+      if (material_angle) {
+        axes.c = std::cos(material_angle[e]);
+        axes.s = std::sin(material_angle[e]);
+        axes.d_m = rotate_strain(dt_d_m, axes.c, axes.s);
+        axes.d_k = rotate_strain(dt_d_k, axes.c, axes.s);
+      }
+    }
 
     // 2. Material update through the thickness, resultants N = int s dz, M = -int z s dz.
     const double t = st.thickness[e];
@@ -103,7 +149,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
       typename Law::State old;
       old.stress = Vec3(sxx[i], syy[i], sxy[i]);
       old.eps_p = eps[i];
-      const PlaneStressUpdate up = law.update(old, d_eps);
+      const PlaneStressUpdate up = update_point<material_axes>(law, old, d_eps, z, axes);
       sxx[i] = up.stress(0);
       syy[i] = up.stress(1);
       sxy[i] = up.stress(2);
@@ -256,7 +302,9 @@ ShellForceResult compute_shell_internal_forces(const ShellPart& part, const Matr
       state.sxx.size() != static_cast<std::size_t>(n_el * part.section.n_points) ||
       state.thickness.size() != static_cast<std::size_t>(n_el) ||
       (part.hourglass_form == HourglassForm::stiffness &&
-       state.hourglass.size() != static_cast<std::size_t>(n_el * kHourglassModes))) {
+       state.hourglass.size() != static_cast<std::size_t>(n_el * kHourglassModes)) ||
+      (!part.material_angle.empty() &&
+       part.material_angle.size() != static_cast<std::size_t>(n_el))) {
     throw std::invalid_argument("compute_shell_internal_forces: inconsistent array sizes");
   }
   return std::visit(
