@@ -13,7 +13,8 @@ namespace {
 
 std::string format_point(const Vec3& p) {
   char buf[96];
-  std::snprintf(buf, sizeof buf, "(%.6g, %.6g, %.6g)", p(0), p(1), p(2));
+  // + 0.0 turns -0 into 0 for the message.
+  std::snprintf(buf, sizeof buf, "(%.6g, %.6g, %.6g)", p(0) + 0.0, p(1) + 0.0, p(2) + 0.0);
   return buf;
 }
 
@@ -40,11 +41,12 @@ std::vector<double> compute_material_angles(const Matrix3X& x, const QuadConn& q
     const double d2 = d.dot(g.frame.col(1));
     const double in_plane = std::hypot(d1, d2);
     if (!(in_plane >= kMinRollingDirectionInPlane)) {
+      char part[64];
+      std::snprintf(part, sizeof part, "%.3g < %.3g", in_plane, kMinRollingDirectionInPlane);
       throw InputError(name + ": the rolling direction " + format_point(d) +
-                       " is (nearly) normal to the element (in-plane part " +
-                       std::to_string(in_plane) + " < " +
-                       std::to_string(kMinRollingDirectionInPlane) + " of its length; normal " +
-                       format_point(g.frame.col(2)) + "); give a direction in the sheet's plane");
+                       " is (nearly) normal to the element (its in-plane part is " + part +
+                       " of its length; element normal " + format_point(g.frame.col(2)) +
+                       "); give a direction in the sheet's plane");
     }
     angle[static_cast<std::size_t>(e)] = std::atan2(d2, d1);
   }
