@@ -55,6 +55,28 @@ fs::path output_directory(const Arguments& args, const sf::CaseConfig& config) {
   return config.file.parent_path() / config.output.directory;
 }
 
+void print_material(const sf::CaseConfig& config) {
+  const sf::MaterialConfig& m = config.blank_material();
+  using Type = sf::MaterialConfig::Type;
+  using Law = sf::HardeningConfig::Law;
+  std::string law = "elastic";
+  if (m.type == Type::hill48) {
+    const auto& d = config.blank.rolling_direction;
+    law = fmt::format("Hill48 (r0 {}, r45 {}, r90 {}; rolling direction ({:.3g}, {:.3g}, {:.3g}))",
+                      m.r0, m.r45, m.r90, d[0], d[1], d[2]);
+  } else if (m.type == Type::von_mises) {
+    law = "von Mises";
+  }
+  if (m.type != Type::elastic) {
+    static constexpr const char* names[] = {"Swift", "linear", "Voce", "tabulated"};
+    law += fmt::format(", {} hardening", names[static_cast<int>(m.hardening.law)]);
+    if (m.hardening.law == Law::tabulated) {
+      law += fmt::format(" ({})", m.hardening.table_file.string());
+    }
+  }
+  sf::log_info("Material    '{}': E = {} MPa, nu = {}, {}\n", m.name, m.young, m.poisson, law);
+}
+
 void print_model(const sf::Model& model) {
   const sf::Blank& blank = model.blank;
   sf::log_info("Case        {}\n", model.config.file.string());
@@ -62,12 +84,16 @@ void print_model(const sf::Model& model) {
     sf::log_info("Title       {}\n", model.config.title);
   }
   sf::log_info("Units       {}\n", model.config.units);
+  const sf::BlankConfig& bc = model.config.blank;
   sf::log_info(
       "Blank       {} nodes, {} quadrilateral shells (Belytschko-Lin-Tsay), {} triangular shells "
-      "(C0, DSG3), t = {} mm, {} thickness points, material '{}'\n",
-      blank.mesh.nodes.cols(), blank.mesh.quads.cols(), blank.mesh.triangles.cols(),
-      model.config.blank.thickness, model.config.blank.integration_points,
-      model.config.blank.material);
+      "(C0, DSG3), t = {} mm, {} {} thickness points, {} hourglass control {}, material '{}'\n",
+      blank.mesh.nodes.cols(), blank.mesh.quads.cols(), blank.mesh.triangles.cols(), bc.thickness,
+      bc.integration_points,
+      bc.integration_rule == sf::BlankConfig::IntegrationRule::lobatto ? "Lobatto" : "Gauss",
+      bc.hourglass_form == sf::BlankConfig::HourglassForm::stiffness ? "stiffness" : "viscous",
+      bc.hourglass_coefficient, bc.material);
+  print_material(model.config);
   sf::log_info(
       "Mass        {:.6e} tonne physical, {:.6e} tonne added by mass scaling ({:.2f} %, "
       "{} elements)\n",

@@ -2,9 +2,11 @@
 // Belytschko-Lin-Tsay shells, t = 1 mm, 5 Gauss points, steel (E 210 GPa, nu 0.3, Swift
 // K 565 MPa, eps0 0.007, n 0.26), under biaxial stretching plus bending. Prints ns per
 // element-cycle of compute_shell_internal_forces for: elastic material, J2 staying elastic, J2 with
-// every point yielding; each with the viscous and the stiffness hourglass form.
+// every point yielding, and the same two for Hill48 (r 1.79/1.51/2.27, material axes at 0.5 rad
+// to e1); each with the viscous and the stiffness hourglass form.
 //
-// Usage: bench_shell_forces [cycles = 200] [case: elastic | j2-elastic | j2-yield | all]
+// Usage: bench_shell_forces [cycles = 200]
+//        [case: elastic | j2-elastic | j2-yield | hill48-elastic | hill48-yield | all]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -12,6 +14,7 @@
 #include <fstream>
 #include <limits>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "element/shell_forces.hpp"
@@ -95,6 +98,9 @@ Figures run_case(const Material& material, HourglassForm form, bool prestrain, i
   part.hourglass_coefficient = 0.1;
   part.hourglass_form = form;
   const int n_el = static_cast<int>(part.quads.cols());
+  if (std::holds_alternative<Hill48PlaneStress>(material)) {
+    part.material_angle.assign(static_cast<std::size_t>(n_el), 0.5);  // rad, RD at 29 deg to e1
+  }
   ShellState st = make_shell_state(n_el, 5, kThick);
   Matrix3X f = Matrix3X::Zero(3, plate.x.cols());
   Matrix3X m = Matrix3X::Zero(3, plate.x.cols());
@@ -144,6 +150,7 @@ int main(int argc, char** argv) {
   const std::string only = argc > 2 ? argv[2] : "all";
   const ElasticPlaneStress elastic{kE, kNu};
   const J2PlaneStress steel{kE, kNu, SwiftHardening{565.0, 0.007, 0.26}};
+  const Hill48PlaneStress hill{kE, kNu, 1.79, 1.51, 2.27, SwiftHardening{565.0, 0.007, 0.26}};
   std::printf(
       "bench_shell_forces: %d x %d BT shells, 5 Gauss points, best of %d batches of %d cycles\n",
       kCells, kCells, kRepeats, cycles);
@@ -158,7 +165,9 @@ int main(int argc, char** argv) {
   };
   const Case cases[] = {{"elastic", "elastic", elastic, false},
                         {"j2-elastic", "J2 Swift, elastic steps", steel, false},
-                        {"j2-yield", "J2 Swift, all yielding", steel, true}};
+                        {"j2-yield", "J2 Swift, all yielding", steel, true},
+                        {"hill48-elastic", "Hill48 Swift, elastic", hill, false},
+                        {"hill48-yield", "Hill48 Swift, all yielding", hill, true}};
   for (const Case& c : cases) {
     if (only != "all" && only != c.key) {
       continue;

@@ -5,10 +5,12 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <variant>
 
 #include "core/errors.hpp"
 #include "element/shell_geometry.hpp"
+#include "element/shell_material_axes.hpp"
 #include "element/shell_triangle.hpp"
 
 namespace sf {
@@ -57,6 +59,9 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
   double* sxy = st.sxy.data();
   double* eps = st.eps_p.data();
   double* hg_state = st.hourglass.data();
+  // Material axes (Hill48 only; compile-time): the angle from e1 to the rolling direction.
+  constexpr bool material_axes = kUsesMaterialAxes<Law>;
+  const double* material_angle = part.material_angle.empty() ? nullptr : part.material_angle.data();
   ShellForceResult result;
 
   for (int e = 0; e < n_el; ++e) {
@@ -87,6 +92,14 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     const double g_yz = by.dot(vl.row(2)) - 0.25 * wl.row(0).sum();
     const Vec3 dt_d_m = dt * d_m;
     const Vec3 dt_d_k = dt * d_k;
+    // Laws with material axes: components in the material axes (the element frame turned by
+    // the element's material angle theta); strains are linear in z, so dt d_m and dt d_k are
+    // turned once per element. The stress is stored in the element frame (turned back by -theta).
+    // Isotropic laws get an empty struct here: their loop is the plain one.
+    [[maybe_unused]] std::conditional_t<material_axes, MaterialFrame, NoMaterialFrame> axes;
+    if constexpr (material_axes) {
+      axes = make_material_frame(dt_d_m, dt_d_k, material_angle, e);
+    }
 
     // 2. Material update through the thickness, resultants N = int s dz, M = -int z s dz.
     const double t = st.thickness[e];
@@ -105,7 +118,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
       typename Law::State old;
       old.stress = Vec3(sxx[i], syy[i], sxy[i]);
       old.eps_p = eps[i];
-      const PlaneStressUpdate up = law.update(old, d_eps);
+      const PlaneStressUpdate up = update_point<material_axes>(law, old, d_eps, z, axes);
       sxx[i] = up.stress(0);
       syy[i] = up.stress(1);
       sxy[i] = up.stress(2);
@@ -260,7 +273,9 @@ ShellForceResult compute_shell_internal_forces(const ShellPart& part, const Matr
       state.sxx.size() != static_cast<std::size_t>(n_el * part.section.n_points) ||
       state.thickness.size() != static_cast<std::size_t>(n_el) ||
       (part.hourglass_form == HourglassForm::stiffness &&
-       state.hourglass.size() != static_cast<std::size_t>(n_el * kHourglassModes))) {
+       state.hourglass.size() != static_cast<std::size_t>(n_el * kHourglassModes)) ||
+      (!part.material_angle.empty() &&
+       part.material_angle.size() != static_cast<std::size_t>(n_el))) {
     throw std::invalid_argument("compute_shell_internal_forces: inconsistent array sizes");
   }
   ShellForceResult result;
@@ -274,6 +289,7 @@ ShellForceResult compute_shell_internal_forces(const ShellPart& part, const Matr
   const ShellForceResult tri =
       compute_triangle_internal_forces(part, x, v, omega, dt, state, f_int, m_int);
   result.internal_work += tri.internal_work;
+  result.plastic_work += tri.plastic_work;
   result.hourglass_power += tri.hourglass_power;
   return result;
 }

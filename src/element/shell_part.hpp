@@ -78,6 +78,11 @@ struct ShellPart {
   /// fraction of the element's membrane / bending stiffness. See docs/element-and-material.md.
   double hourglass_coefficient = 0.1;
   HourglassForm hourglass_form = HourglassForm::viscous;
+  /// rad, one per element: the angle from the element's corotational e1 axis to the rolling
+  /// direction (counter-clockwise about e3), fixed at the start (compute_material_angles). Read
+  /// only by laws with material axes (Hill48): the material axes turn with e1. Empty = 0 for
+  /// every element (the element frame is the material frame).
+  std::vector<double> material_angle;
 };
 
 /// Number of elements of a part: quads plus triangles.

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <type_traits>
 #include <variant>
 
 #include "core/errors.hpp"
+#include "element/shell_material_axes.hpp"
 #include "element/shell_triangle_geometry.hpp"
 
 namespace sf {
@@ -36,6 +38,8 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
   const int n_quads = static_cast<int>(part.quads.cols());
   const int n_tri = static_cast<int>(part.triangles.cols());
   const int np = part.section.n_points;
+  constexpr bool material_axes = kUsesMaterialAxes<Law>;
+  const double* material_angle = part.material_angle.empty() ? nullptr : part.material_angle.data();
   const double ks_g = 5.0 / 6.0 * 0.5 * law.E / (1.0 + law.nu);  // shear correction factor 5/6
   std::array<double, 9> half_zeta{};
   std::array<double, 9> half_weight{};
@@ -85,6 +89,11 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
                      gm.sy * wl.row(1).transpose();
     const Vec3 dt_d_m = dt * d_m;
     const Vec3 dt_d_k = dt * d_k;
+    // Laws with material axes (Hill48): as in the quad loop (shell_forces.cpp).
+    [[maybe_unused]] std::conditional_t<material_axes, MaterialFrame, NoMaterialFrame> axes;
+    if constexpr (material_axes) {
+      axes = make_material_frame(dt_d_m, dt_d_k, material_angle, e);
+    }
 
     // 2. Material update through the thickness, resultants N = int s dz, M = -int z s dz.
     const double t = st.thickness[e];
@@ -92,6 +101,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     Vec3 m_res = Vec3::Zero();
     double d_ezz_mean = 0.0;
     double work = 0.0;
+    double plastic_work = 0.0;
     const std::size_t base = static_cast<std::size_t>(e) * static_cast<std::size_t>(np);
     for (int j = 0; j < np; ++j) {
       const std::size_t i = base + static_cast<std::size_t>(j);
@@ -101,7 +111,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
       typename Law::State old;
       old.stress = Vec3(sxx[i], syy[i], sxy[i]);
       old.eps_p = eps[i];
-      const PlaneStressUpdate up = law.update(old, d_eps);
+      const PlaneStressUpdate up = update_point<material_axes>(law, old, d_eps, z, axes);
       sxx[i] = up.stress(0);
       syy[i] = up.stress(1);
       sxy[i] = up.stress(2);
@@ -110,6 +120,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
       m_res -= (hw * z) * up.stress;
       d_ezz_mean += half_weight[j] * up.d_ezz;
       work += hw * 0.5 * (old.stress + up.stress).dot(d_eps);
+      plastic_work += hw * up.d_plastic_work;
     }
     // Transverse shear: elastic, shear-corrected, constant through the thickness, with the
     // Lyly-Stenberg-Vihinen factor t^2 / (t^2 + alpha h^2) on the modulus.
@@ -124,6 +135,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     const double q_y = t * syz_new;
     work += t * dt * 0.5 * ((sxz_old + sxz_new) * g_s(0) + (syz_old + syz_new) * g_s(1));
     result.internal_work += gm.area * work;
+    result.plastic_work += gm.area * plastic_work;
     if (!n_res.allFinite() || !m_res.allFinite() || !std::isfinite(q_x + q_y)) {
       throw InstabilityError(name_of(e, k) + ": non-finite stress");
     }

@@ -50,42 +50,72 @@ void read_mesh_source(const TomlSection& s, const fs::path& folder, MeshSourceCo
   s.read_number("element_size", mesh.element_size, at_least(0.0, "mm"));
 }
 
-void read_hardening(const TomlSection& s, HardeningConfig& hardening) {
+void read_hardening(const TomlSection& s, const fs::path& folder, HardeningConfig& hardening) {
   using Law = HardeningConfig::Law;
-  s.read_choice("law", hardening.law, {{"swift", Law::swift}, {"linear", Law::linear}});
-  if (hardening.law == Law::swift) {
-    s.check_keys({"law", "K", "eps0", "n"});
-    s.read_number("K", hardening.swift_k, greater_than(0.0, "MPa"), Presence::required);
-    s.read_number("eps0", hardening.swift_eps0, at_least(0.0), Presence::required);
-    s.read_number("n", hardening.swift_n, interval(0.0, false, 1.0, true), Presence::required);
-  } else {
-    s.check_keys({"law", "yield_stress", "modulus"});
-    s.read_number("yield_stress", hardening.yield_stress, greater_than(0.0, "MPa"),
-                  Presence::required);
-    s.read_number("modulus", hardening.modulus, at_least(0.0, "MPa"), Presence::required);
+  s.read_choice("law", hardening.law,
+                {{"swift", Law::swift},
+                 {"linear", Law::linear},
+                 {"voce", Law::voce},
+                 {"tabulated", Law::tabulated}});
+  switch (hardening.law) {
+    case Law::swift:
+      s.check_keys({"law", "K", "eps0", "n"});
+      s.read_number("K", hardening.swift_k, greater_than(0.0, "MPa"), Presence::required);
+      s.read_number("eps0", hardening.swift_eps0, at_least(0.0), Presence::required);
+      s.read_number("n", hardening.swift_n, interval(0.0, false, 1.0, true), Presence::required);
+      return;
+    case Law::linear:
+      s.check_keys({"law", "yield_stress", "modulus"});
+      s.read_number("yield_stress", hardening.yield_stress, greater_than(0.0, "MPa"),
+                    Presence::required);
+      s.read_number("modulus", hardening.modulus, at_least(0.0, "MPa"), Presence::required);
+      return;
+    case Law::voce:
+      s.check_keys({"law", "sigma0", "Q", "b"});
+      s.read_number("sigma0", hardening.voce_sigma0, greater_than(0.0, "MPa"), Presence::required);
+      s.read_number("Q", hardening.voce_q, at_least(0.0, "MPa"), Presence::required);
+      s.read_number("b", hardening.voce_b, greater_than(0.0), Presence::required);
+      return;
+    case Law::tabulated:
+      s.check_keys({"law", "file"});
+      hardening.table_file = read_existing_file(s, "file", folder, {".csv"});
+      return;
   }
 }
 
-void read_material(const TomlSection& s, MaterialConfig& material) {
+void read_material(const TomlSection& s, const fs::path& folder, MaterialConfig& material) {
   using Type = MaterialConfig::Type;
-  s.check_keys({"type", "density", "young", "poisson", "hardening"});
-  s.read_choice("type", material.type,
-                {{"von_mises", Type::von_mises}, {"elastic", Type::elastic}});
+  s.check_keys({"type", "density", "young", "poisson", "hardening", "r0", "r45", "r90"});
+  s.read_choice(
+      "type", material.type,
+      {{"von_mises", Type::von_mises}, {"elastic", Type::elastic}, {"hill48", Type::hill48}});
   s.read_number("density", material.density, greater_than(0.0, "tonne/mm^3"), Presence::required);
   s.read_number("young", material.young, greater_than(0.0, "MPa"), Presence::required);
   s.read_number("poisson", material.poisson, interval(-1.0, true, 0.5, true), Presence::required);
+  if (material.type == Type::hill48) {
+    s.read_number("r0", material.r0, greater_than(0.0), Presence::required);
+    s.read_number("r45", material.r45, greater_than(0.0), Presence::required);
+    s.read_number("r90", material.r90, greater_than(0.0), Presence::required);
+  } else {
+    for (const auto key : {"r0", "r45", "r90"}) {
+      if (s.has(key)) {
+        s.fail_forbidden(key, "Lankford coefficients are for type = \"hill48\"");
+      }
+    }
+  }
   if (material.type == Type::elastic) {
     if (s.has("hardening")) {
       s.fail_forbidden("hardening",
                        "an elastic material has no hardening (remove the table or "
-                       "set type = \"von_mises\")");
+                       "set type = \"von_mises\" or \"hill48\")");
     }
     return;
   }
-  read_hardening(*s.sub_table("hardening", Presence::required), material.hardening);
+  read_hardening(*s.sub_table("hardening", Presence::required), folder, material.hardening);
 }
 
-void read_materials(const TomlSection& top, std::vector<MaterialConfig>& materials) {
+void read_materials(const TomlSection& top, const fs::path& folder,
+                    std::vector<MaterialConfig>& materials) {
   const TomlSection all = *top.sub_table("materials", Presence::required);
   for (const auto& [key, node] : all.table()) {
     const std::string name(key.str());
@@ -97,7 +127,7 @@ void read_materials(const TomlSection& top, std::vector<MaterialConfig>& materia
     }
     MaterialConfig material;
     material.name = name;
-    read_material(TomlSection(*table, path, all.file()), material);
+    read_material(TomlSection(*table, path, all.file()), folder, material);
     materials.push_back(std::move(material));
   }
   if (materials.empty()) {
@@ -108,15 +138,28 @@ void read_materials(const TomlSection& top, std::vector<MaterialConfig>& materia
 void read_blank(const TomlSection& top, const fs::path& folder, const CaseConfig& config,
                 BlankConfig& blank) {
   const TomlSection s = *top.sub_table("blank", Presence::required);
+  using Rule = BlankConfig::IntegrationRule;
+  using Form = BlankConfig::HourglassForm;
   s.check_keys({"mesh", "group", "element_size", "element", "thickness", "integration_points",
-                "material", "hourglass"});
+                "integration_rule", "material", "hourglass", "hourglass_form",
+                "rolling_direction"});
   read_mesh_source(s, folder, blank.mesh);
   s.read_choice<std::string>("element", blank.element,
                              {{"quad", "quad"}, {"as_meshed", "as_meshed"}});
   s.read_number("thickness", blank.thickness, greater_than(0.0, "mm"), Presence::required);
-  s.read_integer("integration_points", blank.integration_points, IntegerRange{.lo = 1, .hi = 9});
+  s.read_choice("integration_rule", blank.integration_rule,
+                {{"gauss", Rule::gauss}, {"lobatto", Rule::lobatto}});
+  if (blank.integration_rule == Rule::lobatto) {
+    s.read_integer("integration_points", blank.integration_points,
+                   IntegerRange{.lo = 2, .hi = 9, .unit = "with integration_rule = \"lobatto\""});
+  } else {
+    s.read_integer("integration_points", blank.integration_points, IntegerRange{.lo = 1, .hi = 9});
+  }
   s.read_string("material", blank.material, Presence::required);
   s.read_number("hourglass", blank.hourglass_coefficient, interval(0.0, false, 0.5, false));
+  s.read_choice("hourglass_form", blank.hourglass_form,
+                {{"viscous", Form::viscous}, {"stiffness", Form::stiffness}});
+  s.read_direction("rolling_direction", blank.rolling_direction);
 
   bool found = false;
   std::string names;
@@ -493,7 +536,7 @@ CaseConfig read_case(const fs::path& case_file) {
                   "load", "initial_velocity", "prescribed_velocity", "control", "output"});
   top.read_string("title", config.title, Presence::optional, true);
   top.read_string("units", config.units);
-  read_materials(top, config.materials);
+  read_materials(top, folder, config.materials);
   read_blank(top, folder, config, config.blank);
   read_tools(top, folder, config.tools);
   read_contacts(top, config, config.contacts);

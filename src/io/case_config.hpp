@@ -19,7 +19,7 @@ struct CurveConfig {
 
 /// Isotropic hardening: flow stress as a function of equivalent plastic strain.
 struct HardeningConfig {
-  enum class Law { swift, linear };
+  enum class Law { swift, linear, voce, tabulated };
   Law law = Law::swift;
   // swift: sigma_y = K * (eps0 + eps_p)^n
   double swift_k = 0.0;     ///< MPa
@@ -28,16 +28,28 @@ struct HardeningConfig {
   // linear: sigma_y = sigma_y0 + H * eps_p
   double yield_stress = 0.0;  ///< MPa
   double modulus = 0.0;       ///< MPa (plastic hardening modulus H)
+  // voce: sigma_y = sigma0 + Q * (1 - exp(-b * eps_p))
+  double voce_sigma0 = 0.0;  ///< MPa, initial yield stress
+  double voce_q = 0.0;       ///< MPa, saturation increase
+  double voce_b = 0.0;       ///< -, saturation rate
+  /// tabulated: a CSV file of (equivalent plastic strain -, true stress MPa) rows, absolute
+  /// (resolved against the case file's folder); read by build_model (read_hardening_csv).
+  std::filesystem::path table_file;
 };
 
 struct MaterialConfig {
-  enum class Type { elastic, von_mises };
+  enum class Type { elastic, von_mises, hill48 };
   std::string name;  ///< the table's key under [materials]
   Type type = Type::von_mises;
   double density = 0.0;       ///< tonne/mm^3
   double young = 0.0;         ///< MPa
   double poisson = 0.0;       ///< -
-  HardeningConfig hardening;  ///< used when type == von_mises
+  HardeningConfig hardening;  ///< used when type is von_mises or hill48
+  // hill48 (required there, not allowed otherwise): Lankford coefficients at 0, 45 and 90 deg to
+  // the rolling direction; the hardening curve is the flow stress along the rolling direction.
+  double r0 = 1.0;   ///< -
+  double r45 = 1.0;  ///< -
+  double r90 = 1.0;  ///< -
 };
 
 /// A mesh source: a .geo file meshed by gmsh, or a ready .msh file.
@@ -48,15 +60,23 @@ struct MeshSourceConfig {
 };
 
 struct BlankConfig {
+  enum class IntegrationRule { gauss, lobatto };
+  enum class HourglassForm { viscous, stiffness };
   MeshSourceConfig mesh{.file = {}, .group = "blank"};  ///< group defaults to "blank"
   /// "quad": a .geo is meshed with every surface recombined into quads (Belytschko-Lin-Tsay);
   /// "as_meshed": the .geo's own Recombine commands decide. Triangles left in the mesh are C0
   /// shell triangles either way; a .msh is read as it is.
   std::string element = "quad";
-  double thickness = 0.0;              ///< mm, initial
-  int integration_points = 5;          ///< through the thickness (Gauss), 1..9
-  std::string material;                ///< name of a [materials.NAME] table
-  double hourglass_coefficient = 0.1;  ///< viscous hourglass coefficient (Flanagan-Belytschko)
+  double thickness = 0.0;      ///< mm, initial
+  int integration_points = 5;  ///< through the thickness: gauss 1..9, lobatto 2..9
+  IntegrationRule integration_rule = IntegrationRule::gauss;  ///< through-thickness rule
+  std::string material;                                       ///< name of a [materials.NAME] table
+  double hourglass_coefficient = 0.1;  ///< -, hourglass coefficient (Flanagan-Belytschko), (0, 0.5]
+  HourglassForm hourglass_form = HourglassForm::viscous;  ///< hourglass control form
+  /// Rolling direction (unit vector, global axes; normalised on read), projected on each element
+  /// at the start to fix its material axes. Used by hill48 only; must not be (near) normal to an
+  /// element (build_model checks).
+  std::array<double, 3> rolling_direction{1.0, 0.0, 0.0};
 };
 
 struct MotionConfig {

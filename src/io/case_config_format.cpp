@@ -84,33 +84,70 @@ void write_blank(TomlWriter& w, const BlankConfig& blank) {
   w.string("element", blank.element);
   w.number("thickness", blank.thickness, "mm");
   w.integer("integration_points", blank.integration_points, "through the thickness");
+  const bool lobatto = blank.integration_rule == BlankConfig::IntegrationRule::lobatto;
+  w.string("integration_rule", lobatto ? "lobatto" : "gauss");
   w.string("material", blank.material);
-  w.number("hourglass", blank.hourglass_coefficient, "viscous hourglass coefficient");
+  w.number("hourglass", blank.hourglass_coefficient, "hourglass coefficient");
+  const bool stiffness = blank.hourglass_form == BlankConfig::HourglassForm::stiffness;
+  w.string("hourglass_form", stiffness ? "stiffness" : "viscous");
+  w.vector("rolling_direction", blank.rolling_direction, "unit vector; used by hill48 only");
+}
+
+std::string_view material_type_name(MaterialConfig::Type type) {
+  switch (type) {
+    case MaterialConfig::Type::elastic:
+      return "elastic";
+    case MaterialConfig::Type::von_mises:
+      return "von_mises";
+    case MaterialConfig::Type::hill48:
+      return "hill48";
+  }
+  return "von_mises";
+}
+
+void write_hardening(TomlWriter& w, const HardeningConfig& h) {
+  switch (h.law) {
+    case HardeningConfig::Law::swift:
+      w.string("law", "swift");
+      w.number("K", h.swift_k, "MPa; sigma_y = K (eps0 + eps_p)^n");
+      w.number("eps0", h.swift_eps0);
+      w.number("n", h.swift_n);
+      return;
+    case HardeningConfig::Law::linear:
+      w.string("law", "linear");
+      w.number("yield_stress", h.yield_stress, "MPa; sigma_y = yield_stress + modulus eps_p");
+      w.number("modulus", h.modulus, "MPa");
+      return;
+    case HardeningConfig::Law::voce:
+      w.string("law", "voce");
+      w.number("sigma0", h.voce_sigma0, "MPa; sigma_y = sigma0 + Q (1 - exp(-b eps_p))");
+      w.number("Q", h.voce_q, "MPa");
+      w.number("b", h.voce_b);
+      return;
+    case HardeningConfig::Law::tabulated:
+      w.string("law", "tabulated");
+      w.string("file", h.table_file.string());
+      return;
+  }
 }
 
 void write_material(TomlWriter& w, const MaterialConfig& material) {
   const std::string table = fmt::format("materials.{}", format_key(material.name));
   w.header(table);
-  const bool elastic = material.type == MaterialConfig::Type::elastic;
-  w.string("type", elastic ? "elastic" : "von_mises");
+  w.string("type", material_type_name(material.type));
   w.number("density", material.density, "tonne/mm^3");
   w.number("young", material.young, "MPa");
   w.number("poisson", material.poisson);
-  if (elastic) {
+  if (material.type == MaterialConfig::Type::hill48) {
+    w.number("r0", material.r0, "Lankford coefficient at 0 deg to the rolling direction");
+    w.number("r45", material.r45);
+    w.number("r90", material.r90);
+  }
+  if (material.type == MaterialConfig::Type::elastic) {
     return;
   }
-  const HardeningConfig& h = material.hardening;
   w.header(table + ".hardening");
-  if (h.law == HardeningConfig::Law::swift) {
-    w.string("law", "swift");
-    w.number("K", h.swift_k, "MPa; sigma_y = K (eps0 + eps_p)^n");
-    w.number("eps0", h.swift_eps0);
-    w.number("n", h.swift_n);
-  } else {
-    w.string("law", "linear");
-    w.number("yield_stress", h.yield_stress, "MPa; sigma_y = yield_stress + modulus eps_p");
-    w.number("modulus", h.modulus, "MPa");
-  }
+  write_hardening(w, material.hardening);
 }
 
 void write_tool(TomlWriter& w, const ToolConfig& tool) {

@@ -242,23 +242,11 @@ PlaneStressUpdate Hill48PlaneStress::update(const State& old, const Vec3& d_stra
 }
 
 Vec3 rotate_strain(const Vec3& e, double angle) {
-  const double c = std::cos(angle);
-  const double s = std::sin(angle);
-  const double cc = c * c;
-  const double ss = s * s;
-  const double cs = c * s;
-  return {cc * e(0) + ss * e(1) + cs * e(2), ss * e(0) + cc * e(1) - cs * e(2),
-          2.0 * cs * (e(1) - e(0)) + (cc - ss) * e(2)};
+  return rotate_strain(e, std::cos(angle), std::sin(angle));
 }
 
 Vec3 rotate_stress(const Vec3& t, double angle) {
-  const double c = std::cos(angle);
-  const double s = std::sin(angle);
-  const double cc = c * c;
-  const double ss = s * s;
-  const double cs = c * s;
-  return {cc * t(0) + ss * t(1) + 2.0 * cs * t(2), ss * t(0) + cc * t(1) - 2.0 * cs * t(2),
-          cs * (t(1) - t(0)) + (cc - ss) * t(2)};
+  return rotate_stress(t, std::cos(angle), std::sin(angle));
 }
 
 double young_modulus(const Material& material) {

@@ -77,7 +77,9 @@ double hill48_equivalent_stress(const Hill48Coefficients& c, const Vec3& stress)
 /// FRAME: stress and strain are in the MATERIAL axes (x = rolling direction, y = transverse
 /// direction). The caller rotates d_strain (engineering shear) into the rolling-direction frame
 /// with rotate_strain and the stress back with rotate_stress; State.stress is stored in material
-/// axes. Used directly (unrotated), the element frame is taken as the material frame.
+/// axes. Used directly (unrotated), the element frame is taken as the material frame. The shell
+/// element does the rotation with ShellPart::material_angle and keeps its stored stress in the
+/// element frame (see kUsesMaterialAxes).
 struct Hill48PlaneStress {
   using State = PlaneStressState;
   double E = 0.0;    ///< Young's modulus, MPa
@@ -95,6 +97,14 @@ struct Hill48PlaneStress {
 /// A shell part's material law, chosen once per part (visit it outside element loops).
 using Material = std::variant<ElasticPlaneStress, J2PlaneStress, Hill48PlaneStress>;
 
+/// True for a law whose update works in the material (rolling-direction) axes, which the element
+/// must rotate into and out of (Hill48); false for isotropic laws, which take the element frame
+/// as it is. A compile-time switch, so isotropic element loops carry no rotation code.
+template <class Law>
+inline constexpr bool kUsesMaterialAxes = false;
+template <>
+inline constexpr bool kUsesMaterialAxes<Hill48PlaneStress> = true;
+
 /// Components of a strain (exx, eyy, gxy; engineering shear) in axes rotated by `angle` (rad,
 /// counter-clockwise about e3) from the current ones: e' = R^T e R, R = [[c, -s], [s, c]].
 /// rotate_strain(rotate_strain(e, a), -a) = e.
@@ -102,6 +112,24 @@ Vec3 rotate_strain(const Vec3& strain, double angle);
 /// Components of a stress (sxx, syy, sxy; tensor shear) in axes rotated by `angle` (rad,
 /// counter-clockwise about e3): s' = R^T s R. The work s . e (Voigt) is invariant.
 Vec3 rotate_stress(const Vec3& stress, double angle);
+
+/// rotate_strain with c = cos(angle), s = sin(angle) already known (no trigonometry; for loops
+/// that rotate many points by one angle).
+inline Vec3 rotate_strain(const Vec3& e, double c, double s) {
+  const double cc = c * c;
+  const double ss = s * s;
+  const double cs = c * s;
+  return {cc * e(0) + ss * e(1) + cs * e(2), ss * e(0) + cc * e(1) - cs * e(2),
+          2.0 * cs * (e(1) - e(0)) + (cc - ss) * e(2)};
+}
+/// rotate_stress with c = cos(angle), s = sin(angle) already known.
+inline Vec3 rotate_stress(const Vec3& t, double c, double s) {
+  const double cc = c * c;
+  const double ss = s * s;
+  const double cs = c * s;
+  return {cc * t(0) + ss * t(1) + 2.0 * cs * t(2), ss * t(0) + cc * t(1) - 2.0 * cs * t(2),
+          cs * (t(1) - t(0)) + (cc - ss) * t(2)};
+}
 
 /// Plane-stress elastic stiffness C (MPa), Voigt with engineering shear.
 Mat3 plane_stress_stiffness(double E, double nu);

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
+#include <variant>
 
 #include "contact/contact_search.hpp"
 #include "core/errors.hpp"
@@ -13,21 +15,51 @@
 namespace sf {
 namespace {
 
-Hardening make_hardening(const HardeningConfig& h) {
+// The hardening law of a material; a tabulated one is read from its CSV file here, and its
+// errors (naming the CSV file and line) are prefixed with the case file and the key.
+Hardening make_hardening(const CaseConfig& config, const MaterialConfig& m) {
+  const HardeningConfig& h = m.hardening;
   switch (h.law) {
     case HardeningConfig::Law::swift:
       return SwiftHardening{h.swift_k, h.swift_eps0, h.swift_n};
     case HardeningConfig::Law::linear:
       return LinearHardening{h.yield_stress, h.modulus};
+    case HardeningConfig::Law::voce:
+      return VoceHardening{h.voce_sigma0, h.voce_q, h.voce_b};
+    case HardeningConfig::Law::tabulated:
+      try {
+        return read_hardening_csv(h.table_file);
+      } catch (const InputError& error) {
+        throw InputError(fmt::format("{}: materials.{}.hardening.file: {}", config.file.string(),
+                                     m.name, error.what()));
+      }
   }
   return LinearHardening{h.yield_stress, h.modulus};
 }
 
-Material make_material(const MaterialConfig& m) {
-  if (m.type == MaterialConfig::Type::elastic) {
-    return ElasticPlaneStress{m.young, m.poisson};
+Material make_material(const CaseConfig& config, const MaterialConfig& m) {
+  switch (m.type) {
+    case MaterialConfig::Type::elastic:
+      return ElasticPlaneStress{m.young, m.poisson};
+    case MaterialConfig::Type::von_mises:
+      return J2PlaneStress{m.young, m.poisson, make_hardening(config, m)};
+    case MaterialConfig::Type::hill48:
+      return Hill48PlaneStress{m.young, m.poisson, m.r0, m.r45, m.r90, make_hardening(config, m)};
   }
-  return J2PlaneStress{m.young, m.poisson, make_hardening(m.hardening)};
+  return ElasticPlaneStress{m.young, m.poisson};
+}
+
+// Material axes of every blank element (laws with material axes only): the angle from each
+// element's e1 to the rolling direction on the initial mesh. Errors name the case file, the key
+// and the element.
+std::vector<double> make_material_angles(const CaseConfig& config, const PartMesh& mesh) {
+  const auto& d = config.blank.rolling_direction;
+  try {
+    return compute_material_angles(mesh.nodes, mesh.quads, mesh.triangles, Vec3(d[0], d[1], d[2]));
+  } catch (const InputError& error) {
+    throw InputError(
+        fmt::format("{}: blank.rolling_direction: {}", config.file.string(), error.what()));
+  }
 }
 
 void read_blank(const CaseConfig& config, Model& model) {
@@ -93,10 +125,22 @@ void read_blank(const CaseConfig& config, Model& model) {
   const MaterialConfig& material = config.blank_material();
   blank.part.quads = blank.mesh.quads;
   blank.part.triangles = blank.mesh.triangles;
-  blank.part.section = make_gauss_section(bc.integration_points);
-  blank.part.material = make_material(material);
+  blank.part.section = make_section(bc.integration_points,
+                                    bc.integration_rule == BlankConfig::IntegrationRule::lobatto
+                                        ? ThroughThicknessRule::lobatto
+                                        : ThroughThicknessRule::gauss);
+  blank.part.material = make_material(config, material);
   blank.part.density = material.density;
   blank.part.hourglass_coefficient = bc.hourglass_coefficient;
+  blank.part.hourglass_form = bc.hourglass_form == BlankConfig::HourglassForm::stiffness
+                                  ? HourglassForm::stiffness
+                                  : HourglassForm::viscous;
+  const bool material_axes =
+      std::visit([](const auto& law) { return kUsesMaterialAxes<std::decay_t<decltype(law)>>; },
+                 blank.part.material);
+  if (material_axes) {
+    blank.part.material_angle = make_material_angles(config, blank.mesh);
+  }
 }
 
 void read_tools(const CaseConfig& config, Model& model) {

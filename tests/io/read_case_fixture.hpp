@@ -1,6 +1,7 @@
 #pragma once
 // Shared by the read_case tests: two case texts (minimal, full), text helpers and a fixture that
-// writes case files into a fresh temporary folder with empty placeholder mesh files.
+// writes case files into a fresh temporary folder with empty placeholder mesh files (and an empty
+// hardening table flow.csv: read_case checks that it exists; build_model reads it).
 #include <fmt/core.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -50,8 +51,11 @@ element_size = 2.5
 element = "quad"
 thickness = 0.81
 integration_points = 7
+integration_rule = "lobatto"
 material = "aluminium"
 hourglass = 0.05
+hourglass_form = "stiffness"
+rolling_direction = [1, 1, 0]
 
 [materials.aluminium]
 type = "von_mises"
@@ -68,6 +72,28 @@ type = "elastic"
 density = 7.8e-9
 young = 210000.0
 poisson = 0.3
+
+[materials.alu_hill]
+type = "hill48"
+density = 2.7e-9
+young = 70500
+poisson = 0.34
+r0 = 0.71
+r45 = 0.58
+r90 = 0.7
+[materials.alu_hill.hardening]
+law = "tabulated"
+file = "data/../flow.csv"
+
+[materials.steel_voce]
+density = 7.85e-9
+young = 206000.0
+poisson = 0.29
+[materials.steel_voce.hardening]
+law = "voce"
+sigma0 = 180.0
+Q = 250
+b = 12.5
 
 [[tools]]
 name = "die"
@@ -178,7 +204,7 @@ class ReadCase : public ::testing::Test {
            fmt::format("sf_test_read_case_{}_{}", static_cast<long>(::getpid()), info->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
-    for (const char* mesh : {"blank.geo", "punch.geo", "die.msh", "holder.geo"}) {
+    for (const char* mesh : {"blank.geo", "punch.geo", "die.msh", "holder.geo", "flow.csv"}) {
       std::ofstream(dir_ / mesh) << "";
     }
   }

@@ -29,8 +29,11 @@ TEST_F(ReadCase, MinimalCaseGetsEveryDocumentedDefault) {
   EXPECT_EQ(c.blank.element, "quad");
   EXPECT_EQ(c.blank.thickness, 0.81);
   EXPECT_EQ(c.blank.integration_points, 5);
+  EXPECT_EQ(c.blank.integration_rule, sf::BlankConfig::IntegrationRule::gauss);
   EXPECT_EQ(c.blank.material, "steel");
   EXPECT_EQ(c.blank.hourglass_coefficient, 0.1);
+  EXPECT_EQ(c.blank.hourglass_form, sf::BlankConfig::HourglassForm::viscous);
+  EXPECT_EQ(c.blank.rolling_direction, (std::array<double, 3>{1.0, 0.0, 0.0}));
 
   ASSERT_EQ(c.materials.size(), 1u);
   const sf::MaterialConfig& m = c.materials[0];
@@ -76,10 +79,16 @@ TEST_F(ReadCase, FullCaseReadsEveryValue) {
   EXPECT_EQ(c.blank.mesh.element_size, 2.5);
   EXPECT_EQ(c.blank.thickness, 0.81);
   EXPECT_EQ(c.blank.integration_points, 7);
+  EXPECT_EQ(c.blank.integration_rule, sf::BlankConfig::IntegrationRule::lobatto);
   EXPECT_EQ(c.blank.material, "aluminium");
   EXPECT_EQ(c.blank.hourglass_coefficient, 0.05);
+  EXPECT_EQ(c.blank.hourglass_form, sf::BlankConfig::HourglassForm::stiffness);
+  // [1, 1, 0] normalised: 1/sqrt(2) to round-off (1e-15).
+  EXPECT_NEAR(c.blank.rolling_direction[0], std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(c.blank.rolling_direction[1], std::sqrt(0.5), 1e-15);
+  EXPECT_EQ(c.blank.rolling_direction[2], 0.0);
 
-  ASSERT_EQ(c.materials.size(), 2u);
+  ASSERT_EQ(c.materials.size(), 4u);
   const sf::MaterialConfig& al = c.blank_material();
   EXPECT_EQ(al.name, "aluminium");
   EXPECT_EQ(al.type, sf::MaterialConfig::Type::von_mises);
@@ -89,10 +98,36 @@ TEST_F(ReadCase, FullCaseReadsEveryValue) {
   EXPECT_EQ(al.hardening.law, sf::HardeningConfig::Law::linear);
   EXPECT_EQ(al.hardening.yield_stress, 150.0);
   EXPECT_EQ(al.hardening.modulus, 300.0);
-  const sf::MaterialConfig& steel = c.materials[al.name == c.materials[0].name ? 1 : 0];
-  EXPECT_EQ(steel.name, "rigid_steel");
-  EXPECT_EQ(steel.type, sf::MaterialConfig::Type::elastic);
-  EXPECT_EQ(steel.young, 210000.0);
+  const auto find = [&](const std::string& name) -> const sf::MaterialConfig* {
+    for (const auto& m : c.materials) {
+      if (m.name == name) {
+        return &m;
+      }
+    }
+    return nullptr;
+  };
+  const sf::MaterialConfig* steel = find("rigid_steel");
+  ASSERT_NE(steel, nullptr);
+  EXPECT_EQ(steel->type, sf::MaterialConfig::Type::elastic);
+  EXPECT_EQ(steel->young, 210000.0);
+  const sf::MaterialConfig* hill = find("alu_hill");
+  ASSERT_NE(hill, nullptr);
+  EXPECT_EQ(hill->type, sf::MaterialConfig::Type::hill48);
+  EXPECT_EQ(hill->young, 70500.0);
+  EXPECT_EQ(hill->poisson, 0.34);
+  EXPECT_EQ(hill->r0, 0.71);
+  EXPECT_EQ(hill->r45, 0.58);
+  EXPECT_EQ(hill->r90, 0.7);
+  EXPECT_EQ(hill->hardening.law, sf::HardeningConfig::Law::tabulated);
+  EXPECT_EQ(hill->hardening.table_file, dir_ / "flow.csv");  // relative to the case, normalised
+  const sf::MaterialConfig* voce = find("steel_voce");
+  ASSERT_NE(voce, nullptr);
+  EXPECT_EQ(voce->type, sf::MaterialConfig::Type::von_mises);
+  EXPECT_EQ(voce->r0, 1.0);  // unused default
+  EXPECT_EQ(voce->hardening.law, sf::HardeningConfig::Law::voce);
+  EXPECT_EQ(voce->hardening.voce_sigma0, 180.0);
+  EXPECT_EQ(voce->hardening.voce_q, 250.0);
+  EXPECT_EQ(voce->hardening.voce_b, 12.5);
 
   ASSERT_EQ(c.tools.size(), 3u);
   const sf::ToolConfig& die = c.tools[0];
@@ -367,8 +402,11 @@ void expect_same_case(const sf::CaseConfig& a, const sf::CaseConfig& b) {
   EXPECT_EQ(a.blank.element, b.blank.element);
   EXPECT_EQ(a.blank.thickness, b.blank.thickness);
   EXPECT_EQ(a.blank.integration_points, b.blank.integration_points);
+  EXPECT_EQ(a.blank.integration_rule, b.blank.integration_rule);
   EXPECT_EQ(a.blank.material, b.blank.material);
   EXPECT_EQ(a.blank.hourglass_coefficient, b.blank.hourglass_coefficient);
+  EXPECT_EQ(a.blank.hourglass_form, b.blank.hourglass_form);
+  EXPECT_EQ(a.blank.rolling_direction, b.blank.rolling_direction);  // bit for bit
   ASSERT_EQ(a.materials.size(), b.materials.size());
   for (std::size_t i = 0; i < a.materials.size(); ++i) {
     const auto &x = a.materials[i], &y = b.materials[i];
@@ -383,6 +421,13 @@ void expect_same_case(const sf::CaseConfig& a, const sf::CaseConfig& b) {
     EXPECT_EQ(x.hardening.swift_n, y.hardening.swift_n);
     EXPECT_EQ(x.hardening.yield_stress, y.hardening.yield_stress);
     EXPECT_EQ(x.hardening.modulus, y.hardening.modulus);
+    EXPECT_EQ(x.hardening.voce_sigma0, y.hardening.voce_sigma0);
+    EXPECT_EQ(x.hardening.voce_q, y.hardening.voce_q);
+    EXPECT_EQ(x.hardening.voce_b, y.hardening.voce_b);
+    EXPECT_EQ(x.hardening.table_file, y.hardening.table_file);
+    EXPECT_EQ(x.r0, y.r0);
+    EXPECT_EQ(x.r45, y.r45);
+    EXPECT_EQ(x.r90, y.r90);
   }
   ASSERT_EQ(a.tools.size(), b.tools.size());
   for (std::size_t i = 0; i < a.tools.size(); ++i) {
@@ -440,6 +485,9 @@ TEST_F(ReadCase, ResolvedCaseReadsBackToTheSameCase) {
                     fmt::format("\nintegration_points = {} ", original.blank.integration_points));
     expect_contains(resolved,
                     fmt::format("\noutput_frames = {}\n", original.control.output_frames));
+    expect_contains(resolved, "\nintegration_rule = \"");  // the new keys are written too
+    expect_contains(resolved, "\nhourglass_form = \"");
+    expect_contains(resolved, "\nrolling_direction = [");
     // Written in another folder: every path in it must already be absolute.
     const sf::CaseConfig again = sf::read_case(write_case(resolved, "results/resolved.toml"));
     expect_same_case(original, again);

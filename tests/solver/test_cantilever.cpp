@@ -167,7 +167,8 @@ TEST_P(EndMomentRollUp, TipFollowsTheCircularElastica) {
   const double theta = GetParam() * std::numbers::pi;      // rad
   const double moment = theta * young * inertia / length;  // N mm, in total on the 2 tip nodes
   sf::Model model =
-      build_strip_case("cantilever_roll_up", ramped_load("moment", 0.0, -0.5 * moment, 0.0, R"(
+      build_strip_case("cantilever_roll_up_" + std::to_string(static_cast<int>(GetParam())),
+                       ramped_load("moment", 0.0, -0.5 * moment, 0.0, R"(
 [[boundary]]
 group = "blank"
 type = "symmetry"
@@ -248,8 +249,10 @@ TEST_P(TipForceLargeDeflection, TipMatchesTheExactElastica) {
   const double total = c.alpha * young * inertia / (length * length);  // N
   // The tip edge has (elements across + 1) nodes; the force is split evenly among them.
   const double nodes_across = c.mesh == "strip.geo" ? 2.0 : 4.0;
-  sf::Model model = build_strip_case("cantilever_tip_force",
-                                     ramped_load("force", 0.0, 0.0, total / nodes_across), c.mesh);
+  sf::Model model =
+      build_strip_case("cantilever_tip_force_" + std::to_string(static_cast<int>(c.alpha)) +
+                           (c.stiffness_hg ? "_stiffness" : ""),
+                       ramped_load("force", 0.0, 0.0, total / nodes_across), c.mesh);
   if (c.stiffness_hg) {
     model.blank.part.hourglass_form = sf::HourglassForm::stiffness;
   }
