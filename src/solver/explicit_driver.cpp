@@ -391,6 +391,7 @@ RunSummary run_explicit(Model& model, const RunOptions& options) {
   double next_frame_time = frame_interval;
   const double initial_dt = model.time_step;
   double dt_previous = 0.0;
+  double last_frame_time = 0.0;  // s, of the last frame written (the first is at t = 0)
   Progress progress(model, control.progress_interval);
   // Added mass above this share of the physical mass is worth a warning (once).
   constexpr double warn_fraction = 0.05;
@@ -437,17 +438,33 @@ RunSummary run_explicit(Model& model, const RunOptions& options) {
       if (frame_due) {
         if (output) {
           output->write_frame(model, s);
+          last_frame_time = s.time;
         }
         next_frame_time += frame_interval;
       }
       progress.report(model, s, false);
     }
-  } catch (const InstabilityError&) {
+  } catch (const InstabilityError& error) {
+    // Keep what a user needs to see the failure: the history up to the stop and, when the nodes
+    // still have finite positions, one last frame of the state at the stop (for a NaN, the state
+    // of the last completed cycle; for an inverted element or an energy blow-up, the offending
+    // configuration). The frames written before stay as they are.
+    std::string last_frame;
     if (output) {
       output->append_history(model, s);
+      if (s.x.allFinite() && s.time > last_frame_time) {
+        try {
+          output->write_frame(model, s);
+          last_frame = fmt::format(
+              "; the last frame in the results (t = {:.6e} s) is the state at the stop", s.time);
+        } catch (const std::exception& write_error) {
+          last_frame =
+              fmt::format("; the state at the stop could not be written ({})", write_error.what());
+        }
+      }
       output->flush();
     }
-    throw;
+    throw InstabilityError(error.what() + last_frame);
   }
   if (output) {
     output->append_history(model, s);

@@ -41,11 +41,21 @@ expect "missing group" 2 "no_such_group" -- "$sheetform" check "$work/case/cli_t
 # (A coarse 5 mm blank keeps it quick: its balance error passes +0.1 % near 9.6 mm of stroke.)
 sed -e 's/^output_frames = 30/output_frames = 30\nenergy_blowup_ratio = 1.001/' \
     -e 's/^element_size = 2.5 .*/element_size = 5.0/' "$demo" > "$work/case/cli_test_unstable.toml"
-expect "unstable run" 3 "unstable: energy blow-up at t = .* cycle [0-9]+" -- "$sheetform" run "$work/case/cli_test_unstable.toml" -o "$work/unstable" --stroke 12
+"$sheetform" run "$work/case/cli_test_unstable.toml" -o "$work/unstable" --stroke 12 > "$work/unstable.log" 2>&1
+unstable_rc=$?
+expect "unstable run" 3 "unstable: energy blow-up at t = .* cycle [0-9]+.*the last frame in the results \(t = [0-9.e+-]+ s\) is the state at the stop" -- bash -c "cat '$work/unstable.log'; exit $unstable_rc"
 if h5ls "$work/unstable/results.h5/parts/blank/frames" >/dev/null 2>&1 && grep -q "<Time" "$work/unstable/blank.xdmf"; then
   passed=$((passed+1))
 else
   echo "FAIL unstable run: results not readable after the stop"; failures=$((failures+1))
+fi
+# The last frame is the state at the stop: its time is the stop time the message gives.
+stop_time=$(sed -nE 's/.*the last frame in the results \(t = ([0-9.e+-]+) s\).*/\1/p' "$work/unstable.log")
+last_time=$(grep -oE '<Time Value="[^"]+"' "$work/unstable/blank.xdmf" | tail -1 | sed -E 's/.*"([^"]+)"/\1/')
+if [ -n "$stop_time" ] && python3 -c "import sys; a, b = map(float, sys.argv[1:]); sys.exit(0 if abs(a - b) <= 1e-6 * abs(a) else 1)" "$stop_time" "$last_time"; then
+  echo "ok   unstable run: last frame at the stop time ($last_time s)"; passed=$((passed+1))
+else
+  echo "FAIL unstable run: last frame time '$last_time' is not the stop time '$stop_time'"; failures=$((failures+1))
 fi
 
 # mesh writes the parts; a short run writes results, the summary and the resolved case.
