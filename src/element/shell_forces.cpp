@@ -10,7 +10,7 @@
 
 #include "core/errors.hpp"
 #include "element/shell_geometry.hpp"
-#include "element/shell_material_axes.hpp"
+#include "element/shell_section_update.hpp"
 #include "element/shell_triangle.hpp"
 
 namespace sf {
@@ -33,7 +33,6 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
                                 const Matrix3X& v, const Matrix3X& omega, double dt, ShellState& st,
                                 Matrix3X& f_int, Matrix3X& m_int) {
   const int n_el = static_cast<int>(part.quads.cols());
-  const int np = part.section.n_points;
   const double shear_modulus = 0.5 * law.E / (1.0 + law.nu);
   const double ks_g = 5.0 / 6.0 * shear_modulus;  // shear correction factor 5/6
   const double c = plane_stress_wave_speed(law.E, law.nu, part.density);
@@ -41,26 +40,14 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
   const double membrane = law.E / (1.0 - law.nu * law.nu);        // membrane stiffness / t
   const double kappa = part.hourglass_coefficient;
   const bool stiffness_form = part.hourglass_form == HourglassForm::stiffness;
-  // Per-section constants, hoisted: zeta_k / 2 and w_k / 2.
-  std::array<double, 9> half_zeta{};
-  std::array<double, 9> half_weight{};
-  for (int k = 0; k < np; ++k) {
-    half_zeta[k] = 0.5 * part.section.zeta[k];
-    half_weight[k] = 0.5 * part.section.weight[k];
-  }
+  const SectionConstants section = make_section_constants(part.section);
   const int* conn = part.quads.data();
   const double* xd = x.data();
   const double* vd = v.data();
   const double* wd = omega.data();
   double* fd = f_int.data();
   double* md = m_int.data();
-  double* sxx = st.sxx.data();
-  double* syy = st.syy.data();
-  double* sxy = st.sxy.data();
-  double* eps = st.eps_p.data();
   double* hg_state = st.hourglass.data();
-  // Material axes (Hill48 only; compile-time): the angle from e1 to the rolling direction.
-  constexpr bool material_axes = kUsesMaterialAxes<Law>;
   const double* material_angle = part.material_angle.empty() ? nullptr : part.material_angle.data();
   ShellForceResult result;
 
@@ -92,43 +79,15 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     const double g_yz = by.dot(vl.row(2)) - 0.25 * wl.row(0).sum();
     const Vec3 dt_d_m = dt * d_m;
     const Vec3 dt_d_k = dt * d_k;
-    // Laws with material axes: components in the material axes (the element frame turned by
-    // the element's material angle theta); strains are linear in z, so dt d_m and dt d_k are
-    // turned once per element. The stress is stored in the element frame (turned back by -theta).
-    // Isotropic laws get an empty struct here: their loop is the plain one.
-    [[maybe_unused]] std::conditional_t<material_axes, MaterialFrame, NoMaterialFrame> axes;
-    if constexpr (material_axes) {
-      axes = make_material_frame(dt_d_m, dt_d_k, material_angle, e);
-    }
 
-    // 2. Material update through the thickness, resultants N = int s dz, M = -int z s dz.
+    // 2. Material update through the thickness (shell_section_update.hpp).
     const double t = st.thickness[e];
-    Vec3 n_res = Vec3::Zero();
-    Vec3 m_res = Vec3::Zero();
-    double d_ezz_mean = 0.0;
-    double work = 0.0;
-    double plastic_work = 0.0;
-    const std::size_t base = static_cast<std::size_t>(e) * static_cast<std::size_t>(np);
-    for (int k = 0; k < np; ++k) {
-      const std::size_t i = base + static_cast<std::size_t>(k);
-      const double z = t * half_zeta[k];
-      const double hw = t * half_weight[k];
-      // dt (d_m - z d_k), as dt d_m - z (dt d_k): equal to round-off.
-      const Vec3 d_eps = dt_d_m - z * dt_d_k;
-      typename Law::State old;
-      old.stress = Vec3(sxx[i], syy[i], sxy[i]);
-      old.eps_p = eps[i];
-      const PlaneStressUpdate up = update_point<material_axes>(law, old, d_eps, z, axes);
-      sxx[i] = up.stress(0);
-      syy[i] = up.stress(1);
-      sxy[i] = up.stress(2);
-      eps[i] = up.eps_p;
-      n_res += hw * up.stress;
-      m_res -= (hw * z) * up.stress;
-      d_ezz_mean += half_weight[k] * up.d_ezz;
-      work += hw * 0.5 * (old.stress + up.stress).dot(d_eps);
-      plastic_work += hw * up.d_plastic_work;
-    }
+    const SectionResult sr = update_section(law, section, e, t, dt_d_m, dt_d_k, material_angle, st);
+    const Vec3& n_res = sr.n;
+    const Vec3& m_res = sr.m;
+    const double d_ezz_mean = sr.d_ezz_mean;
+    double work = sr.work;
+    const double plastic_work = sr.plastic_work;
     // Transverse shear: elastic, shear-corrected, constant through the thickness.
     const double sxz_old = st.sxz[e];
     const double syz_old = st.syz[e];

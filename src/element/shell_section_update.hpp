@@ -1,0 +1,87 @@
+#pragma once
+// The through-thickness material update of one shell element, shared by the quad and the triangle
+// loops: strain increment at each thickness point, the material law, the stress resultants, the
+// thickness strain and the work of the step. Inline: it runs once per element and cycle.
+#include <array>
+#include <cstddef>
+#include <type_traits>
+
+#include "core/types.hpp"
+#include "element/shell_material_axes.hpp"
+#include "element/shell_part.hpp"
+
+namespace sf {
+
+/// Per-section constants, hoisted out of the element loop: zeta_k / 2 and w_k / 2.
+struct SectionConstants {
+  int n_points = 0;
+  std::array<double, 9> half_zeta{};
+  std::array<double, 9> half_weight{};
+};
+
+inline SectionConstants make_section_constants(const ShellSection& section) {
+  SectionConstants c;
+  c.n_points = section.n_points;
+  for (int k = 0; k < section.n_points; ++k) {
+    c.half_zeta[k] = 0.5 * section.zeta[k];
+    c.half_weight[k] = 0.5 * section.weight[k];
+  }
+  return c;
+}
+
+/// What one element's section update returns (per unit mid-surface area).
+struct SectionResult {
+  Vec3 n = Vec3::Zero();      ///< N/mm, membrane resultant N = int s dz
+  Vec3 m = Vec3::Zero();      ///< N, bending resultant M = -int z s dz
+  double d_ezz_mean = 0.0;    ///< -, thickness strain increment averaged over the thickness
+  double work = 0.0;          ///< N/mm, stress work of the step (trapezoidal in the stress)
+  double plastic_work = 0.0;  ///< N/mm, its plastic part
+};
+
+/// Updates the points of element e (state indices e * n_points + k) for the strain increments
+/// dt d_m (membrane) and dt d_k (curvature): d_eps(z) = dt d_m - z dt d_k, z = zeta t / 2, t the
+/// element's thickness (mm). Laws with material axes (Hill48) work in the element's material frame
+/// (material_angle[e], rad, or 0 when material_angle is null); the stored stress stays in the
+/// element frame.
+template <class Law>
+inline SectionResult update_section(const Law& law, const SectionConstants& sc, int e, double t,
+                                    const Vec3& dt_d_m, const Vec3& dt_d_k,
+                                    const double* material_angle, ShellState& st) {
+  constexpr bool material_axes = kUsesMaterialAxes<Law>;
+  // Laws with material axes: components in the material axes (the element frame turned by the
+  // element's material angle theta); strains are linear in z, so dt d_m and dt d_k are turned
+  // once per element. Isotropic laws get an empty struct: their loop is the plain one.
+  [[maybe_unused]] std::conditional_t<material_axes, MaterialFrame, NoMaterialFrame> axes;
+  if constexpr (material_axes) {
+    axes = make_material_frame(dt_d_m, dt_d_k, material_angle, e);
+  }
+  double* sxx = st.sxx.data();
+  double* syy = st.syy.data();
+  double* sxy = st.sxy.data();
+  double* eps = st.eps_p.data();
+  SectionResult r;
+  const std::size_t base = static_cast<std::size_t>(e) * static_cast<std::size_t>(sc.n_points);
+  for (int k = 0; k < sc.n_points; ++k) {
+    const std::size_t i = base + static_cast<std::size_t>(k);
+    const double z = t * sc.half_zeta[k];
+    const double hw = t * sc.half_weight[k];
+    // dt (d_m - z d_k), as dt d_m - z (dt d_k): equal to round-off.
+    const Vec3 d_eps = dt_d_m - z * dt_d_k;
+    typename Law::State old;
+    old.stress = Vec3(sxx[i], syy[i], sxy[i]);
+    old.eps_p = eps[i];
+    const PlaneStressUpdate up = update_point<material_axes>(law, old, d_eps, z, axes);
+    sxx[i] = up.stress(0);
+    syy[i] = up.stress(1);
+    sxy[i] = up.stress(2);
+    eps[i] = up.eps_p;
+    r.n += hw * up.stress;
+    r.m -= (hw * z) * up.stress;
+    r.d_ezz_mean += sc.half_weight[k] * up.d_ezz;
+    r.work += hw * 0.5 * (old.stress + up.stress).dot(d_eps);
+    r.plastic_work += hw * up.d_plastic_work;
+  }
+  return r;
+}
+
+}  // namespace sf
