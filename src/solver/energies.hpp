@@ -4,7 +4,9 @@
 namespace sf {
 
 struct Energies {
-  double kinetic = 0.0;        ///< translational + rotational, at the half step
+  /// Translational + rotational, at the step end t(n+1): from the whole-step velocity v(n+1) =
+  /// v(n+1/2) + dt/2 a(n+1) (docs/time-integration.md)
+  double kinetic = 0.0;
   double internal = 0.0;       ///< work of the element forces, hourglass work excluded
   double hourglass = 0.0;      ///< work of the hourglass forces
   double contact = 0.0;        ///< elastic energy stored in the penalty springs, 1/2 k g^2
@@ -12,8 +14,10 @@ struct Energies {
   double external_work = 0.0;  ///< work done on the blank by the tools, loads and prescribed motion
   double initial_kinetic = 0.0;  ///< kinetic energy of the initial velocities
   /// Kinetic energy taken out by mass added during the run: mass is added at fixed nodal momentum,
-  /// which lowers the velocity by m_old / m_new; per node (1 - m_old / m_new) v . (m_old v + dt F)
-  /// / 2 (F the net force), the central-difference form of the drop (see docs/time-integration.md).
+  /// which lowers the velocity by r = m_old / m_new; per node (1 - r) m_old (|v(n)|^2 - |dt/2
+  /// a(n)|^2) / 2 (v(n) the whole-step velocity, a(n) the acceleration at the old mass, dt the
+  /// coming step): the drop of the kinetic energy less that of the half-kick energy, the
+  /// central-difference form of the drop (see docs/time-integration.md).
   double mass_scaling = 0.0;
   /// Plastic dissipation at the integration points. Informational: it is PART of `internal`
   /// (internal = elastic energy + plastic work), not a term of its own in the balance.

@@ -29,8 +29,8 @@ struct SolutionState {
   double max_stable_dt = 0.0;  ///< s, largest stable_dt of the run so far
   int min_dt_element = -1;     ///< the element limiting min_stable_dt
   Matrix3X x;                  ///< mm, current coordinates
-  Matrix3X v;                  ///< mm/s, at the half step
-  Matrix3X omega;              ///< rad/s, at the half step
+  Matrix3X v;                  ///< mm/s, at the half step (v(0) before the first step)
+  Matrix3X omega;              ///< rad/s, at the half step (likewise)
   Matrix3X f_int;              ///< N, internal forces (resisting)
   Matrix3X m_int;              ///< N mm, internal moments (resisting)
   Matrix3X f_contact;          ///< N, contact forces on the blank nodes
@@ -43,6 +43,9 @@ struct SolutionState {
   VectorX half_thickness;      ///< mm per node, the contact offset
   VectorX mass_before;         ///< tonne per node, scratch: the masses before this cycle's scaling
   VectorX inertia_before;      ///< tonne mm^2 per node, likewise
+  /// Per node, bits 0-2: the translation components a prescribed velocity holds (set by
+  /// make_initial_state; empty means none).
+  std::vector<unsigned char> prescribed_mask;
   ShellState shell;
   std::vector<ToolState> tools;
   Energies energies;

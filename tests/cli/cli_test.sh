@@ -38,7 +38,7 @@ sed 's/^group = "blank"/group = "no_such_group"/' "$demo" > "$work/case/cli_test
 expect "missing group" 2 "no_such_group" -- "$sheetform" check "$work/case/cli_test_group.toml"
 # A strict energy-balance limit (total energy may exceed the external work by 0.1 % only) trips
 # during the run: it stops as unstable (exit 3) with a diagnosis, and the frames so far stay readable.
-# (A coarse 5 mm blank keeps it quick: its balance error passes +0.1 % near 9.6 mm of stroke.)
+# (A coarse 5 mm blank keeps it quick: its balance error passes +0.1 % near 9.5 mm of stroke.)
 sed -e 's/^output_frames = 30/output_frames = 30\nenergy_blowup_ratio = 1.001/' \
     -e 's/^element_size = 2.5 .*/element_size = 5.0/' "$demo" > "$work/case/cli_test_unstable.toml"
 "$sheetform" run "$work/case/cli_test_unstable.toml" -o "$work/unstable" --stroke 12 > "$work/unstable.log" 2>&1

@@ -76,11 +76,15 @@ end_time = )" + std::to_string(0.8 * period) + "\n");
   sf::SolutionState s = sf::make_initial_state(model);
   sf::compute_forces(model, s, 0.0);
   double peak = 0.0, peak_time = 0.0, dt_previous = 0.0;
+  double max_balance_error = 0.0;  // after the first tenth of the period
   const int tip_node = model.blank.group("tip").nodes.front();
   while (s.time < model.end_time) {
     const double dt = sf::compute_time_step(model, s);
     sf::advance_one_step(model, s, dt, dt_previous);
     dt_previous = dt;
+    if (s.time > 0.1 * period) {
+      max_balance_error = std::max(max_balance_error, std::abs(s.energies.balance_error()));
+    }
     const double deflection = -(s.x(2, tip_node) - model.blank.mesh.nodes(2, tip_node));
     if (deflection > peak) {
       peak = deflection;
@@ -92,11 +96,18 @@ end_time = )" + std::to_string(0.8 * period) + "\n");
   EXPECT_NEAR(peak / static_deflection, 1.966, 0.02 * 1.966);
   // The peak comes at 0.535 of the first period (tolerance 3 % of the period).
   EXPECT_NEAR(peak_time / period, 0.535, 0.03);
-  // Undamped elastic run: energy conserved to 1e-3 of the work done.
-  EXPECT_LT(std::abs(s.energies.balance_error()), 1e-3);
+  // Undamped elastic run. With the kinetic energy at the step end the balance is exact up to the
+  // change of the half-kick energy D = dt^2/8 F.M^-1.F (docs/time-integration.md), second order
+  // in dt: measured at most 3.4e-6 of the work after the first tenth of the period and -1.1e-6 at
+  // the end (the kinetic energy at the half step gave 1.1e-3 and 2.3e-4). Before a tenth of the
+  // period the work done is still of the order of D(0) itself, so the relative figure says
+  // nothing there. Tolerance 2e-5: the error is second order, a first-order slip (the half-step
+  // kinetic energy) would break it.
+  EXPECT_LT(max_balance_error, 2e-5);
   RecordProperty("peak_ratio", std::to_string(peak / static_deflection));
   std::printf("peak / static = %.4f (1.966), at t / T1 = %.4f (0.535), energy error %.2e\n",
               peak / static_deflection, peak_time / period, s.energies.balance_error());
+  std::printf("max |balance error| after the first tenth of the period %.3e\n", max_balance_error);
 }
 
 // Steps a model to its end time (the loads' curves ramp and hold; the damping relaxes the motion).

@@ -122,12 +122,14 @@ TEST(Hill48Run, TabulatedHill48StripBuildsAndRunsStably) {
       summary.energies.balance_error(), summary.peak_kinetic_ratio,
       summary.energies.hourglass / summary.energies.internal);
   // Smoke-level bounds, not a verification (the element test does that exactly):
-  // - energy balance within 2 % (the acceptance bound of the demo run test);
+  // - energy balance within 1e-3 (measured 2.6e-4, with the kinetic energy at the half step or at
+  //   the step end alike; the strip is pulled by a prescribed velocity, whose reaction work is
+  //   still counted a half step late: docs/time-integration.md);
   // - plastic flow happened and stays of the order of the imposed strain: the uniform part of the
   //   strip takes about 1.65 % - 0.29 % = 1.4 %; below 5 % means no localisation or blow-up;
   // - the sheet thinned (r45 = 0.58: thickness strain -eps/(1 + r) ~ -0.9 %), and no element
   //   thickened by more than round-off.
-  EXPECT_LT(std::abs(summary.energies.balance_error()), 0.02);
+  EXPECT_LT(std::abs(summary.energies.balance_error()), 1e-3);
   EXPECT_GT(summary.max_plastic_strain, 0.005);
   EXPECT_LT(summary.max_plastic_strain, 0.05);
   EXPECT_LT(summary.min_thickness, 0.995);

@@ -137,10 +137,10 @@ end_time = )" + std::to_string(16.0 * period) +
   std::printf(
       "tip deflection %.6f mm unscaled (%ld cycles), %.6f mm scaled (%ld cycles): "
       "%+.2e relative; cycle ratio %.4f (expected %.4f); beam theory %.6f mm; added mass "
-      "%.2f %% at the end\n",
+      "%.2f %% at the end; energy balance %.2e unscaled, %.2e scaled\n",
       deflection_a, a.cycles, deflection_b, b.cycles, deflection_b / deflection_a - 1.0,
       static_cast<double>(a.cycles) / static_cast<double>(b.cycles), factor, beam,
-      100.0 * b.added_mass_fraction);
+      100.0 * b.added_mass_fraction, a.energies.balance_error(), b.energies.balance_error());
   // Both runs reach the static answer (beam theory within 2 %: 12 one-point elements, coarse at
   // the tip) ...
   EXPECT_NEAR(deflection_a / beam, 1.0, 0.02);
@@ -156,7 +156,12 @@ end_time = )" + std::to_string(16.0 * period) +
   // The added mass reported is the sum of the element mass increases, and what the nodes hold.
   EXPECT_NEAR(b.added_mass / sum_of_element_increases(m), 1.0, 1e-12);
   EXPECT_NEAR((scaled.blank.mass.sum() - scaled.blank.physical_mass) / b.added_mass, 1.0, 1e-9);
-  EXPECT_LT(std::abs(b.energies.balance_error()), 1e-3);
+  // Energy balance at the end: measured 9.0e-11 unscaled and 2.9e-10 scaled (the same with the
+  // kinetic energy at the half step: the strip is at rest by then, so the kinetic and half-kick
+  // energies are gone and what is left is the accounting of the damping work). Bound 1e-6: far
+  // below any first-order accounting slip, with room for that damping residual.
+  EXPECT_LT(std::abs(a.energies.balance_error()), 1e-6);
+  EXPECT_LT(std::abs(b.energies.balance_error()), 1e-6);
 }
 
 TEST(MassScaling, MassAddedDuringTheRunKeepsMomentumAndEnergy) {
@@ -223,17 +228,14 @@ end_time = 1.0e-3
     dt_previous = dt;
     max_momentum_error = std::max(max_momentum_error, (momentum(s) - p0).norm() / p0.norm());
     max_balance_error = std::max(max_balance_error, std::abs(s.energies.balance_error()));
-    // The reported balance (kinetic at the half step + internal at the step end) is off by the
-    // staggering term dt/2 f_int . v, which in this shock problem swings by +-10 % of the energy;
-    // without it (H of test_verification.cpp) the balance is exact for a linear system at a
-    // constant step.
-    double fv = 0.0;
-    for (Eigen::Index i = 0; i < s.v.cols(); ++i) {
-      fv += s.f_int.col(i).dot(s.v.col(i)) + s.m_int.col(i).dot(s.omega.col(i));
-    }
+    // The reported balance (kinetic energy at the step end) is off by the half-kick energy D =
+    // 1/2 sum m |dt/2 a|^2, second order in dt but large in this shock problem (up to 3.4e-2 of
+    // the energy; the kinetic energy at the half step swung by 9.3e-2); without it (H of
+    // test_verification.cpp) the balance is an identity of the scheme at a constant step.
     const sf::Energies& e = s.energies;
     max_discrete_error =
-        std::max(max_discrete_error, std::abs(e.total() - 0.5 * dt * fv - e.supplied()) / e0);
+        std::max(max_discrete_error,
+                 std::abs(e.total() - sf::test::half_kick_energy(model, s) - e.supplied()) / e0);
   }
   const sf::MassScaling& m = model.blank.scaling;
   std::printf(
@@ -254,14 +256,17 @@ end_time = 1.0e-3
   EXPECT_NEAR(m.added_mass / sum_of_element_increases(m), 1.0, 1e-12);
   EXPECT_NEAR((model.blank.mass.sum() - model.blank.physical_mass) / m.added_mass, 1.0, 1e-9);
   // Energy: the kinetic energy taken out by the added mass enters the balance as its own term.
-  // At a constant step the offset-corrected balance is an algebraic identity of central
-  // difference with trapezoidal work increments (for any forces), so with the mass-scaling term
-  // counted as docs/time-integration.md says it must close to round-off: tolerance 1e-12 of the
-  // energy over 100 steps. The term itself is 2.6e-2 of the energy here (and counting only the
-  // half-step kinetic drop, 1/2 (1 - r) m v^2, as a first version of this code did, left 1.2e-2
-  // unexplained).
+  // At a constant step the offset-corrected balance total - D - supplied is an algebraic
+  // identity of central difference with trapezoidal work increments (for any forces), so with the
+  // mass-scaling term counted as docs/time-integration.md says it must close to round-off:
+  // tolerance 1e-12 of the energy over 100 steps (measured 5.3e-16). The term is the drop of the
+  // whole-step kinetic energy less that of D; it is 2.6e-2 of the energy here (counting the
+  // kinetic-energy drop alone leaves 4.3e-3 unexplained, and the half-step drop of a first
+  // version of this code 1.2e-2).
   EXPECT_LT(max_discrete_error, 1e-12);
   EXPECT_GT(s.energies.mass_scaling / e0, 1e-2);
+  // The reported balance error itself: bound 5e-2 on the measured 3.4e-2 (D, above).
+  EXPECT_LT(max_balance_error, 5e-2);
 }
 
 }  // namespace

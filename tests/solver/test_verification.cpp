@@ -149,20 +149,21 @@ end_time = )" + std::to_string(350.0 / c) + "\n");
 // zero-energy modes of these meshes grow until an element inverts: measured at 36 ms, after six
 // periods, on the strip below).
 //
-// What is conserved: central difference with the solver's trapezoidal work increments keeps
-//   H = kinetic (half step) + internal (step end) - dt/2 f_int(n+1) . v(n+1/2)
+// What is conserved: central difference with the solver's trapezoidal work increments and its
+// kinetic energy at the step end (whole-step velocity v(n+1) = v(n+1/2) + dt/2 a(n+1)) keeps
+//   H = kinetic + internal (+ hourglass) - D,   D = 1/2 sum m |dt/2 a(n+1)|^2 = dt^2/8 F.M^-1.F,
 // equal to the initial kinetic energy exactly at a constant step, for any forces (the work
-// increments telescope); for a linear system H = 1/2 v.M.v + 1/2 u(n).K.u(n+1). The internal
+// increments telescope; D(0) = 0 here, the blank starts unstressed and unloaded). The internal
 // energy is the stored elastic energy here (the elastic update's trapezoidal stress work is exact,
 // material/plane_stress.hpp), so H constant is energy conservation. H is checked after every full
 // step (the last step, cut short to land on the end time, is skipped). The solver's reported
-// balance error, kinetic at the half step + internal at the step end, differs by the dt/2 f.v
-// term: it oscillates without drifting, so it is checked bounded and with a steady mean.
+// balance error is therefore D itself: never negative, second order in dt, without drift.
 struct FreeVibration {
   double max_discrete_error = 0.0;  // max |H - initial kinetic| / initial kinetic
   double max_error = 0.0;           // max |reported balance error|, same scale
   double mean_error_first = 0.0;    // mean reported error over the first tenth of the run
   double mean_error_last = 0.0;     // ... over the last tenth
+  double max_kick = 0.0;            // max D / initial kinetic
   double min_kinetic = 1e300;
   double max_internal = 0.0;
   long cycles = 0;
@@ -187,13 +188,10 @@ FreeVibration run_free_vibration(sf::Model& model) {
       r.mean_error_last += error;
       ++last_count;
     }
+    const double d = sf::test::half_kick_energy(model, state) / e0;
+    r.max_kick = std::max(r.max_kick, d);
     if (state.dt == state.stable_dt) {
-      double fv = 0.0;
-      for (Eigen::Index i = 0; i < state.v.cols(); ++i) {
-        fv += state.f_int.col(i).dot(state.v.col(i)) + state.m_int.col(i).dot(state.omega.col(i));
-      }
-      const double h = e.total() - 0.5 * state.dt * fv;
-      r.max_discrete_error = std::max(r.max_discrete_error, std::abs(h - e.supplied()) / e0);
+      r.max_discrete_error = std::max(r.max_discrete_error, std::abs(error - d));
     }
   });
   r.mean_error_first /= static_cast<double>(first_count);
@@ -203,14 +201,15 @@ FreeVibration run_free_vibration(sf::Model& model) {
   EXPECT_EQ(s.energies.plastic_work, 0.0);  // elastic
   std::printf(
       "%ld cycles: max |H - E0| / E0 = %.3e; reported balance error: max |.| %.3e, mean %.3e "
-      "over the first tenth, %.3e over the last; kinetic energy down to %.3f, internal up to "
-      "%.3f of E0\n",
+      "over the first tenth, %.3e over the last; max D / E0 %.3e; kinetic energy down to %.3f, "
+      "internal up to %.3f of E0\n",
       r.cycles, r.max_discrete_error, r.max_error, r.mean_error_first, r.mean_error_last,
-      r.min_kinetic, r.max_internal);
+      r.max_kick, r.min_kinetic, r.max_internal);
   return r;
 }
 
-void expect_conserved(const FreeVibration& r) {
+// max_reported: the bound on the reported balance error (see the callers for the measured figure).
+void expect_conserved(const FreeVibration& r, double max_reported) {
   // The energy must really change hands, else the test could not fail.
   EXPECT_LT(r.min_kinetic, 0.5);
   EXPECT_GT(r.max_internal, 0.5);
@@ -218,11 +217,14 @@ void expect_conserved(const FreeVibration& r) {
   // the step varying slowly with the deformed geometry (measured: 4.7e-6 on the strip, 1.4e-7 on
   // the plate).
   EXPECT_LT(r.max_discrete_error, 2e-5);
-  // The reported balance error: bounded (5 %: the dt/2 f.v term is large here because the
-  // uniform start velocity puts energy into modes near the highest frequency, w dt ~ 1.8) and
-  // without drift (its mean moves by less than 2e-3 between the first and the last tenth).
-  EXPECT_LT(r.max_error, 0.05);
-  EXPECT_LT(std::abs(r.mean_error_last - r.mean_error_first), 2e-3);
+  // The reported balance error is the half-kick energy D: bounded by the caller's figure and
+  // without drift (its mean over the first and the last tenth of the run differ by 1.3e-5 on the
+  // strip and 7e-6 on the plate; tolerance 1e-4: a drifting balance, e.g. energy lost by the
+  // scheme, moves it by more). The kinetic energy at the half step gave swings of 1.6 % (strip)
+  // and 4.1 % (plate), and mean offsets of 3.7e-3 and 9.0e-3.
+  EXPECT_LT(r.max_error, max_reported);
+  EXPECT_LE(r.max_error, r.max_kick + 2e-5);  // what is left is D
+  EXPECT_LT(std::abs(r.mean_error_last - r.mean_error_first), 1e-4);
 }
 
 TEST(Verification, UndampedCantileverStripConservesEnergyOverTenPeriods) {
@@ -250,7 +252,10 @@ end_time = 0.06
   // (rho A L^4))) = 5.98 ms; end_time 60 ms = 10 periods.
   sf::Model model = sf::build_model(config);
   model.blank.part.hourglass_form = sf::HourglassForm::stiffness;
-  expect_conserved(run_free_vibration(model));
+  // Reported balance error measured at most 3.4e-3 of E0 (D: the uniform start velocity, stopped
+  // dead at the clamp, puts energy near the highest frequency, w dt ~ 1.8, where D reaches
+  // (w dt / 2)^2 = 0.8 of that energy); bound 5e-3.
+  expect_conserved(run_free_vibration(model), 5e-3);
 }
 
 TEST(Verification, UndampedPlateWithStiffnessHourglassConservesEnergy) {
@@ -289,7 +294,8 @@ end_time = 0.02
   // (12 (1 - nu^2))): 2 pi / (1.8751^2 sqrt(D / (rho t L^4))) = 0.91 ms; 20 ms = 22 periods.
   sf::Model model = sf::build_model(config);
   model.blank.part.hourglass_form = sf::HourglassForm::stiffness;
-  expect_conserved(run_free_vibration(model));
+  // Reported balance error measured at most 8.7e-3 of E0 (D, as for the strip); bound 1.2e-2.
+  expect_conserved(run_free_vibration(model), 1.2e-2);
 }
 
 }  // namespace
