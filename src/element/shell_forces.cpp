@@ -10,22 +10,13 @@
 
 #include "core/errors.hpp"
 #include "element/shell_geometry.hpp"
+#include "element/shell_nodal_access.hpp"
 #include "element/shell_section_update.hpp"
 #include "element/shell_triangle.hpp"
 
 namespace sf {
 
 namespace {
-
-// Gathers the 4 nodal columns of element e from a column-major 3 x n array (no bounds checks).
-inline void gather(const double* a, const int* nodes, Quad3& q) {
-  for (int i = 0; i < 4; ++i) {
-    const double* c = a + 3 * static_cast<std::ptrdiff_t>(nodes[i]);
-    q(0, i) = c[0];
-    q(1, i) = c[1];
-    q(2, i) = c[2];
-  }
-}
 
 // The element loop, instantiated once per material type (the variant is visited outside it).
 template <class Law>
@@ -56,9 +47,9 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     Quad3 xe;
     Quad3 ve;
     Quad3 we;
-    gather(xd, nodes, xe);
-    gather(vd, nodes, ve);
-    gather(wd, nodes, we);
+    gather_nodes(xd, nodes, xe);
+    gather_nodes(vd, nodes, ve);
+    gather_nodes(wd, nodes, we);
     if (!ve.allFinite() || !we.allFinite()) {
       throw InstabilityError("shell element " + std::to_string(e) +
                              ": non-finite nodal velocity or angular velocity");
@@ -204,16 +195,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
 
     const Quad3 fg = g.frame * fl;
     const Quad3 mg = g.frame * ml;
-    for (int i = 0; i < 4; ++i) {
-      double* fc = fd + 3 * static_cast<std::ptrdiff_t>(nodes[i]);
-      double* mc = md + 3 * static_cast<std::ptrdiff_t>(nodes[i]);
-      fc[0] += fg(0, i);
-      fc[1] += fg(1, i);
-      fc[2] += fg(2, i);
-      mc[0] += mg(0, i);
-      mc[1] += mg(1, i);
-      mc[2] += mg(2, i);
-    }
+    scatter_add_nodes(fg, mg, nodes, fd, md);
   }
   return result;
 }

@@ -8,22 +8,13 @@
 #include <variant>
 
 #include "core/errors.hpp"
+#include "element/shell_nodal_access.hpp"
 #include "element/shell_section_update.hpp"
 #include "element/shell_triangle_geometry.hpp"
 
 namespace sf {
 
 namespace {
-
-// Gathers the 3 nodal columns of a triangle from a column-major 3 x n array (no bounds checks).
-inline void gather(const double* a, const int* nodes, Tri3& t) {
-  for (int i = 0; i < 3; ++i) {
-    const double* c = a + 3 * static_cast<std::ptrdiff_t>(nodes[i]);
-    t(0, i) = c[0];
-    t(1, i) = c[1];
-    t(2, i) = c[2];
-  }
-}
 
 std::string name_of(int element, int triangle) {
   return "shell element " + std::to_string(element) + " (triangle " + std::to_string(triangle) +
@@ -54,9 +45,9 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     Tri3 xe;
     Tri3 ve;
     Tri3 we;
-    gather(xd, nodes, xe);
-    gather(vd, nodes, ve);
-    gather(wd, nodes, we);
+    gather_nodes(xd, nodes, xe);
+    gather_nodes(vd, nodes, ve);
+    gather_nodes(wd, nodes, we);
     if (!ve.allFinite() || !we.allFinite()) {
       throw InstabilityError(name_of(e, k) + ": non-finite nodal velocity or angular velocity");
     }
@@ -123,16 +114,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     ml.row(2).setZero();
     const Tri3 fg = g.frame * fl;
     const Tri3 mg = g.frame * ml;
-    for (int i = 0; i < 3; ++i) {
-      double* fc = fd + 3 * static_cast<std::ptrdiff_t>(nodes[i]);
-      double* mc = md + 3 * static_cast<std::ptrdiff_t>(nodes[i]);
-      fc[0] += fg(0, i);
-      fc[1] += fg(1, i);
-      fc[2] += fg(2, i);
-      mc[0] += mg(0, i);
-      mc[1] += mg(1, i);
-      mc[2] += mg(2, i);
-    }
+    scatter_add_nodes(fg, mg, nodes, fd, md);
   }
   return result;
 }
