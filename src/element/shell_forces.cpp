@@ -63,9 +63,9 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     const Quad3 wl = gm.frame.transpose() * we;
     const Row4 bx = gm.b.row(0);
     const Row4 by = gm.b.row(1);
-    // Membrane (Mindlin: v^ = v^m - z e3 x theta^), eps(z) = eps_m - z kappa, engineering shear.
-    const Vec3 d_m(bx.dot(vl.row(0)), by.dot(vl.row(1)), by.dot(vl.row(0)) + bx.dot(vl.row(1)));
-    const Vec3 d_k(-bx.dot(wl.row(1)), by.dot(wl.row(0)), bx.dot(wl.row(0)) - by.dot(wl.row(1)));
+    Vec3 d_m;
+    Vec3 d_k;
+    compute_plate_strain_rates(bx, by, vl, wl, d_m, d_k);
     const double g_xz = bx.dot(vl.row(2)) + 0.25 * wl.row(1).sum();
     const double g_yz = by.dot(vl.row(2)) - 0.25 * wl.row(0).sum();
     const Vec3 dt_d_m = dt * d_m;
@@ -74,11 +74,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     // 2. Material update through the thickness (shell_section_update.hpp).
     const double t = st.thickness[e];
     const SectionResult sr = update_section(law, section, e, t, dt_d_m, dt_d_k, material_angle, st);
-    const Vec3& n_res = sr.n;
-    const Vec3& m_res = sr.m;
-    const double d_ezz_mean = sr.d_ezz_mean;
     double work = sr.work;
-    const double plastic_work = sr.plastic_work;
     // Transverse shear: elastic, shear-corrected, constant through the thickness.
     const double sxz_old = st.sxz[e];
     const double syz_old = st.syz[e];
@@ -90,13 +86,13 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     const double q_y = t * syz_new;
     work += t * dt * 0.5 * ((sxz_old + sxz_new) * g_xz + (syz_old + syz_new) * g_yz);
     result.internal_work += gm.area * work;
-    result.plastic_work += gm.area * plastic_work;
-    if (!n_res.allFinite() || !m_res.allFinite() || !std::isfinite(q_x + q_y)) {
+    result.plastic_work += gm.area * sr.plastic_work;
+    if (!sr.n.allFinite() || !sr.m.allFinite() || !std::isfinite(q_x + q_y)) {
       throw InstabilityError("shell element " + std::to_string(e) + ": non-finite stress");
     }
     // Thickness: plane stress gives d_ezz at each point; the mean over the thickness stretches
     // it.
-    st.thickness[e] = t * (1.0 + d_ezz_mean);
+    st.thickness[e] = t * (1.0 + sr.d_ezz_mean);
 
     // 3. Nodal forces and moments on the end-of-step configuration (conjugate to step 1).
     ShellGeometry g;
@@ -106,12 +102,12 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     const Row4 gy = g.b.row(1);
     Quad3 fl;
     Quad3 ml;
-    fl.row(0) = a * (n_res(0) * gx + n_res(2) * gy);
-    fl.row(1) = a * (n_res(1) * gy + n_res(2) * gx);
+    fl.row(0) = a * (sr.n(0) * gx + sr.n(2) * gy);
+    fl.row(1) = a * (sr.n(1) * gy + sr.n(2) * gx);
     fl.row(2) = a * (q_x * gx + q_y * gy);
-    ml.row(0) = a * (m_res(1) * gy + m_res(2) * gx);
+    ml.row(0) = a * (sr.m(1) * gy + sr.m(2) * gx);
     ml.row(0).array() -= 0.25 * a * q_y;
-    ml.row(1) = a * (-m_res(0) * gx - m_res(2) * gy);
+    ml.row(1) = a * (-sr.m(0) * gx - sr.m(2) * gy);
     ml.row(1).array() += 0.25 * a * q_x;
     ml.row(2).setZero();
 

@@ -29,6 +29,21 @@ inline SectionConstants make_section_constants(const ShellSection& section) {
   return c;
 }
 
+/// Membrane strain rate d_m = (d_xx, d_yy, g_xy) and curvature rate d_k of a Mindlin shell with
+/// constant gradients (bx, by: dN_I/dx^, dN_I/dy^ in the element frame, 1/mm) from the nodal
+/// velocities vl (mm/s) and angular velocities wl (rad/s) in that frame: v^ = v^m - z e3 x theta^,
+/// eps(z) = eps_m - z kappa, engineering shear. The same for the quad (one point) and the
+/// triangle.
+template <int N>
+inline void compute_plate_strain_rates(const Eigen::Matrix<double, 1, N>& bx,
+                                       const Eigen::Matrix<double, 1, N>& by,
+                                       const Eigen::Matrix<double, 3, N>& vl,
+                                       const Eigen::Matrix<double, 3, N>& wl, Vec3& d_m,
+                                       Vec3& d_k) {
+  d_m = Vec3(bx.dot(vl.row(0)), by.dot(vl.row(1)), by.dot(vl.row(0)) + bx.dot(vl.row(1)));
+  d_k = Vec3(-bx.dot(wl.row(1)), by.dot(wl.row(0)), bx.dot(wl.row(0)) - by.dot(wl.row(1)));
+}
+
 /// What one element's section update returns (per unit mid-surface area).
 struct SectionResult {
   Vec3 n = Vec3::Zero();      ///< N/mm, membrane resultant N = int s dz

@@ -61,10 +61,9 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     const Tri3 vl = gm.frame.transpose() * ve;
     const Tri3 wl = gm.frame.transpose() * we;
     // Mindlin, v^ = v^m - z e3 x theta^: eps(z) = eps_m - z kappa (engineering shear), as the quad.
-    const Vec3 d_m(gm.bx.dot(vl.row(0)), gm.by.dot(vl.row(1)),
-                   gm.by.dot(vl.row(0)) + gm.bx.dot(vl.row(1)));
-    const Vec3 d_k(-gm.bx.dot(wl.row(1)), gm.by.dot(wl.row(0)),
-                   gm.bx.dot(wl.row(0)) - gm.by.dot(wl.row(1)));
+    Vec3 d_m;
+    Vec3 d_k;
+    compute_plate_strain_rates(gm.bx, gm.by, vl, wl, d_m, d_k);
     const Vec2 g_s = gm.sw * vl.row(2).transpose() + gm.sx * wl.row(0).transpose() +
                      gm.sy * wl.row(1).transpose();
     const Vec3 dt_d_m = dt * d_m;
@@ -73,11 +72,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     // 2. Material update through the thickness (shell_section_update.hpp).
     const double t = st.thickness[e];
     const SectionResult sr = update_section(law, section, e, t, dt_d_m, dt_d_k, material_angle, st);
-    const Vec3& n_res = sr.n;
-    const Vec3& m_res = sr.m;
-    const double d_ezz_mean = sr.d_ezz_mean;
     double work = sr.work;
-    const double plastic_work = sr.plastic_work;
     // Transverse shear: elastic, shear-corrected, constant through the thickness, with the
     // Lyly-Stenberg-Vihinen factor t^2 / (t^2 + alpha h^2) on the modulus.
     const double shear_modulus = ks_g * triangle_shear_factor(t, gm.longest_side2);
@@ -91,11 +86,11 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     const double q_y = t * syz_new;
     work += t * dt * 0.5 * ((sxz_old + sxz_new) * g_s(0) + (syz_old + syz_new) * g_s(1));
     result.internal_work += gm.area * work;
-    result.plastic_work += gm.area * plastic_work;
-    if (!n_res.allFinite() || !m_res.allFinite() || !std::isfinite(q_x + q_y)) {
+    result.plastic_work += gm.area * sr.plastic_work;
+    if (!sr.n.allFinite() || !sr.m.allFinite() || !std::isfinite(q_x + q_y)) {
       throw InstabilityError(name_of(e, k) + ": non-finite stress");
     }
-    st.thickness[e] = t * (1.0 + d_ezz_mean);
+    st.thickness[e] = t * (1.0 + sr.d_ezz_mean);
 
     // 3. Nodal forces and moments on the end-of-step configuration (the transpose of step 1).
     TriangleGeometry g;
@@ -106,11 +101,11 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     const double a = g.area;
     Tri3 fl;
     Tri3 ml;
-    fl.row(0) = a * (n_res(0) * g.bx + n_res(2) * g.by);
-    fl.row(1) = a * (n_res(1) * g.by + n_res(2) * g.bx);
+    fl.row(0) = a * (sr.n(0) * g.bx + sr.n(2) * g.by);
+    fl.row(1) = a * (sr.n(1) * g.by + sr.n(2) * g.bx);
     fl.row(2) = a * (q_x * g.sw.row(0) + q_y * g.sw.row(1));
-    ml.row(0) = a * (m_res(1) * g.by + m_res(2) * g.bx + q_x * g.sx.row(0) + q_y * g.sx.row(1));
-    ml.row(1) = a * (-m_res(0) * g.bx - m_res(2) * g.by + q_x * g.sy.row(0) + q_y * g.sy.row(1));
+    ml.row(0) = a * (sr.m(1) * g.by + sr.m(2) * g.bx + q_x * g.sx.row(0) + q_y * g.sx.row(1));
+    ml.row(1) = a * (-sr.m(0) * g.bx - sr.m(2) * g.by + q_x * g.sy.row(0) + q_y * g.sy.row(1));
     ml.row(2).setZero();
     const Tri3 fg = g.frame * fl;
     const Tri3 mg = g.frame * ml;
