@@ -46,6 +46,17 @@ class ContactSearch {
   /// `cutoff` (mm, may be +infinity); out.triangle = -1 if none. Does not allocate; thread-safe
   /// (const, no shared scratch).
   virtual void find_closest(const Vec3& p, double cutoff, ClosestPoint& out) const = 0;
+  /// Sizes any per-node state for `node_count` blank nodes; called once before
+  /// `find_closest_for_node` is used (may allocate). The default keeps no state.
+  virtual void prepare(int node_count) { (void)node_count; }
+  /// The query of blank node `node` (0 <= node < the count given to `prepare`) at p: the same
+  /// answer as find_closest(p, cutoff, out). Searches that keep per-node state between cycles
+  /// (a candidate cache) override it; calls for different nodes may run concurrently, calls for
+  /// one node may not. Does not allocate.
+  virtual void find_closest_for_node(int node, const Vec3& p, double cutoff, ClosestPoint& out) {
+    (void)node;
+    find_closest(p, cutoff, out);
+  }
   /// The name this search is chosen by (case file key).
   virtual std::string_view name() const = 0;
 };

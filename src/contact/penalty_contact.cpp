@@ -24,7 +24,7 @@ ContactResult compute_penalty_contact(ContactPair& pair, const Matrix3X& x,
           pair.surface ? pair.surface->name() : std::string("?"), pair.cutoff, h, i));
     }
     const Vec3 p = x.col(i) - tool_displacement;
-    pair.search->find_closest(p, pair.cutoff, cp);
+    pair.search->find_closest_for_node(i, p, pair.cutoff, cp);
     if (cp.triangle < 0) {
       continue;
     }

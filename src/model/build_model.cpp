@@ -273,6 +273,7 @@ void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& s
     const Tool& tool = model.tools[static_cast<std::size_t>(contact.tool)];
     contact.pair.surface = &tool.surface;
     contact.pair.search = make_contact_search(cc.search, tool.surface);
+    contact.pair.search->prepare(static_cast<int>(model.blank.mesh.nodes.cols()));
     // The contact spring adds to the element stiffness at a node: with the element part at
     // w_e dt <= 2 x safety (1.8), the total stays below the stability limit w dt = 2 when the
     // contact part keeps w_c dt <= sqrt(4 - 1.8^2) = 0.87, i.e. a cap factor of 0.87 / 2.
