@@ -259,12 +259,36 @@ std::string tool_names(const CaseConfig& config) {
   return names.empty() ? "none defined" : names;
 }
 
+/// Coulomb friction: `friction` alone sets one coefficient for rest and sliding; or
+/// friction_static with an optional friction_dynamic (default: the static one) and decay.
+void read_friction(const TomlSection& s, ContactConfig& contact) {
+  if (s.has("friction")) {
+    for (const char* key : {"friction_static", "friction_dynamic", "friction_decay"}) {
+      if (s.has(key)) {
+        s.fail_forbidden(key,
+                         "friction sets one coefficient for rest and sliding; give either friction "
+                         "or friction_static (with friction_dynamic, friction_decay)");
+      }
+    }
+    s.read_number("friction", contact.friction_static, at_least(0.0));
+    contact.friction_dynamic = contact.friction_static;
+    return;
+  }
+  s.read_number("friction_static", contact.friction_static, at_least(0.0));
+  contact.friction_dynamic = contact.friction_static;
+  s.read_number("friction_dynamic", contact.friction_dynamic,
+                NumberRange{.lo = 0.0, .hi = contact.friction_static});
+  s.read_number("friction_decay", contact.friction_decay, at_least(0.0));
+}
+
 void read_contacts(const TomlSection& top, const CaseConfig& config,
                    std::vector<ContactConfig>& contacts) {
   const std::vector<TomlSection> sections = top.table_array("contact");
   for (std::size_t i = 0; i < sections.size(); ++i) {
     const TomlSection& s = sections[i];
-    s.check_keys({"tool", "search", "penalty_scale", "friction"});
+    s.check_keys({"tool", "search", "projection", "penalty_scale", "penalty_stiffness", "friction",
+                  "friction_static", "friction_dynamic", "friction_decay", "audit",
+                  "search_margin"});
     ContactConfig contact;
     s.read_string("tool", contact.tool, Presence::required);
     if (!config.find_tool(contact.tool)) {
@@ -277,9 +301,28 @@ void read_contacts(const TomlSection& top, const CaseConfig& config,
                               quote_toml_string(contact.tool), j));
       }
     }
-    s.read_choice<std::string>("search", contact.search, {{"modified", "modified"}});
+    s.read_choice<std::string>("search", contact.search,
+                               {{"standard", "standard"},
+                                {"modified", "modified"},
+                                {"cached", "cached"},
+                                {"standard_brute_force", "standard_brute_force"},
+                                {"modified_brute_force", "modified_brute_force"}});
+    s.read_choice("projection", contact.projection,
+                  {{"interpolated", ContactConfig::Projection::interpolated},
+                   {"orthogonal", ContactConfig::Projection::orthogonal}});
+    if (s.has("penalty_scale") && s.has("penalty_stiffness")) {
+      s.fail_forbidden(
+          "penalty_stiffness",
+          "give either penalty_scale (relative) or penalty_stiffness (N/mm), not both");
+    }
     s.read_number("penalty_scale", contact.penalty_scale, greater_than(0.0));
-    s.read_number("friction", contact.friction, at_least(0.0));
+    s.read_number("penalty_stiffness", contact.penalty_stiffness, greater_than(0.0));
+    read_friction(s, contact);
+    s.read_bool("audit", contact.audit);
+    if (s.has("search_margin") && contact.search != "cached") {
+      s.fail_forbidden("search_margin", "search_margin is the margin of search = \"cached\"");
+    }
+    s.read_number("search_margin", contact.search_margin, at_least(0.0));
     contacts.push_back(std::move(contact));
   }
 }

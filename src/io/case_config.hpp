@@ -93,10 +93,22 @@ struct ToolConfig {
 };
 
 struct ContactConfig {
-  std::string tool;                 ///< name of a [[tools]] entry
-  std::string search = "modified";  ///< "modified" (the only one in this release)
-  double penalty_scale = 0.1;       ///< scales the blank's membrane stiffness (see docs)
-  double friction = 0.0;            ///< Coulomb coefficient (not yet applied: must be 0)
+  enum class Projection { interpolated, orthogonal };
+  std::string tool;  ///< name of a [[tools]] entry
+  /// "standard" (closest tool node, then its triangles), "modified" (closest triangle; exact),
+  /// "cached" (the modified answer from a per-node candidate cache), or for cost studies
+  /// "standard_brute_force" / "modified_brute_force" (docs/contact.md)
+  std::string search = "modified";
+  /// After the search: project along the interpolated averaged nodal normal (the paper's
+  /// "interpolated projection") or keep the orthogonal projection.
+  Projection projection = Projection::interpolated;
+  double penalty_scale = 0.1;      ///< -, scales the blank's bulk stiffness per node (see docs)
+  double penalty_stiffness = 0.0;  ///< N/mm per blank node, given; 0 = from penalty_scale
+  double friction_static = 0.0;    ///< -, Coulomb coefficient at rest
+  double friction_dynamic = 0.0;   ///< -, Coulomb coefficient when sliding (<= static)
+  double friction_decay = 0.0;     ///< s/mm, mu = mu_d + (mu_s - mu_d) exp(-decay |v_slip|)
+  bool audit = false;              ///< count, per frame, the nodes where this search is not exact
+  double search_margin = 0.0;      ///< mm, the cached search's candidate margin; 0 = its default
 };
 
 struct BoundaryConfig {

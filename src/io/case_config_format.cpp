@@ -176,8 +176,21 @@ void write_contact(TomlWriter& w, const ContactConfig& contact) {
   w.array_header("contact");
   w.string("tool", contact.tool);
   w.string("search", contact.search);
-  w.number("penalty_scale", contact.penalty_scale);
-  w.number("friction", contact.friction, "Coulomb coefficient");
+  w.string("projection", contact.projection == ContactConfig::Projection::interpolated
+                             ? "interpolated"
+                             : "orthogonal");
+  if (contact.penalty_stiffness > 0.0) {
+    w.number("penalty_stiffness", contact.penalty_stiffness, "N/mm per blank node");
+  } else {
+    w.number("penalty_scale", contact.penalty_scale);
+  }
+  w.number("friction_static", contact.friction_static, "Coulomb coefficient at rest");
+  w.number("friction_dynamic", contact.friction_dynamic, "Coulomb coefficient sliding");
+  w.number("friction_decay", contact.friction_decay, "s/mm");
+  w.boolean("audit", contact.audit);
+  if (contact.search == "cached") {
+    w.number("search_margin", contact.search_margin, "mm; 0 = the default");
+  }
 }
 
 void write_boundary(TomlWriter& w, const BoundaryConfig& boundary) {

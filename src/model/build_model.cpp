@@ -260,11 +260,11 @@ void set_mass_and_time_step(const CaseConfig& config, Model& model, const ShellS
 void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& state) {
   const MaterialConfig& material = config.blank_material();
   for (const ContactConfig& cc : config.contacts) {
-    if (cc.friction != 0.0) {
+    if (cc.friction_static != 0.0) {
       throw InputError(fmt::format(
           "{}: contact with tool '{}': friction = {} is not supported yet (this release's "
           "contact is frictionless); set friction = 0.0",
-          config.file.string(), cc.tool, cc.friction));
+          config.file.string(), cc.tool, cc.friction_static));
     }
     ContactInterface contact;
     const auto found = std::find_if(model.tools.begin(), model.tools.end(),

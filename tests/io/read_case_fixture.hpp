@@ -126,6 +126,13 @@ friction = 0.125
 
 [[contact]]
 tool = "die"
+search = "standard"
+projection = "orthogonal"
+penalty_stiffness = 500.0
+friction_static = 0.2
+friction_dynamic = 0.1
+friction_decay = 0.05
+audit = true
 
 [[boundary]]
 group = "sym_x"

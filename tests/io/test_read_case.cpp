@@ -156,9 +156,21 @@ TEST_F(ReadCase, FullCaseReadsEveryValue) {
   EXPECT_EQ(c.contacts[0].tool, "punch");
   EXPECT_EQ(c.contacts[0].search, "modified");
   EXPECT_EQ(c.contacts[0].penalty_scale, 0.2);
-  EXPECT_EQ(c.contacts[0].friction, 0.125);
+  EXPECT_EQ(c.contacts[0].projection, sf::ContactConfig::Projection::interpolated);
+  EXPECT_EQ(c.contacts[0].friction_static, 0.125);  // `friction` sets both coefficients
+  EXPECT_EQ(c.contacts[0].friction_dynamic, 0.125);
+  EXPECT_EQ(c.contacts[0].friction_decay, 0.0);
+  EXPECT_EQ(c.contacts[0].penalty_stiffness, 0.0);
+  EXPECT_FALSE(c.contacts[0].audit);
   EXPECT_EQ(c.contacts[1].tool, "die");
+  EXPECT_EQ(c.contacts[1].search, "standard");
+  EXPECT_EQ(c.contacts[1].projection, sf::ContactConfig::Projection::orthogonal);
   EXPECT_EQ(c.contacts[1].penalty_scale, 0.1);
+  EXPECT_EQ(c.contacts[1].penalty_stiffness, 500.0);
+  EXPECT_EQ(c.contacts[1].friction_static, 0.2);
+  EXPECT_EQ(c.contacts[1].friction_dynamic, 0.1);
+  EXPECT_EQ(c.contacts[1].friction_decay, 0.05);
+  EXPECT_TRUE(c.contacts[1].audit);
 
   ASSERT_EQ(c.boundaries.size(), 3u);
   EXPECT_EQ(c.boundaries[0].group, "sym_x");
@@ -342,7 +354,7 @@ TEST_F(ReadCase, DuplicateNamesAreErrors) {
                {"tools[2].name", "duplicate", "\"punch\"", "tools[1]"});
 
   text = replaced(kFull, "tool = \"die\"", "tool = \"punch\"");
-  expect_error(text, line_of(text, "tool = \"punch\"\n\n[[boundary]]"),
+  expect_error(text, line_of(text, "tool = \"punch\"\nsearch = \"standard\""),
                {"contact[1].tool", "second [[contact]]", "contact[0]"});
 }
 
@@ -384,9 +396,28 @@ TEST_F(ReadCase, KeysThatDoNotApplyAreErrorsNotIgnored) {
   expect_error(text, line_of(text, "direction = [1, 1, -1]"),
                {"tools[2].motion.direction", "not allowed"});
 
-  text = replaced(kFull, "search = \"modified\"", "search = \"standard\"");
+  text = replaced(kFull, "search = \"modified\"", "search = \"closest\"");
   expect_error(text, line_of(text, "search ="),
-               {"contact[0].search", "one of \"modified\"", "\"standard\""});
+               {"contact[0].search", "\"standard\"", "\"modified\"", "\"cached\""});
+
+  text = replaced(kFull, "friction = 0.125", "friction = 0.125\nfriction_static = 0.2");
+  expect_error(text, line_of(text, "friction_static = 0.2\n"),
+               {"contact[0].friction_static", "either friction or friction_static"});
+
+  text = replaced(kFull, "friction_dynamic = 0.1", "friction_dynamic = 0.3");
+  expect_error(text, line_of(text, "friction_dynamic"), {"contact[1].friction_dynamic", "0.2"});
+
+  text =
+      replaced(kFull, "penalty_stiffness = 500.0", "penalty_stiffness = 500.0\npenalty_scale = 1");
+  expect_error(text, line_of(text, "penalty_stiffness"),
+               {"contact[1].penalty_stiffness", "not both"});
+
+  text = replaced(kFull, "audit = true", "audit = true\nsearch_margin = 1.0");
+  expect_error(text, line_of(text, "search_margin"), {"contact[1].search_margin", "cached"});
+
+  text = replaced(kFull, "projection = \"orthogonal\"", "projection = \"normal\"");
+  expect_error(text, line_of(text, "projection ="),
+               {"contact[1].projection", "\"interpolated\"", "\"orthogonal\""});
 }
 
 /// Every field of two cases is the same (the case file itself aside).
@@ -444,7 +475,13 @@ void expect_same_case(const sf::CaseConfig& a, const sf::CaseConfig& b) {
     EXPECT_EQ(a.contacts[i].tool, b.contacts[i].tool);
     EXPECT_EQ(a.contacts[i].search, b.contacts[i].search);
     EXPECT_EQ(a.contacts[i].penalty_scale, b.contacts[i].penalty_scale);
-    EXPECT_EQ(a.contacts[i].friction, b.contacts[i].friction);
+    EXPECT_EQ(a.contacts[i].projection, b.contacts[i].projection);
+    EXPECT_EQ(a.contacts[i].penalty_stiffness, b.contacts[i].penalty_stiffness);
+    EXPECT_EQ(a.contacts[i].friction_static, b.contacts[i].friction_static);
+    EXPECT_EQ(a.contacts[i].friction_dynamic, b.contacts[i].friction_dynamic);
+    EXPECT_EQ(a.contacts[i].friction_decay, b.contacts[i].friction_decay);
+    EXPECT_EQ(a.contacts[i].audit, b.contacts[i].audit);
+    EXPECT_EQ(a.contacts[i].search_margin, b.contacts[i].search_margin);
   }
   ASSERT_EQ(a.boundaries.size(), b.boundaries.size());
   for (std::size_t i = 0; i < a.boundaries.size(); ++i) {
