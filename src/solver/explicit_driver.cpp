@@ -562,7 +562,15 @@ RunSummary run_explicit(Model& model, const RunOptions& options) {
   progress.report(model, s, true);
   const double wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  return make_run_summary(model, s, wall_seconds);
+  RunSummary summary = make_run_summary(model, s, wall_seconds);
+  if (output) {
+    for (const SearchAuditRecord& a : output->search_audits().records()) {
+      summary.search_audits.push_back({a.tool, a.search, a.audits, a.last.misses,
+                                       a.last.nodes_checked, a.max_misses, a.max_misses_time,
+                                       a.total_misses, a.max_gap_error});
+    }
+  }
+  return summary;
 }
 
 }  // namespace sf

@@ -26,10 +26,17 @@ std::vector<std::string> history_columns(const Model& model) {
     columns.push_back(t.name + "_force");
     columns.push_back(t.name + "_nodes_in_contact");
   }
+  for (std::size_t c = 0; c < model.contacts.size(); ++c) {
+    if (model.config.contacts[c].audit) {
+      columns.push_back(model.tools[static_cast<std::size_t>(model.contacts[c].tool)].name +
+                        "_search_misses");
+    }
+  }
   return columns;
 }
 
-FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& directory) {
+FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& directory)
+    : audits_(model) {
   std::vector<PartTopology> parts;
   PartTopology blank;
   blank.name = "blank";
@@ -74,6 +81,7 @@ FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& direct
 }
 
 void FrameOutput::write_frame(const Model& model, const SolutionState& s) {
+  audits_.record(model, s);
   displacement_ = s.x - model.blank.mesh.nodes;
   compute_element_stress_output(model.blank.part, s.x, s.shell, stress_mid_, stress_top_,
                                 stress_bottom_, plastic_strain_);
@@ -100,6 +108,11 @@ void FrameOutput::write_frame(const Model& model, const SolutionState& s) {
     blank.fields.push_back({"stress_top", FieldCenter::cell, 6, stress_top_.data()});
     blank.fields.push_back({"stress_bottom", FieldCenter::cell, 6, stress_bottom_.data()});
   }
+  for (const SearchAuditRecord& r : audits_.records()) {
+    blank.fields.push_back({"search_miss_" + r.tool, FieldCenter::node, 1, r.miss.data()});
+    blank.fields.push_back(
+        {"search_gap_error_" + r.tool, FieldCenter::node, 1, r.gap_error.data()});
+  }
   frames.push_back(std::move(blank));
   for (std::size_t t = 0; t < model.tools.size(); ++t) {
     const Vec3 d = s.tools[t].displacement;
@@ -117,6 +130,7 @@ void FrameOutput::append_history(const Model& model, const SolutionState& s) {
     return;  // this cycle's row is there already
   }
   last_history_cycle_ = s.cycle;
+  audits_.record(model, s);
   std::size_t k = 0;
   const Energies& e = s.energies;
   const MassScaling& scaling = model.blank.scaling;
@@ -132,6 +146,9 @@ void FrameOutput::append_history(const Model& model, const SolutionState& s) {
     // Positive when the blank resists the tool's motion (the punch force).
     row_[k++] = -s.tools[t].force.dot(model.tools[t].motion.direction());
     row_[k++] = s.tools[t].nodes_in_contact;
+  }
+  for (const SearchAuditRecord& r : audits_.records()) {
+    row_[k++] = r.last.misses;
   }
   writer_->append_history(row_);
 }

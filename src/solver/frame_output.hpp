@@ -7,6 +7,7 @@
 
 #include "io/results_writer.hpp"
 #include "model/model.hpp"
+#include "solver/search_audit_recorder.hpp"
 #include "solver/solution_state.hpp"
 
 namespace sf {
@@ -19,9 +20,12 @@ class FrameOutput {
   /// Buffers a history row of the current state (none if this cycle has one already).
   void append_history(const Model& model, const SolutionState& state);
   void flush();
+  /// The search audits run with the frames and history rows (contact pairs with audit = true).
+  const SearchAuditRecorder& search_audits() const { return audits_; }
 
  private:
   std::unique_ptr<ResultsWriter> writer_;
+  SearchAuditRecorder audits_;
   Matrix3X displacement_;
   VectorX plastic_strain_;
   VectorX added_mass_percent_;  ///< per element, written when mass scaling is on
@@ -33,8 +37,8 @@ class FrameOutput {
 };
 
 /// The history columns, in order: time, the step taken and the stable step with its limiting
-/// element, the energies, the added mass, then per tool its travel, force and contact node count
-/// (docs/results-format.md).
+/// element, the energies, the added mass, then per tool its travel, force and contact node count,
+/// then per audited contact pair its search misses (docs/results-format.md).
 std::vector<std::string> history_columns(const Model& model);
 
 }  // namespace sf

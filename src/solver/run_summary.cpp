@@ -103,6 +103,20 @@ std::string format_run_summary(const RunSummary& r) {
       add(fmt::format("  draw-in {:<11} {:7.3f} mm", d.name, d.computed));
     }
   }
+  for (const SearchAuditSummary& a : r.search_audits) {
+    if (a.max_misses == 0) {
+      add(fmt::format(
+          "  search audit {:<8} {} search: no misses in {} audits ({} nodes within reach "
+          "at the end)",
+          a.tool, a.search, a.audits, a.final_nodes_checked));
+      continue;
+    }
+    add(fmt::format(
+        "  search audit {:<8} {} search: {} misses of {} nodes within reach at the end; "
+        "at most {} (t = {:.4e} s), {} over {} audits; largest gap error {:.3e} mm",
+        a.tool, a.search, a.final_misses, a.final_nodes_checked, a.max_misses, a.max_misses_time,
+        a.total_misses, a.audits, a.max_gap_error));
+  }
   return text;
 }
 
@@ -151,6 +165,16 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
       entry["source"] = d.source;
     }
     j["draw_in"][d.name] = entry;
+  }
+  for (const SearchAuditSummary& a : r.search_audits) {
+    j["search_audit"][a.tool] = {{"search", a.search},
+                                 {"audits", a.audits},
+                                 {"final_misses", a.final_misses},
+                                 {"final_nodes_checked", a.final_nodes_checked},
+                                 {"max_misses", a.max_misses},
+                                 {"max_misses_time_s", a.max_misses_time},
+                                 {"total_misses", a.total_misses},
+                                 {"max_gap_error_mm", a.max_gap_error}};
   }
   std::ofstream out(file);
   if (!out) {

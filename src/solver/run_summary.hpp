@@ -24,6 +24,19 @@ struct ToolSummary {
   double peak_force = 0.0;   ///< N
 };
 
+/// The search audit of one contact pair (audit = true), over the run.
+struct SearchAuditSummary {
+  std::string tool;
+  std::string search;
+  int audits = 0;                ///< frames and history rows audited
+  int final_misses = 0;          ///< misses at the last audit
+  int final_nodes_checked = 0;   ///< nodes within the cutoff at the last audit
+  int max_misses = 0;            ///< most misses in one audit
+  double max_misses_time = 0.0;  ///< s
+  long total_misses = 0;         ///< summed over the audits
+  double max_gap_error = 0.0;    ///< mm
+};
+
 struct RunSummary {
   long cycles = 0;
   double end_time = 0.0;              ///< s
@@ -47,6 +60,7 @@ struct RunSummary {
   double max_plastic_strain = 0.0;
   std::vector<ToolSummary> tools;
   std::vector<DrawInResult> draw_ins;
+  std::vector<SearchAuditSummary> search_audits;  ///< filled by the driver when results are written
 };
 
 RunSummary make_run_summary(const Model& model, const SolutionState& state, double wall_seconds);

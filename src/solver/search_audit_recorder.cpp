@@ -1,0 +1,45 @@
+#include "solver/search_audit_recorder.hpp"
+
+#include <algorithm>
+
+namespace sf {
+
+SearchAuditRecorder::SearchAuditRecorder(const Model& model) {
+  for (std::size_t c = 0; c < model.contacts.size(); ++c) {
+    if (!model.config.contacts[c].audit) {
+      continue;
+    }
+    const ContactInterface& contact = model.contacts[c];
+    audits_.emplace_back(*contact.pair.surface);
+    SearchAuditRecord record;
+    record.contact = static_cast<int>(c);
+    record.tool = model.tools[static_cast<std::size_t>(contact.tool)].name;
+    record.search = std::string(contact.pair.search->name());
+    record.miss = VectorX::Zero(model.blank.mesh.nodes.cols());
+    record.gap_error = VectorX::Zero(model.blank.mesh.nodes.cols());
+    records_.push_back(std::move(record));
+  }
+}
+
+void SearchAuditRecorder::record(const Model& model, const SolutionState& s) {
+  if (records_.empty() || s.cycle == last_cycle_) {
+    return;
+  }
+  last_cycle_ = s.cycle;
+  for (std::size_t a = 0; a < records_.size(); ++a) {
+    SearchAuditRecord& r = records_[a];
+    const ContactInterface& contact = model.contacts[static_cast<std::size_t>(r.contact)];
+    const Vec3 tool_displacement = s.tools[static_cast<std::size_t>(contact.tool)].displacement;
+    r.last = audits_[a].run(*contact.pair.search, s.x, tool_displacement, contact.pair.cutoff,
+                            r.miss, r.gap_error);
+    ++r.audits;
+    r.total_misses += r.last.misses;
+    if (r.last.misses > r.max_misses) {
+      r.max_misses = r.last.misses;
+      r.max_misses_time = s.time;
+    }
+    r.max_gap_error = std::max(r.max_gap_error, r.last.max_gap_error);
+  }
+}
+
+}  // namespace sf
