@@ -151,6 +151,10 @@ void InterpolatedProjector::project(const Vec3& p, const ClosestPoint& closest,
   }
 
   // 2. Walk across the edge opposite the most negative coordinate.
+  const auto is_visited = [&](int t) {
+    return std::find(visited.begin(), visited.begin() + visited_count, t) !=
+           visited.begin() + visited_count;
+  };
   int current = start;
   Vec3 s = start_solution;
   for (int step = 0; step < max_walk_steps && current >= 0; ++step) {
@@ -167,23 +171,49 @@ void InterpolatedProjector::project(const Vec3& p, const ClosestPoint& closest,
     }
     // Edge a runs from local node a to a + 1, opposite local node a + 2.
     const int next = surface_->triangle_neighbours()((vertex + 1) % 3, current);
-    if (next < 0 || std::find(visited.begin(), visited.begin() + visited_count, next) !=
-                        visited.begin() + visited_count) {
+    if (next < 0 || is_visited(next)) {
       break;  // a boundary, or a cycle
     }
     visited[static_cast<std::size_t>(visited_count++)] = next;
     ++out.triangles_tried;
-    if (!solve_on_triangle(next, p, s, out.iterations)) {
+    Vec3 trial;
+    if (!solve_on_triangle(next, p, trial, out.iterations)) {
       break;
     }
-    if (smallest_coordinate(s) >= -inside_tolerance) {
-      accept(next, s);
+    if (smallest_coordinate(trial) >= -inside_tolerance) {
+      accept(next, trial);
       return;
     }
     current = next;
+    s = trial;
   }
 
-  // 3. Nothing: the orthogonal answer.
+  // 3. The fan of the vertex nearest the last solution (its largest coordinate), ascending: a
+  //    solution near a vertex may sit in a triangle of the fan that the walk cannot reach across
+  //    one edge (it steps back into a visited triangle).
+  if (current >= 0) {
+    const double t3 = 1.0 - s[0] - s[1];
+    const int local = t3 >= s[0] && t3 >= s[1] ? 0 : (s[0] >= s[1] ? 1 : 2);
+    const int node = surface_->triangles()(local, current);
+    const std::vector<int>& offsets = surface_->node_triangle_offsets();
+    const std::vector<int>& fan = surface_->node_triangles();
+    for (int k = offsets[static_cast<std::size_t>(node)];
+         k < offsets[static_cast<std::size_t>(node) + 1]; ++k) {
+      const int t = fan[static_cast<std::size_t>(k)];
+      if (is_visited(t)) {
+        continue;
+      }
+      ++out.triangles_tried;
+      Vec3 trial;
+      if (solve_on_triangle(t, p, trial, out.iterations) &&
+          smallest_coordinate(trial) >= -inside_tolerance) {
+        accept(t, trial);
+        return;
+      }
+    }
+  }
+
+  // 4. Nothing: the orthogonal answer.
   out.fallback = true;
   out.triangle = closest.triangle;
   out.barycentric = closest.barycentric;

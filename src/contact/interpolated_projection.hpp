@@ -46,10 +46,14 @@ struct InterpolatedProjection {
 ///     smallest coordinate; Newton failures count as farthest outside; ties to the lower index):
 ///     it moves to the neighbour across the edge opposite the most negative coordinate
 ///     (TriangleSurface::triangle_neighbours) and solves there, at most `max_walk_steps` times,
-///     never revisiting a triangle;
-///  3. if that ends on a boundary edge, at a revisited triangle (a cycle), after the last step,
-///     or Newton fails (a knife edge, where the interpolated normal vanishes, or no convergence),
-///     the result is the orthogonal answer with `fallback` set.
+///     never revisiting a triangle; it stops at a boundary edge, at a visited triangle (a cycle)
+///     or when Newton fails;
+///  3. then the triangles around the vertex nearest the walk's last solution (its largest
+///     coordinate) not yet tried, ascending: near a vertex the solution may lie in a triangle of
+///     the fan that the walk cannot reach (it steps back into a visited triangle);
+///  4. if nothing is found (a point beyond the surface's boundary, a knife edge where the
+///     interpolated normal vanishes, Newton not converging), the result is the orthogonal answer
+///     with `fallback` set.
 /// A flat region (all three nodal normals equal to the face normal) gives the orthogonal
 /// projection to round-off, in zero Newton iterations.
 class InterpolatedProjector {
