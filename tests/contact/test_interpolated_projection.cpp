@@ -338,7 +338,8 @@ TEST(InterpolatedProjection, FoldDeadZoneGetsASolution) {
   }
   EXPECT_EQ(dead_zone, 57);
   std::printf("fold dead zone: 57 points, largest D / (distance to the fold) %.4f\n", max_ratio);
-  // Along a direction that leans at most the 40 degree wedge from the surface normal there.
+  // A loose sanity bound, not a derived one (measured 1.062): the interpolated normals lean at
+  // most the 40 degree wedge away from the directions p - fold.
   EXPECT_LT(max_ratio, 1.0 / std::cos(40.0 * std::numbers::pi / 180));
 
   // Seen from the other side (-z) the same fold is a valley: points there project onto both
