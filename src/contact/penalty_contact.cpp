@@ -4,38 +4,77 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 
 #include "core/errors.hpp"
 
 namespace sf {
 
-ContactResult compute_penalty_contact(ContactPair& pair, const Matrix3X& x,
-                                      const VectorX& half_thickness, const Vec3& tool_displacement,
+ContactResult compute_penalty_contact(ContactPair& pair, const ContactKinematics& kinematics,
                                       Matrix3X& f_contact) {
   ContactResult result;
+  const Matrix3X& x = kinematics.x;
   const int n = static_cast<int>(x.cols());
+  const std::string_view tool_name = pair.surface ? std::string_view(pair.surface->name()) : "?";
+  const bool interpolated = pair.projection == ContactProjection::interpolated;
+  const bool friction = pair.friction.active();
+  if (friction) {
+    pair.friction.validate(tool_name);
+    if (pair.stick_force.cols() != n) {
+      pair.stick_force.setZero(3, n);
+    }
+  }
+  if (interpolated && !pair.projector) {
+    pair.projector = std::make_unique<InterpolatedProjector>(*pair.surface);
+  }
   ClosestPoint cp;
+  InterpolatedProjection ip;
   for (int i = 0; i < n; ++i) {
-    const double h = half_thickness[i];
+    const double h = kinematics.half_thickness[i];
     if (!(pair.cutoff > h)) {
       throw InputError(fmt::format(
           "contact with tool '{}': search radius {} mm does not exceed the half thickness {} mm "
           "of blank node {}",
-          pair.surface ? pair.surface->name() : std::string("?"), pair.cutoff, h, i));
+          tool_name, pair.cutoff, h, i));
     }
-    const Vec3 p = x.col(i) - tool_displacement;
+    const Vec3 p = x.col(i) - kinematics.tool_displacement;
     pair.search->find_closest_for_node(i, p, pair.cutoff, cp);
-    if (cp.triangle < 0) {
-      continue;
+    bool in_contact = false;
+    if (cp.triangle >= 0) {
+      double distance = cp.signed_distance;
+      Vec3 normal = cp.normal;
+      if (interpolated) {
+        pair.projector->project(p, cp, ip);
+        result.projection_fallbacks += ip.fallback ? 1 : 0;
+        distance = ip.distance;
+        normal = ip.normal;
+      }
+      const double g = distance - h;
+      in_contact = g < 0 && distance > -h - pair.cutoff;
+      if (in_contact) {
+        const double k = pair.stiffness[i];
+        const double normal_force = k * (-g);
+        Vec3 f = normal_force * normal;
+        result.energy += 0.5 * k * g * g;
+        ++result.nodes_in_contact;
+        if (friction) {
+          const Vec3 increment =
+              kinematics.dt * kinematics.v.col(i) - kinematics.tool_displacement_increment;
+          Vec3 stored = pair.stick_force.col(i);
+          const FrictionStep step =
+              coulomb_friction_update(pair.friction, stored, normal, increment, kinematics.dt,
+                                      normal_force, pair.friction.tangential_stiffness_ratio * k);
+          pair.stick_force.col(i) = stored;
+          f += step.force;
+          result.friction_work += step.work;
+          ++(step.sliding ? result.sliding_nodes : result.sticking_nodes);
+        }
+        f_contact.col(i) += f;
+        result.force_on_tool -= f;
+      }
     }
-    const double g = cp.signed_distance - h;
-    if (g < 0 && cp.signed_distance > -h - pair.cutoff) {
-      const double k = pair.stiffness[i];
-      const Vec3 f = (k * (-g)) * cp.normal;
-      f_contact.col(i) += f;
-      result.force_on_tool -= f;
-      result.energy += 0.5 * k * g * g;
-      ++result.nodes_in_contact;
+    if (friction && !in_contact) {
+      pair.stick_force.col(i).setZero();
     }
   }
   return result;

@@ -67,6 +67,27 @@ TriangleSurface::TriangleSurface(std::string name, Matrix3X nodes, TriConn trian
     }
   }
   compute_normals();
+  compute_neighbours();
+}
+
+void TriangleSurface::compute_neighbours() {
+  const int nt = num_triangles();
+  triangle_neighbours_.setConstant(3, nt, -1);
+  for (int t = 0; t < nt; ++t) {
+    for (int a = 0; a < 3; ++a) {
+      const int u = triangles_(a, t), v = triangles_((a + 1) % 3, t);
+      // The other triangles holding both u and v: scan the triangles of u.
+      int found = -1, count = 0;
+      for (int k = node_triangle_offsets_[u]; k < node_triangle_offsets_[u + 1]; ++k) {
+        const int w = node_triangles_[k];
+        if (w != t && (triangles_.col(w).array() == v).any()) {
+          found = w;
+          ++count;
+        }
+      }
+      triangle_neighbours_(a, t) = count == 1 ? found : -1;
+    }
+  }
 }
 
 void TriangleSurface::compute_normals() {
@@ -98,6 +119,7 @@ void TriangleSurface::flip_triangles(const std::vector<char>& flip) {
     }
   }
   compute_normals();
+  compute_neighbours();
 }
 
 namespace {

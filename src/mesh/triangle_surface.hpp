@@ -41,13 +41,20 @@ class TriangleSurface {
   /// node_triangles()[node_triangle_offsets()[i] .. node_triangle_offsets()[i+1]), ascending.
   const std::vector<int>& node_triangle_offsets() const { return node_triangle_offsets_; }
   const std::vector<int>& node_triangles() const { return node_triangles_; }
+  /// Edge adjacency: triangle_neighbours()(a, t) is the triangle across edge a of triangle t,
+  /// edge a running from its local node a to node (a + 1) % 3 (edge 0: x1 -> x2, edge 1:
+  /// x2 -> x3, edge 2: x3 -> x1), so edge a is opposite local node (a + 2) % 3. -1 on a boundary
+  /// edge and on an edge shared by more than two triangles (no unique neighbour).
+  const TriConn& triangle_neighbours() const { return triangle_neighbours_; }
 
   /// Reverses the orientation of every triangle t with flip[t] != 0 (swaps its 2nd and 3rd
-  /// node) and updates the normals. `flip` has one entry per triangle.
+  /// node) and updates the normals and the edge adjacency (whose edge numbering follows the
+  /// node order). `flip` has one entry per triangle.
   void flip_triangles(const std::vector<char>& flip);
 
  private:
   void compute_normals();
+  void compute_neighbours();
 
   std::string name_;
   Matrix3X nodes_;
@@ -56,6 +63,7 @@ class TriangleSurface {
   Matrix3X node_normals_;
   std::vector<int> node_triangle_offsets_;
   std::vector<int> node_triangles_;
+  TriConn triangle_neighbours_;
 };
 
 /// Orients a tool surface for contact with a blank:

@@ -379,8 +379,16 @@ ShellForceResult compute_forces(Model& model, SolutionState& s, double dt) {
   }
   for (ContactInterface& c : model.contacts) {
     ToolState& tool = s.tools[static_cast<std::size_t>(c.tool)];
-    const ContactResult r =
-        compute_penalty_contact(c.pair, s.x, s.half_thickness, tool.displacement, s.f_contact);
+    // s.v is the mid-step velocity of the step dt just taken (dt = 0 on the first call).
+    const Vec3 tool_step =
+        dt > 0.0 ? Vec3(tool.displacement - tool.previous_displacement) : Vec3::Zero();
+    const ContactKinematics kinematics{.x = s.x,
+                                       .v = s.v,
+                                       .half_thickness = s.half_thickness,
+                                       .tool_displacement = tool.displacement,
+                                       .tool_displacement_increment = tool_step,
+                                       .dt = dt};
+    const ContactResult r = compute_penalty_contact(c.pair, kinematics, s.f_contact);
     tool.force += r.force_on_tool;
     tool.nodes_in_contact += r.nodes_in_contact;
     s.energies.contact += r.energy;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <random>
 
 #include "contact/contact_search.hpp"
 #include "contact/penalty_contact.hpp"
@@ -20,13 +21,22 @@ TriangleSurface make_flat(double z) {
   return test::make_height_field("die", 4, 4, 0, 4, 0, 4, [z](double, double) { return z; });
 }
 
-ContactPair make_pair(const TriangleSurface& s, int n_nodes, double k, double cutoff) {
+ContactPair make_pair(const TriangleSurface& s, int n_nodes, double k, double cutoff,
+                      ContactProjection projection = ContactProjection::orthogonal) {
   ContactPair pair;
   pair.surface = &s;
   pair.search = make_contact_search("modified", s);
   pair.stiffness = VectorX::Constant(n_nodes, k);
   pair.cutoff = cutoff;
+  pair.projection = projection;
   return pair;
+}
+
+/// Contact of nodes at rest (no relative motion: frictionless behaviour).
+ContactResult contact_at_rest(ContactPair& pair, const Matrix3X& x, const VectorX& h,
+                              const Vec3& tool_displacement, Matrix3X& f) {
+  const Matrix3X v = Matrix3X::Zero(3, x.cols());
+  return compute_penalty_contact(pair, {x, v, h, tool_displacement, Vec3::Zero(), 0.0}, f);
 }
 
 TEST(PenaltyContact, ForceIsStiffnessTimesPenetrationAlongNormal) {
@@ -41,7 +51,7 @@ TEST(PenaltyContact, ForceIsStiffnessTimesPenetrationAlongNormal) {
   ContactPair pair = make_pair(s, 5, 100.0, 2.0);
   const VectorX h = VectorX::Constant(5, 0.5);
   Matrix3X f = Matrix3X::Zero(3, 5);
-  const ContactResult r = compute_penalty_contact(pair, x, h, Vec3::Zero(), f);
+  const ContactResult r = contact_at_rest(pair, x, h, Vec3::Zero(), f);
   EXPECT_NEAR((f.col(0) - Vec3(0, 0, 40)).norm(), 0, 1e-12);
   EXPECT_EQ(f.col(1).norm(), 0.0);
   EXPECT_NEAR((f.col(2) - Vec3(0, 0, 80)).norm(), 0, 1e-12);
@@ -56,7 +66,7 @@ TEST(PenaltyContact, ForceIsStiffnessTimesPenetrationAlongNormal) {
   x2(2, 0) += 1.0;
   Matrix3X f2 = Matrix3X::Zero(3, 1);
   ContactPair pair1 = make_pair(s, 1, 100.0, 2.0);
-  compute_penalty_contact(pair1, x2, h.head(1), Vec3(0, 0, 1.0), f2);
+  contact_at_rest(pair1, x2, h.head(1), Vec3(0, 0, 1.0), f2);
   EXPECT_NEAR((f2.col(0) - Vec3(0, 0, 40)).norm(), 0, 1e-12);
 }
 
@@ -65,8 +75,7 @@ TEST(PenaltyContact, CutoffMustExceedHalfThickness) {
   ContactPair pair = make_pair(s, 1, 100.0, 0.4);
   Matrix3X x = Vec3(1, 1, 0.1);
   Matrix3X f = Matrix3X::Zero(3, 1);
-  EXPECT_THROW(compute_penalty_contact(pair, x, VectorX::Constant(1, 0.5), Vec3::Zero(), f),
-               InputError);
+  EXPECT_THROW(contact_at_rest(pair, x, VectorX::Constant(1, 0.5), Vec3::Zero(), f), InputError);
 }
 
 TEST(PenaltyContact, ForceIsMinusGradientOfPenaltyEnergy) {
@@ -88,7 +97,7 @@ TEST(PenaltyContact, ForceIsMinusGradientOfPenaltyEnergy) {
   auto energy_and_force = [&](const Vec3& p, Vec3& force) {
     Matrix3X x = p;
     Matrix3X f = Matrix3X::Zero(3, 1);
-    const double e = compute_penalty_contact(pair, x, h, Vec3::Zero(), f).energy;
+    const double e = contact_at_rest(pair, x, h, Vec3::Zero(), f).energy;
     force = f.col(0);
     return e;
   };
@@ -109,6 +118,92 @@ TEST(PenaltyContact, ForceIsMinusGradientOfPenaltyEnergy) {
     }
     EXPECT_NEAR((f + grad).norm(), 0, 1e-6 * f.norm()) << "at " << p.transpose();
   }
+}
+
+TEST(PenaltyContact, InterpolatedOnAFlatToolEqualsOrthogonal) {
+  // A tilted flat tool: the interpolated normal is the face normal and D the orthogonal distance,
+  // so forces and energies agree to round-off.
+  const TriangleSurface s = test::make_height_field(
+      "plane", 6, 6, -3, 3, -3, 3, [](double x, double y) { return 0.2 * x + 0.1 * y; });
+  const int n = 200;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-2.5, 2.5), dz(-0.8, 0.8);
+  Matrix3X x(3, n);
+  for (int i = 0; i < n; ++i) {
+    const double px = u(rng), py = u(rng);
+    x.col(i) = Vec3(px, py, 0.2 * px + 0.1 * py + dz(rng));
+  }
+  const VectorX h = VectorX::Constant(n, 0.5);
+  ContactPair orthogonal = make_pair(s, n, 100.0, 1.5, ContactProjection::orthogonal);
+  ContactPair interpolated = make_pair(s, n, 100.0, 1.5, ContactProjection::interpolated);
+  Matrix3X fo = Matrix3X::Zero(3, n), fi = Matrix3X::Zero(3, n);
+  const ContactResult ro = contact_at_rest(orthogonal, x, h, Vec3::Zero(), fo);
+  const ContactResult ri = contact_at_rest(interpolated, x, h, Vec3::Zero(), fi);
+  EXPECT_GT(ro.nodes_in_contact, 50);
+  EXPECT_EQ(ri.nodes_in_contact, ro.nodes_in_contact);
+  EXPECT_EQ(ri.projection_fallbacks, 0);
+  EXPECT_NEAR((fi - fo).cwiseAbs().maxCoeff(), 0, 1e-12);
+  EXPECT_NEAR(ri.energy, ro.energy, 1e-12 * ro.energy);
+}
+
+TEST(PenaltyContact, InterpolatedContactInTheFoldDeadZone) {
+  // REFERENCES.md item 2: flange z = 0 (x < 0) meeting a shoulder falling at 40 degrees; a node
+  // 0.3 mm from the fold edge inside the wedge of the face normals (no orthogonal projection onto
+  // either face) with half thickness 0.5 mm is in contact with both projections. The
+  // interpolated force is k (h - D) along n(T), D >= 0.3 (D is a distance to the surface along a
+  // line, at least the least distance).
+  const double slope = std::tan(40.0 * std::numbers::pi / 180);
+  const TriangleSurface s = test::make_height_field(
+      "shoulder", 8, 8, -4, 4, -4, 4, [slope](double x, double) { return x > 0 ? -x * slope : 0; });
+  const Vec3 dir = (Vec3::UnitZ() + Vec3(slope, 0, 1).normalized()).normalized();
+  Matrix3X x = Vec3(Vec3(0, 0.45, 0) + 0.3 * dir);
+  const VectorX h = VectorX::Constant(1, 0.5);
+  ContactPair orthogonal = make_pair(s, 1, 100.0, 1.5, ContactProjection::orthogonal);
+  ContactPair interpolated = make_pair(s, 1, 100.0, 1.5, ContactProjection::interpolated);
+  Matrix3X fo = Matrix3X::Zero(3, 1), fi = Matrix3X::Zero(3, 1);
+  const ContactResult ro = contact_at_rest(orthogonal, x, h, Vec3::Zero(), fo);
+  const ContactResult ri = contact_at_rest(interpolated, x, h, Vec3::Zero(), fi);
+  EXPECT_EQ(ro.nodes_in_contact, 1);
+  EXPECT_EQ(ri.nodes_in_contact, 1);
+  EXPECT_EQ(ri.projection_fallbacks, 0);
+  EXPECT_NEAR((fo.col(0) - 100.0 * 0.2 * dir).norm(), 0, 1e-12);  // gap -0.2 along p - edge
+  EXPECT_GT(fi.col(0).norm(), 0.0);
+  EXPECT_LE(fi.col(0).norm(), 100.0 * 0.2 * (1 + 1e-12));
+}
+
+TEST(PenaltyContact, InterpolatedForceIsNotAGradient) {
+  // The work of the contact force around a closed loop (a 0.15 mm circle in a vertical plane,
+  // the node in contact all the way, midpoint rule with 4000 steps) vanishes for a gradient
+  // field. Orthogonal: zero to the rule's error; interpolated: clearly not (so the driver must
+  // count its contact energy as work, not as 1/2 k g^2).
+  const TriangleSurface s = test::make_height_field(
+      "warped", 8, 8, -4, 4, -4, 4,
+      [](double x, double y) { return 0.8 * std::sin(0.7 * x) * std::cos(0.5 * y); });
+  const VectorX h = VectorX::Constant(1, 0.5);
+  const Vec3 centre(0.9, 0.35, 0.8 * std::sin(0.7 * 0.9) * std::cos(0.5 * 0.35) + 0.2);
+  const double r = 0.15, k = 100.0;
+  const int steps = 4000;
+  double work[2] = {0, 0};
+  for (int m = 0; m < 2; ++m) {
+    ContactPair pair = make_pair(
+        s, 1, k, 1.5, m == 0 ? ContactProjection::orthogonal : ContactProjection::interpolated);
+    for (int i = 0; i < steps; ++i) {
+      const double a0 = 2 * std::numbers::pi * i / steps,
+                   a1 = 2 * std::numbers::pi * (i + 1) / steps;
+      const double am = 0.5 * (a0 + a1);
+      const Vec3 p0 = centre + r * Vec3(std::cos(a0), 0.3 * std::cos(a0), std::sin(a0));
+      const Vec3 p1 = centre + r * Vec3(std::cos(a1), 0.3 * std::cos(a1), std::sin(a1));
+      const Matrix3X pm = Vec3(centre + r * Vec3(std::cos(am), 0.3 * std::cos(am), std::sin(am)));
+      Matrix3X f = Matrix3X::Zero(3, 1);
+      ASSERT_EQ(contact_at_rest(pair, pm, h, Vec3::Zero(), f).nodes_in_contact, 1);
+      work[m] += f.col(0).dot(p1 - p0);
+    }
+  }
+  const double scale = k * 0.3 * 2 * std::numbers::pi * r;  // |f| x loop length
+  std::printf("closed-loop work / (|f| x length): orthogonal %.2e, interpolated %.2e\n",
+              work[0] / scale, work[1] / scale);
+  EXPECT_LT(std::abs(work[0]), 1e-6 * scale);
+  EXPECT_GT(std::abs(work[1]), 1e-4 * scale);
 }
 
 TEST(PenaltyStiffness, ShellFormulaAndTimeStepCap) {
@@ -161,7 +256,7 @@ Bounce simulate_bounce(double m, double k, double v0, double dt) {
   double g_prev = x(2, 0) - 0.5;
   for (int n = 0; n < 1000000 && t_out < 0; ++n) {
     f.setZero();
-    compute_penalty_contact(pair, x, h, tool_displacement, f);
+    contact_at_rest(pair, x, h, tool_displacement, f);
     v_half += (dt / m) * f.col(0);
     x.col(0) += dt * v_half;
     t += dt;

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "core/errors.hpp"
 #include "mesh/triangle_surface.hpp"
@@ -78,6 +79,80 @@ TEST(TriangleSurface, AveragedNodalNormalIsNormalisedArithmeticMean) {
   EXPECT_NEAR((s.node_normals().col(0) - Vec3::UnitZ()).norm(), 0, 1e-14);
   EXPECT_NEAR((s.node_normals().col(1) - Vec3(1, -1, 2).normalized()).norm(), 0, 1e-14);
   EXPECT_NEAR((s.triangle_normals().col(0) - Vec3(1, 0, 1).normalized()).norm(), 0, 1e-14);
+}
+
+/// Checks the edge adjacency of `s` against its definition: a neighbour across edge a of t holds
+/// both end nodes of that edge and points back to t across the same edge; -1 exactly when no
+/// other triangle, or more than one, holds both nodes. Returns the number of boundary edges.
+int check_neighbours(const TriangleSurface& s) {
+  const TriConn& tri = s.triangles();
+  const TriConn& nb = s.triangle_neighbours();
+  EXPECT_EQ(nb.cols(), tri.cols());
+  int boundary = 0;
+  for (int t = 0; t < s.num_triangles(); ++t) {
+    for (int a = 0; a < 3; ++a) {
+      const int u = tri(a, t), v = tri((a + 1) % 3, t);
+      int holders = 0, holder = -1;
+      for (int w = 0; w < s.num_triangles(); ++w) {
+        if (w != t && (tri.col(w).array() == u).any() && (tri.col(w).array() == v).any()) {
+          ++holders;
+          holder = w;
+        }
+      }
+      if (holders != 1) {
+        EXPECT_EQ(nb(a, t), -1) << "triangle " << t << " edge " << a;
+        ++boundary;
+        continue;
+      }
+      EXPECT_EQ(nb(a, t), holder) << "triangle " << t << " edge " << a;
+      // Back across the same edge.
+      int back = -1;
+      for (int b = 0; b < 3; ++b) {
+        const int p = tri(b, holder), q = tri((b + 1) % 3, holder);
+        if ((p == u && q == v) || (p == v && q == u)) {
+          back = nb(b, holder);
+        }
+      }
+      EXPECT_EQ(back, t) << "triangle " << t << " edge " << a;
+    }
+  }
+  return boundary;
+}
+
+TEST(TriangleSurface, EdgeNeighbours) {
+  // 3 x 3 cells: 18 triangles, 12 boundary edges, each interior edge seen from both sides.
+  const TriangleSurface s = make_grid("flat", 3, flat);
+  EXPECT_EQ(check_neighbours(s), 12);
+  // Cell (0, 0) holds triangles 0 = (0, 1, 5) and 1 = (0, 5, 4): they meet across the diagonal
+  // 0 -> 5 (edge 2 of triangle 0 runs 5 -> 0, edge 0 of triangle 1 runs 0 -> 5); edge 0 of
+  // triangle 0 (0 -> 1) lies on the boundary y = 0; edge 1 of triangle 0 (1 -> 5) is shared with
+  // cell (1, 0)'s triangle 3 = (1, 6, 5).
+  EXPECT_EQ(s.triangle_neighbours()(2, 0), 1);
+  EXPECT_EQ(s.triangle_neighbours()(0, 1), 0);
+  EXPECT_EQ(s.triangle_neighbours()(0, 0), -1);
+  EXPECT_EQ(s.triangle_neighbours()(1, 0), 3);
+
+  // Flipping reorders each flipped triangle's edges; the adjacency follows.
+  TriangleSurface flipped = make_grid("flat", 3, flat);
+  std::vector<char> flip(18, 0);
+  for (int t = 0; t < 18; t += 3) {
+    flip[t] = 1;
+  }
+  flipped.flip_triangles(flip);
+  EXPECT_EQ(check_neighbours(flipped), 12);
+
+  // A fin: a third triangle on edge (0, 1) makes that edge non-manifold (no neighbour there).
+  Matrix3X x(3, 5);
+  x << 0, 1, 0, 0.5, 0.5,  //
+      0, 0, 1, -1, 0,      //
+      0, 0, 0, 0, 1;
+  TriConn t(3, 3);
+  t.col(0) << 0, 1, 2;
+  t.col(1) << 1, 0, 3;
+  t.col(2) << 0, 1, 4;
+  const TriangleSurface fin("fin", x, t);
+  EXPECT_EQ(fin.triangle_neighbours()(0, 0), -1);
+  EXPECT_EQ(check_neighbours(fin), 9);
 }
 
 TEST(TriangleSurface, DegenerateTriangleThrowsNamingIt) {
