@@ -123,12 +123,26 @@ VectorX compute_penalty_stiffness(const Matrix3X& nodes, const QuadConn& quads,
     if (diagonal[i] > 0) {
       k[i] = scale * bulk * area[i] / diagonal[i];
     }
-    if (dt_target > 0) {
-      const double omega_max = 2.0 * dt_safety / dt_target;
-      k[i] = std::min(k[i], nodal_mass[i] * omega_max * omega_max);
+  }
+  cap_penalty_stiffness(k, nodal_mass, dt_target, dt_safety);
+  return k;
+}
+
+int cap_penalty_stiffness(VectorX& stiffness, const VectorX& nodal_mass, double dt_target,
+                          double dt_safety) {
+  if (!(dt_target > 0)) {
+    return 0;
+  }
+  const double omega_max = 2.0 * dt_safety / dt_target;
+  int capped = 0;
+  for (Eigen::Index i = 0; i < stiffness.size(); ++i) {
+    const double limit = nodal_mass[i] * omega_max * omega_max;
+    if (stiffness[i] > limit) {
+      stiffness[i] = limit;
+      ++capped;
     }
   }
-  return k;
+  return capped;
 }
 
 }  // namespace sf

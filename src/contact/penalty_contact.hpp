@@ -104,4 +104,10 @@ VectorX compute_penalty_stiffness(const Matrix3X& nodes, const QuadConn& quads,
                                   double youngs_modulus, double poisson_ratio, double scale,
                                   double dt_target, double dt_safety = 0.9);
 
+/// The cap of compute_penalty_stiffness applied to given stiffnesses (N/mm, per node, changed in
+/// place): k_i <= m_i (2 dt_safety / dt_target)^2. Returns the number of nodes capped; dt_target
+/// <= 0: no cap.
+int cap_penalty_stiffness(VectorX& stiffness, const VectorX& nodal_mass, double dt_target,
+                          double dt_safety);
+
 }  // namespace sf

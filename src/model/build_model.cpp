@@ -260,12 +260,6 @@ void set_mass_and_time_step(const CaseConfig& config, Model& model, const ShellS
 void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& state) {
   const MaterialConfig& material = config.blank_material();
   for (const ContactConfig& cc : config.contacts) {
-    if (cc.friction_static != 0.0) {
-      throw InputError(fmt::format(
-          "{}: contact with tool '{}': friction = {} is not supported yet (this release's "
-          "contact is frictionless); set friction = 0.0",
-          config.file.string(), cc.tool, cc.friction_static));
-    }
     ContactInterface contact;
     const auto found = std::find_if(model.tools.begin(), model.tools.end(),
                                     [&](const Tool& t) { return t.name == cc.tool; });
@@ -285,10 +279,29 @@ void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& s
           "stable time step; use 0.95 or less with contact",
           config.file.string(), safety));
     }
-    contact.pair.stiffness = compute_penalty_stiffness(
-        model.blank.mesh.nodes, model.blank.mesh.quads, model.blank.mesh.triangles,
-        model.blank.mass, material.young, material.poisson, cc.penalty_scale, model.time_step,
-        contact_cap_factor);
+    if (cc.penalty_stiffness > 0.0) {
+      contact.pair.stiffness =
+          VectorX::Constant(model.blank.mesh.nodes.cols(), cc.penalty_stiffness);
+      const int capped = cap_penalty_stiffness(contact.pair.stiffness, model.blank.mass,
+                                               model.time_step, contact_cap_factor);
+      if (capped > 0) {
+        log_info(
+            "contact with tool '{}': penalty_stiffness = {} N/mm lowered at {} of {} blank nodes "
+            "to keep the stable time step (cap k <= m (2 f / dt)^2, docs/contact.md)",
+            cc.tool, cc.penalty_stiffness, capped, contact.pair.stiffness.size());
+      }
+    } else {
+      contact.pair.stiffness = compute_penalty_stiffness(
+          model.blank.mesh.nodes, model.blank.mesh.quads, model.blank.mesh.triangles,
+          model.blank.mass, material.young, material.poisson, cc.penalty_scale, model.time_step,
+          contact_cap_factor);
+    }
+    contact.pair.projection = cc.projection == ContactConfig::Projection::interpolated
+                                  ? ContactProjection::interpolated
+                                  : ContactProjection::orthogonal;
+    contact.pair.friction.static_coefficient = cc.friction_static;
+    contact.pair.friction.dynamic_coefficient = cc.friction_dynamic;
+    contact.pair.friction.decay = cc.friction_decay;
     // Nodes farther than this from the tool cannot touch it within one step.
     contact.pair.cutoff = 2.0 * config.blank.thickness;
     model.contacts.push_back(std::move(contact));
