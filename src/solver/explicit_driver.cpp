@@ -244,12 +244,20 @@ void check_energy(const Model& model, const SolutionState& s, double energy_scal
   // at its end already holds the first half kick, 1/2 m |dt/2 a(1)|^2 > 0.
   const double reference = std::max(e.supplied(), energy_scale);
   if (reference > 0.0 && e.total() > ratio * reference) {
+    // Mass-proportional damping applied explicitly (on v(n-1/2)) amplifies for c dt > 2.
+    const double c_dt = model.loads.damping * s.dt;
+    const std::string remedy =
+        c_dt >= 2.0 ? fmt::format(
+                          "control.damping = {} 1/s times the step {:.4e} s is {:.3g}, "
+                          "beyond the explicit damping's stability limit 2: lower it",
+                          model.loads.damping, s.dt, c_dt)
+                    : std::string("reduce the time-step safety factor or the penalty scale");
     throw InstabilityError(fmt::format(
         "energy blow-up at t = {:.6e} s, cycle {}: total energy {:.6e} N mm exceeds {} x the "
         "work supplied {:.6e} N mm (kinetic {:.4e}, internal {:.4e}, hourglass {:.4e}, contact "
-        "{:.4e}); reduce the time-step safety factor or the penalty scale",
+        "{:.4e}, damping {:.4e}); {}",
         s.time, s.cycle, e.total(), ratio, e.supplied(), e.kinetic, e.internal, e.hourglass,
-        e.contact));
+        e.contact, e.damping, remedy));
   }
 }
 
@@ -264,6 +272,7 @@ SolutionState make_initial_state(const Model& model) {
   s.f_int = Matrix3X::Zero(3, n);
   s.m_int = Matrix3X::Zero(3, n);
   s.f_contact = Matrix3X::Zero(3, n);
+  s.f_contact_previous = Matrix3X::Zero(3, n);
   s.f_ext = Matrix3X::Zero(3, n);
   s.m_ext = Matrix3X::Zero(3, n);
   s.f_ext_previous = Matrix3X::Zero(3, n);
@@ -372,7 +381,7 @@ ShellForceResult compute_forces(Model& model, SolutionState& s, double dt) {
   }
   s.half_thickness.array() *= model.blank.inverse_element_count.array();
 
-  s.energies.contact = 0.0;
+  s.contact_spring_energy = 0.0;
   for (ToolState& t : s.tools) {
     t.force.setZero();
     t.nodes_in_contact = 0;
@@ -383,7 +392,7 @@ ShellForceResult compute_forces(Model& model, SolutionState& s, double dt) {
         compute_penalty_contact(c.pair, s.x, s.half_thickness, tool.displacement, s.f_contact);
     tool.force += r.force_on_tool;
     tool.nodes_in_contact += r.nodes_in_contact;
-    s.energies.contact += r.energy;
+    s.contact_spring_energy += r.energy;
   }
   s.contact_seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_start).count();
@@ -413,6 +422,7 @@ void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previ
   s.m_int_previous.swap(s.m_int);
   s.f_ext_previous.swap(s.f_ext);
   s.m_ext_previous.swap(s.m_ext);
+  s.f_contact_previous.swap(s.f_contact);
   const ShellForceResult element_result = compute_forces(model, s, dt);
 
   // Energies by the trapezoidal rule on the work increments.
@@ -420,11 +430,13 @@ void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previ
   double element_work = 0.0;
   double load_work = 0.0;
   double damping_power = 0.0;
+  double contact_work = 0.0;  // of the contact forces on the blank
   const Eigen::Index n = s.x.cols();
   for (Eigen::Index i = 0; i < n; ++i) {
     element_work += 0.5 * dt *
                     ((s.f_int.col(i) + s.f_int_previous.col(i)).dot(s.v.col(i)) +
                      (s.m_int.col(i) + s.m_int_previous.col(i)).dot(s.omega.col(i)));
+    contact_work += 0.5 * dt * (s.f_contact.col(i) + s.f_contact_previous.col(i)).dot(s.v.col(i));
     load_work += 0.5 * dt *
                  ((s.f_ext.col(i) + s.f_ext_previous.col(i)).dot(s.v.col(i)) +
                   (s.m_ext.col(i) + s.m_ext_previous.col(i)).dot(s.omega.col(i)));
@@ -437,10 +449,16 @@ void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previ
   e.plastic_work += element_result.plastic_work;
   e.hourglass += hourglass_work;
   e.internal += element_work - hourglass_work;
+  // The contact energy is the work done against the contact forces, on the blank and on the tools
+  // (for the frictionless penalty: the spring energy 1/2 k g^2 up to the trapezoidal rule).
+  e.contact -= contact_work;
   for (std::size_t t = 0; t < s.tools.size(); ++t) {
-    // The driver holds the tool against the blank's force on it: it does -F . dd of work.
+    // Work of the blank's force F on the tool over the step; the driver holds the tool against
+    // it, doing -F . du of work.
     const Vec3 step = s.tools[t].displacement - s.tools[t].previous_displacement;
-    e.external_work -= 0.5 * (s.tools[t].force + s.tools[t].previous_force).dot(step);
+    const double reaction_work = 0.5 * (s.tools[t].force + s.tools[t].previous_force).dot(step);
+    e.contact -= reaction_work;
+    e.external_work -= reaction_work;
     const double pushing = -s.tools[t].force.dot(model.tools[t].motion.direction());
     s.tools[t].peak_force = std::max(s.tools[t].peak_force, pushing);
   }

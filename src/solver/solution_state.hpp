@@ -43,6 +43,11 @@ struct SolutionState {
   VectorX half_thickness;      ///< mm per node, the contact offset
   VectorX mass_before;         ///< tonne per node, scratch: the masses before this cycle's scaling
   VectorX inertia_before;      ///< tonne mm^2 per node, likewise
+  /// N, the contact forces on the blank nodes a step ago (for the contact work increment).
+  Matrix3X f_contact_previous;
+  /// N mm, sum of 1/2 k g^2 over the penalty springs at the current state: a diagnostic only
+  /// (energies.contact is the work done against the contact forces, docs/time-integration.md).
+  double contact_spring_energy = 0.0;
   /// Per node, bits 0-2: the translation components a prescribed velocity holds (set by
   /// make_initial_state; empty means none).
   std::vector<unsigned char> prescribed_mask;
