@@ -400,6 +400,7 @@ ShellForceResult compute_forces(Model& model, SolutionState& s, double dt) {
 }
 
 void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previous) {
+  const double time_before = s.time;  // t(n)
   const double weight = velocity_update_weight(dt, dt_previous);
   if (!update_velocities(model, s, weight)) {
     throw_non_finite(model, s);
@@ -410,12 +411,22 @@ void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previ
   s.cycle += 1;
   s.dt = dt;
 
-  // Tools move to their positions at the new time; the old ones stay for the work increment.
+  // Tools move to their positions at the new time; the old ones stay for the work increment. A
+  // force-controlled tool takes the same central-difference step as the blank's nodes, from the
+  // force and the blank's reaction at t(n) (the reaction of the last compute_forces): its travel
+  // at t(n+1) is found in the same cycle as the blank's positions, so the contact at t(n+1) below
+  // sees both at t(n+1).
   for (std::size_t t = 0; t < s.tools.size(); ++t) {
-    s.tools[t].previous_displacement = s.tools[t].displacement;
-    s.tools[t].previous_force = s.tools[t].force;
-    s.tools[t].travel = model.tools[t].motion.travel(s.time);
-    s.tools[t].displacement = model.tools[t].motion.displacement(s.time);
+    ToolState& tool = s.tools[t];
+    tool.previous_displacement = tool.displacement;
+    tool.previous_force = tool.force;
+    if (const auto& driven = model.tools[t].force_control) {
+      driven->step(time_before, tool.force, weight, dt, tool.velocity, tool.travel);
+      tool.displacement = tool.travel * driven->direction();
+    } else {
+      tool.travel = model.tools[t].motion.travel(s.time);
+      tool.displacement = model.tools[t].motion.displacement(s.time);
+    }
   }
 
   s.f_int_previous.swap(s.f_int);
@@ -452,17 +463,32 @@ void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previ
   // The contact energy is the work done against the contact forces, on the blank and on the tools
   // (for the frictionless penalty: the spring energy 1/2 k g^2 up to the trapezoidal rule).
   e.contact -= contact_work;
+  double tool_kinetic = 0.0;
   for (std::size_t t = 0; t < s.tools.size(); ++t) {
-    // Work of the blank's force F on the tool over the step; the driver holds the tool against
-    // it, doing -F . du of work.
-    const Vec3 step = s.tools[t].displacement - s.tools[t].previous_displacement;
-    const double reaction_work = 0.5 * (s.tools[t].force + s.tools[t].previous_force).dot(step);
+    ToolState& tool = s.tools[t];
+    // Work of the blank's force F on the tool over the step.
+    const Vec3 step = tool.displacement - tool.previous_displacement;
+    const double reaction_work = 0.5 * (tool.force + tool.previous_force).dot(step);
     e.contact -= reaction_work;
-    e.external_work -= reaction_work;
-    const double pushing = -s.tools[t].force.dot(model.tools[t].motion.direction());
-    s.tools[t].peak_force = std::max(s.tools[t].peak_force, pushing);
+    if (const auto& driven = model.tools[t].force_control) {
+      // The press does the work of the applied force along the travel; the tool's damping
+      // dissipates c M v^2 dt (on v(n+1/2), as for the blank); its kinetic energy is taken at
+      // the step end, like the blank's.
+      const double travel_step = dt * tool.velocity;
+      e.external_work +=
+          0.5 * (driven->applied_force(time_before) + driven->applied_force(s.time)) * travel_step;
+      e.damping += driven->damping() * driven->mass() * tool.velocity * tool.velocity * dt;
+      tool.speed = driven->whole_step_velocity(s.time, tool.force, tool.velocity, dt);
+      tool_kinetic += 0.5 * driven->mass() * tool.speed * tool.speed;
+    } else {
+      // The press holds the tool against F on its prescribed path: it does -F . du of work.
+      e.external_work -= reaction_work;
+      tool.speed = model.tools[t].motion.speed(s.time);
+    }
+    const double pushing = -tool.force.dot(model.tools[t].direction());
+    tool.peak_force = std::max(tool.peak_force, pushing);
   }
-  e.kinetic = whole_step_kinetic_energy(model, s, dt);
+  e.kinetic = whole_step_kinetic_energy(model, s, dt) + tool_kinetic;
 }
 
 RunSummary run_explicit(Model& model, const RunOptions& options) {
@@ -472,6 +498,7 @@ RunSummary run_explicit(Model& model, const RunOptions& options) {
   for (std::size_t t = 0; t < s.tools.size(); ++t) {
     s.tools[t].displacement = model.tools[t].motion.displacement(0.0);
     s.tools[t].travel = model.tools[t].motion.travel(0.0);
+    s.tools[t].speed = model.tools[t].motion.speed(0.0);
   }
 
   std::unique_ptr<FrameOutput> output;

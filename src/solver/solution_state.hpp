@@ -17,6 +17,12 @@ struct ToolState {
   double peak_force = 0.0;  ///< N, largest pushing force along the direction so far
   Vec3 previous_displacement = Vec3::Zero();  ///< mm, a step ago (for the work increment)
   Vec3 previous_force = Vec3::Zero();         ///< N, a step ago
+  /// mm/s along the direction at the state's time: a prescribed motion's speed; for a
+  /// force-controlled tool the whole-step velocity v(n+1) = v(n+1/2) + dt/2 u(n+1)
+  double speed = 0.0;
+  /// mm/s, force-controlled tools: the half-step velocity v(n+1/2) the step integrates (v(0)
+  /// before the first step)
+  double velocity = 0.0;
 };
 
 struct SolutionState {
