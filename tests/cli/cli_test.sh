@@ -24,6 +24,7 @@ cp -r "$src/cases/square_cup" "$work/case"; rm -rf "$work/case/results"
 demo="$work/case/case.toml"
 expect "check demo" 0 "Case is valid" -- "$sheetform" check "$demo"
 expect "check prints cycles" 0 "Cycles +about [0-9]+" -- "$sheetform" check "$demo"
+expect "check prints the force-controlled holder" 0 "'holder'.*force-controlled.*mass [0-9.e+-]+ tonne.*sqrt\(sum k / mass\) dt = 0\.[0-9]+" -- "$sheetform" check "$demo"
 expect "missing case file" 2 "case.toml" -- "$sheetform" run "$work/nowhere/case.toml"
 expect "no subcommand" 2 "subcommand" -- "$sheetform"
 
