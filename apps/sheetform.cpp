@@ -6,6 +6,7 @@
 //
 // Exit codes: 0 success, 2 bad input, 3 the run went unstable, 1 an internal error.
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -110,13 +111,28 @@ void print_model(const sf::Model& model) {
                      ? std::string("fixed")
                      : fmt::format("symmetry plane normal to {}", "xyz"[b.axis]));
   }
-  for (const sf::Tool& t : model.tools) {
+  for (std::size_t i = 0; i < model.tools.size(); ++i) {
+    const sf::Tool& t = model.tools[i];
+    std::string motion = "fixed";
+    if (t.force_control) {
+      // Its frequency on the contact springs of its pair, against the bound build_model checks.
+      double k_sum = 0.0;
+      for (const sf::ContactInterface& c : model.contacts) {
+        if (c.tool == static_cast<int>(i)) {
+          k_sum += c.pair.stiffness.sum();
+        }
+      }
+      motion = fmt::format(
+          "force-controlled along ({:.3g}, {:.3g}, {:.3g}), mass {:.4e} tonne, damping {} 1/s; "
+          "sqrt(sum k / mass) dt = {:.3f}",
+          t.direction().x(), t.direction().y(), t.direction().z(), t.force_control->mass(),
+          t.force_control->damping(), std::sqrt(k_sum / t.force_control->mass()) * model.time_step);
+    } else if (t.motion.moves()) {
+      motion = fmt::format("moves along ({:.3g}, {:.3g}, {:.3g})", t.direction().x(),
+                           t.direction().y(), t.direction().z());
+    }
     sf::log_info("Tool        '{}': {} nodes, {} triangles, {}\n", t.name, t.mesh.nodes.cols(),
-                 t.mesh.triangles.cols(),
-                 t.motion.moves()
-                     ? fmt::format("moves along ({:.3g}, {:.3g}, {:.3g})", t.motion.direction().x(),
-                                   t.motion.direction().y(), t.motion.direction().z())
-                     : std::string("fixed"));
+                 t.mesh.triangles.cols(), motion);
   }
   for (const sf::ContactInterface& c : model.contacts) {
     const sf::ContactConfig* cc = nullptr;

@@ -211,13 +211,15 @@ void read_curve(const TomlSection& s, std::string_view key, CurveConfig& curve) 
 
 void read_motion(const TomlSection& s, MotionConfig& motion) {
   using Type = MotionConfig::Type;
-  s.check_keys({"type", "direction", "curve"});
-  s.read_choice(
-      "type", motion.type,
-      {{"velocity", Type::velocity}, {"displacement", Type::displacement}, {"fixed", Type::fixed}},
-      Presence::required);
+  s.check_keys({"type", "direction", "curve", "mass", "damping"});
+  s.read_choice("type", motion.type,
+                {{"velocity", Type::velocity},
+                 {"displacement", Type::displacement},
+                 {"fixed", Type::fixed},
+                 {"force", Type::force}},
+                Presence::required);
   if (motion.type == Type::fixed) {
-    for (const auto key : {"direction", "curve"}) {
+    for (const auto key : {"direction", "curve", "mass", "damping"}) {
       if (s.has(key)) {
         s.fail_forbidden(key, "a fixed tool does not move");
       }
@@ -226,6 +228,23 @@ void read_motion(const TomlSection& s, MotionConfig& motion) {
   }
   s.read_direction("direction", motion.direction);
   read_curve(s, "curve", motion.curve);
+  if (motion.type != Type::force) {
+    for (const auto key : {"mass", "damping"}) {
+      if (s.has(key)) {
+        s.fail_forbidden(key,
+                         "a tool with a prescribed motion has no mass or damping of its own "
+                         "(they are for type = \"force\")");
+      }
+    }
+    return;
+  }
+  // A force-controlled tool: the curve is the force (N) along the direction; any sign (a negative
+  // force pulls the tool back, e.g. a holder lifting).
+  double mass = 0.0;
+  if (s.read_number("mass", mass, greater_than(0.0, "tonne"))) {
+    motion.mass = mass;
+  }
+  s.read_number("damping", motion.damping, at_least(0.0, "1/s"));
 }
 
 void read_tools(const TomlSection& top, const fs::path& folder, std::vector<ToolConfig>& tools) {
@@ -490,21 +509,29 @@ void read_control(const TomlSection& top, const CaseConfig& config, ControlConfi
       s.fail_value("stroke_tool",
                    fmt::format("the name of a [[tools]] entry ({})", tool_names(config)));
     }
+    if (tool->motion.type == MotionConfig::Type::force) {
+      s.fail_at(*s.find("stroke_tool"), s.key_path("stroke_tool"),
+                fmt::format("tool {} is force-controlled (type = \"force\": its travel follows "
+                            "from the force), so it cannot define the stroke; expected a tool "
+                            "with a prescribed motion (type = \"velocity\" or \"displacement\")",
+                            quote_toml_string(tool->name)));
+    }
     if (control.stroke > 0.0 && tool->motion.type == MotionConfig::Type::fixed) {
       s.fail_value("stroke_tool", "the name of a tool whose motion is not fixed (stroke > 0)");
     }
     return;
   }
   for (const auto& tool : config.tools) {
-    if (tool.motion.type != MotionConfig::Type::fixed) {
+    if (tool.motion.type == MotionConfig::Type::velocity ||
+        tool.motion.type == MotionConfig::Type::displacement) {
       control.stroke_tool = tool.name;
       return;
     }
   }
   if (control.stroke > 0.0) {
     s.fail_at(*s.find("stroke"), s.key_path("stroke"),
-              "stroke > 0 needs a moving tool, but no [[tools]] entry has a motion that is "
-              "not fixed");
+              "stroke > 0 needs a moving tool, but no [[tools]] entry has a prescribed motion "
+              "(type = \"velocity\" or \"displacement\")");
   }
 }
 

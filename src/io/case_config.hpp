@@ -79,11 +79,21 @@ struct BlankConfig {
   std::array<double, 3> rolling_direction{1.0, 0.0, 0.0};
 };
 
+/// How a tool moves: fixed, a prescribed velocity or displacement along `direction`, or driven by
+/// a force along `direction` (a blank holder: the tool is then a rigid body of mass `mass` that
+/// moves along that axis only, under the force and the blank's reaction).
 struct MotionConfig {
-  enum class Type { velocity, displacement, fixed };
+  enum class Type { velocity, displacement, fixed, force };
   Type type = Type::fixed;
   std::array<double, 3> direction{0.0, 0.0, -1.0};  ///< unit vector (normalised on read)
-  CurveConfig curve;  ///< velocity in mm/s, or displacement in mm, against time in s
+  /// velocity in mm/s, displacement in mm, or (force) the force in N pushing along `direction`,
+  /// against time in s
+  CurveConfig curve;
+  /// force: the tool's moving mass, tonne (> 0); absent = the blank's mass at the start (mass
+  /// scaling included), filled in by build_model. Not allowed for the other types.
+  std::optional<double> mass;
+  /// force: mass-proportional damping on the tool, 1/s (>= 0). Not allowed for the other types.
+  double damping = 0.0;
 };
 
 struct ToolConfig {
@@ -147,7 +157,7 @@ struct PrescribedVelocityConfig {
 struct ControlConfig {
   double end_time = 0.0;       ///< s; 0 = run until the stroke is reached
   double stroke = 0.0;         ///< mm of travel of `stroke_tool`; 0 = use end_time
-  std::string stroke_tool;     ///< tool whose travel defines the stroke (default: first moving)
+  std::string stroke_tool;     ///< tool of prescribed motion giving the stroke (default: the first)
   int output_frames = 20;      ///< frames written, evenly spaced in time (plus the initial one)
   int history_interval = 100;  ///< cycles between history rows
   int progress_interval = 0;   ///< cycles between progress lines; 0 = about every 2 s of wall time

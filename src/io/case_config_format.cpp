@@ -169,6 +169,17 @@ void write_tool(TomlWriter& w, const ToolConfig& tool) {
       w.vector("direction", tool.motion.direction);
       w.curve("curve", tool.motion.curve, "[[time (s), displacement (mm)], ...]");
       return;
+    case MotionConfig::Type::force:
+      w.string("type", "force");
+      w.vector("direction", tool.motion.direction, "unit vector, the force's direction");
+      w.curve("curve", tool.motion.curve, "[[time (s), force (N)], ...]");
+      if (tool.motion.mass) {
+        w.number("mass", *tool.motion.mass, "tonne");
+      } else {
+        w.comment("mass: not given, the blank's mass at the start (set when the model is built)");
+      }
+      w.number("damping", tool.motion.damping, "1/s, mass-proportional, on the tool");
+      return;
   }
 }
 

@@ -157,7 +157,11 @@ void read_tools(const CaseConfig& config, Model& model) {
     }
     tool.surface = TriangleSurface(tc.name, tool.mesh.nodes, tool.mesh.triangles);
     orient_surface(tool.surface, model.blank.mesh.nodes);
-    tool.motion = RigidToolMotion(tc.motion);
+    // A force-controlled tool keeps a fixed RigidToolMotion; its ForceControlledTool is set up
+    // once the blank's mass and the contact springs are known (set_up_force_controlled_tools).
+    if (tc.motion.type != MotionConfig::Type::force) {
+      tool.motion = RigidToolMotion(tc.motion);
+    }
     model.tools.push_back(std::move(tool));
   }
 }
@@ -308,6 +312,60 @@ void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& s
   }
 }
 
+// Force-controlled tools (docs/time-integration.md, "Force-controlled tools"): the mass (default:
+// the blank's mass at the start, mass scaling included) and its stability check. The tool is
+// coupled to the blank through the contact springs k_i, each capped at k_i <= m_i (w_c / dt)^2
+// (w_c = sqrt(4 - 4 safety^2) = 0.87 at safety 0.9: the share of the stability limit the element
+// leaves to the contact). The tool on those springs has the frequency sqrt(sum k / M), held to the
+// same bound: M >= sum k (dt / w_c)^2 over the blank nodes of its contact pair (every node: which
+// ones will touch is not known at the start). The default mass always passes, as sum k <=
+// (w_c / dt)^2 sum m. The damping must keep c dt < 1 at the initial step (the explicit update is
+// stable for c dt < 2: a factor 2 of margin for the step to grow in the run).
+void set_up_force_controlled_tools(const CaseConfig& config, Model& model) {
+  const double dt = model.time_step;
+  const double safety = config.control.time_step_safety;
+  const double w_c = std::sqrt(std::max(4.0 - 4.0 * safety * safety, 0.0));
+  const double default_mass = model.blank.mass.sum();
+  for (std::size_t t = 0; t < config.tools.size(); ++t) {
+    const ToolConfig& tc = config.tools[t];
+    if (tc.motion.type != MotionConfig::Type::force) {
+      continue;
+    }
+    const double mass = tc.motion.mass.value_or(default_mass);
+    double k_sum = 0.0;
+    for (const ContactInterface& c : model.contacts) {
+      if (c.tool == static_cast<int>(t)) {
+        k_sum += c.pair.stiffness.sum();
+      }
+    }
+    const double minimum_mass = k_sum * (dt / w_c) * (dt / w_c);
+    if (mass < minimum_mass * (1.0 - 1e-12)) {
+      throw InputError(fmt::format(
+          "{}: tools[{}].motion.mass: tool '{}': a mass of {:.4e} tonne is too small for a stable "
+          "run: on the blank's contact springs (sum k = {:.4e} N/mm) the tool's frequency "
+          "sqrt(sum k / mass) times the step {:.4e} s is {:.3f}, above {:.3f}, the bound on every "
+          "contact spring at time_step_safety = {}; give mass >= {:.4e} tonne, or leave it out "
+          "(the default, the blank's mass, {:.4e} tonne, is always enough)",
+          config.file.string(), t, tc.name, mass, k_sum, dt, std::sqrt(k_sum / mass) * dt, w_c,
+          safety, minimum_mass, default_mass));
+    }
+    if (!(tc.motion.damping * dt < 1.0)) {
+      throw InputError(fmt::format(
+          "{}: tools[{}].motion.damping: tool '{}': damping = {} 1/s times the step {:.4e} s is "
+          "{:.3g}; it must stay below 1 (the explicit damping is unstable at 2): give damping < "
+          "{:.4e} 1/s",
+          config.file.string(), t, tc.name, tc.motion.damping, dt, tc.motion.damping * dt,
+          1.0 / dt));
+    }
+    const auto& d = tc.motion.direction;
+    model.tools[t].force_control = ForceControlledTool(
+        Vec3(d[0], d[1], d[2]), LoadCurve(tc.motion.curve.times, tc.motion.curve.values), mass,
+        tc.motion.damping);
+    // The resolved case (written from model.config) holds the mass used.
+    model.config.tools[t].motion.mass = mass;
+  }
+}
+
 void set_end_time(const CaseConfig& config, Model& model) {
   const ControlConfig& control = config.control;
   if (!control.stroke_tool.empty()) {
@@ -319,6 +377,13 @@ void set_end_time(const CaseConfig& config, Model& model) {
   }
   if (control.stroke > 0.0) {
     const Tool& tool = model.tools[static_cast<std::size_t>(model.stroke_tool)];
+    if (tool.force_control) {
+      // read_case refuses it too; a configuration made in code may not have been read.
+      throw InputError(fmt::format(
+          "{}: control.stroke_tool: tool '{}' is force-controlled (its travel follows from the "
+          "force), so it cannot define the stroke",
+          config.file.string(), tool.name));
+    }
     model.end_time = tool.motion.time_at_travel(control.stroke, tool.name);
   } else {
     model.end_time = control.end_time;
@@ -346,6 +411,7 @@ Model build_model(const CaseConfig& config) {
       element_count(model.blank.part), config.blank.integration_points, config.blank.thickness);
   set_mass_and_time_step(config, model, state);
   set_up_contacts(config, model, state);
+  set_up_force_controlled_tools(config, model);
   set_end_time(config, model);
   set_up_loads(config, model);
   // The contact pairs point at the tools' surfaces: the tools vector must not move again.

@@ -2,6 +2,7 @@
 // The model: everything the time loop needs, built once from the case and the meshes by
 // build_model (the one place that sees both).
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "mesh/mesh_data.hpp"
 #include "mesh/triangle_surface.hpp"
 #include "model/boundary_conditions.hpp"
+#include "model/force_controlled_tool.hpp"
 #include "model/mass_scaling.hpp"
 #include "model/rigid_tool_motion.hpp"
 
@@ -67,12 +69,20 @@ struct ExternalLoads {
   }
 };
 
-/// A rigid tool: its triangulated surface in the reference position and its prescribed motion.
+/// A rigid tool: its triangulated surface in the reference position and how it moves: a
+/// prescribed motion, or (force_control set) driven by a force, its motion then fixed.
 struct Tool {
   std::string name;
   PartMesh mesh;  ///< as read (for output)
   TriangleSurface surface;
   RigidToolMotion motion;
+  std::optional<ForceControlledTool> force_control;
+
+  /// The axis the tool moves along (the prescribed motion's or the force's; the case's default,
+  /// -z, for a fixed tool).
+  const Vec3& direction() const {
+    return force_control ? force_control->direction() : motion.direction();
+  }
 };
 
 /// A contact pair between all blank nodes and one tool's triangles.

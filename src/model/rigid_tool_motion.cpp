@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "core/errors.hpp"
 
@@ -11,6 +12,9 @@ namespace sf {
 RigidToolMotion::RigidToolMotion(const MotionConfig& config)
     : type_(config.type),
       direction_(Vec3(config.direction[0], config.direction[1], config.direction[2]).normalized()) {
+  if (type_ == MotionConfig::Type::force) {
+    throw std::logic_error("RigidToolMotion: a force-controlled tool is a ForceControlledTool");
+  }
   if (type_ != MotionConfig::Type::fixed) {
     curve_ = LoadCurve(config.curve.times, config.curve.values);
   }
@@ -23,6 +27,7 @@ double RigidToolMotion::travel(double t) const {
     case MotionConfig::Type::displacement:
       return curve_.value(t);
     case MotionConfig::Type::fixed:
+    case MotionConfig::Type::force:
       break;
   }
   return 0.0;
@@ -37,6 +42,7 @@ double RigidToolMotion::speed(double t) const {
       return (curve_.value(t + h) - curve_.value(t)) / h;
     }
     case MotionConfig::Type::fixed:
+    case MotionConfig::Type::force:
       break;
   }
   return 0.0;

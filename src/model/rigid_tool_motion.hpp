@@ -1,6 +1,7 @@
 #pragma once
 // The prescribed rigid motion of a tool: a translation along a fixed direction, given as a
-// velocity or a displacement curve over time.
+// velocity or a displacement curve over time. (A force-controlled tool is a ForceControlledTool;
+// its RigidToolMotion is fixed.)
 #include "core/types.hpp"
 #include "io/case_config.hpp"
 #include "model/load_curve.hpp"

@@ -7,9 +7,15 @@ struct Energies {
   /// Translational + rotational, at the step end t(n+1): from the whole-step velocity v(n+1) =
   /// v(n+1/2) + dt/2 a(n+1) (docs/time-integration.md)
   double kinetic = 0.0;
-  double internal = 0.0;       ///< work of the element forces, hourglass work excluded
-  double hourglass = 0.0;      ///< work of the hourglass forces
-  double contact = 0.0;        ///< elastic energy stored in the penalty springs, 1/2 k g^2
+  double internal = 0.0;   ///< work of the element forces, hourglass work excluded
+  double hourglass = 0.0;  ///< work of the hourglass forces
+  /// Work done against the contact forces, accumulated each step by the trapezoidal rule (the
+  /// sliding energy of LS-DYNA): dE = -1/2 sum_i (fc_i(n) + fc_i(n+1)) . (x_i(n+1) - x_i(n))
+  /// - sum_tools 1/2 (F_t(n) + F_t(n+1)) . (u_t(n+1) - u_t(n)), fc the contact force on blank
+  /// node i, F_t the blank's force on tool t, u_t the tool's displacement. For frictionless
+  /// penalty contact it equals the spring energy sum 1/2 k g^2 up to the trapezoidal rule's error;
+  /// friction and non-gradient normals make it differ (docs/time-integration.md).
+  double contact = 0.0;
   double damping = 0.0;        ///< dissipated by mass-proportional damping
   double external_work = 0.0;  ///< work done on the blank by the tools, loads and prescribed motion
   double initial_kinetic = 0.0;  ///< kinetic energy of the initial velocities

@@ -244,12 +244,20 @@ void check_energy(const Model& model, const SolutionState& s, double energy_scal
   // at its end already holds the first half kick, 1/2 m |dt/2 a(1)|^2 > 0.
   const double reference = std::max(e.supplied(), energy_scale);
   if (reference > 0.0 && e.total() > ratio * reference) {
+    // Mass-proportional damping applied explicitly (on v(n-1/2)) amplifies for c dt > 2.
+    const double c_dt = model.loads.damping * s.dt;
+    const std::string remedy =
+        c_dt >= 2.0 ? fmt::format(
+                          "control.damping = {} 1/s times the step {:.4e} s is {:.3g}, "
+                          "beyond the explicit damping's stability limit 2: lower it",
+                          model.loads.damping, s.dt, c_dt)
+                    : std::string("reduce the time-step safety factor or the penalty scale");
     throw InstabilityError(fmt::format(
         "energy blow-up at t = {:.6e} s, cycle {}: total energy {:.6e} N mm exceeds {} x the "
         "work supplied {:.6e} N mm (kinetic {:.4e}, internal {:.4e}, hourglass {:.4e}, contact "
-        "{:.4e}); reduce the time-step safety factor or the penalty scale",
+        "{:.4e}, damping {:.4e}); {}",
         s.time, s.cycle, e.total(), ratio, e.supplied(), e.kinetic, e.internal, e.hourglass,
-        e.contact));
+        e.contact, e.damping, remedy));
   }
 }
 
@@ -264,6 +272,7 @@ SolutionState make_initial_state(const Model& model) {
   s.f_int = Matrix3X::Zero(3, n);
   s.m_int = Matrix3X::Zero(3, n);
   s.f_contact = Matrix3X::Zero(3, n);
+  s.f_contact_previous = Matrix3X::Zero(3, n);
   s.f_ext = Matrix3X::Zero(3, n);
   s.m_ext = Matrix3X::Zero(3, n);
   s.f_ext_previous = Matrix3X::Zero(3, n);
@@ -372,7 +381,7 @@ ShellForceResult compute_forces(Model& model, SolutionState& s, double dt) {
   }
   s.half_thickness.array() *= model.blank.inverse_element_count.array();
 
-  s.energies.contact = 0.0;
+  s.contact_spring_energy = 0.0;
   for (ToolState& t : s.tools) {
     t.force.setZero();
     t.nodes_in_contact = 0;
@@ -391,7 +400,7 @@ ShellForceResult compute_forces(Model& model, SolutionState& s, double dt) {
     const ContactResult r = compute_penalty_contact(c.pair, kinematics, s.f_contact);
     tool.force += r.force_on_tool;
     tool.nodes_in_contact += r.nodes_in_contact;
-    s.energies.contact += r.energy;
+    s.contact_spring_energy += r.energy;
   }
   s.contact_seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_start).count();
@@ -399,6 +408,7 @@ ShellForceResult compute_forces(Model& model, SolutionState& s, double dt) {
 }
 
 void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previous) {
+  const double time_before = s.time;  // t(n)
   const double weight = velocity_update_weight(dt, dt_previous);
   if (!update_velocities(model, s, weight)) {
     throw_non_finite(model, s);
@@ -409,18 +419,29 @@ void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previ
   s.cycle += 1;
   s.dt = dt;
 
-  // Tools move to their positions at the new time; the old ones stay for the work increment.
+  // Tools move to their positions at the new time; the old ones stay for the work increment. A
+  // force-controlled tool takes the same central-difference step as the blank's nodes, from the
+  // force and the blank's reaction at t(n) (the reaction of the last compute_forces): its travel
+  // at t(n+1) is found in the same cycle as the blank's positions, so the contact at t(n+1) below
+  // sees both at t(n+1).
   for (std::size_t t = 0; t < s.tools.size(); ++t) {
-    s.tools[t].previous_displacement = s.tools[t].displacement;
-    s.tools[t].previous_force = s.tools[t].force;
-    s.tools[t].travel = model.tools[t].motion.travel(s.time);
-    s.tools[t].displacement = model.tools[t].motion.displacement(s.time);
+    ToolState& tool = s.tools[t];
+    tool.previous_displacement = tool.displacement;
+    tool.previous_force = tool.force;
+    if (const auto& driven = model.tools[t].force_control) {
+      driven->step(time_before, tool.force, weight, dt, tool.velocity, tool.travel);
+      tool.displacement = tool.travel * driven->direction();
+    } else {
+      tool.travel = model.tools[t].motion.travel(s.time);
+      tool.displacement = model.tools[t].motion.displacement(s.time);
+    }
   }
 
   s.f_int_previous.swap(s.f_int);
   s.m_int_previous.swap(s.m_int);
   s.f_ext_previous.swap(s.f_ext);
   s.m_ext_previous.swap(s.m_ext);
+  s.f_contact_previous.swap(s.f_contact);
   const ShellForceResult element_result = compute_forces(model, s, dt);
 
   // Energies by the trapezoidal rule on the work increments.
@@ -428,11 +449,13 @@ void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previ
   double element_work = 0.0;
   double load_work = 0.0;
   double damping_power = 0.0;
+  double contact_work = 0.0;  // of the contact forces on the blank
   const Eigen::Index n = s.x.cols();
   for (Eigen::Index i = 0; i < n; ++i) {
     element_work += 0.5 * dt *
                     ((s.f_int.col(i) + s.f_int_previous.col(i)).dot(s.v.col(i)) +
                      (s.m_int.col(i) + s.m_int_previous.col(i)).dot(s.omega.col(i)));
+    contact_work += 0.5 * dt * (s.f_contact.col(i) + s.f_contact_previous.col(i)).dot(s.v.col(i));
     load_work += 0.5 * dt *
                  ((s.f_ext.col(i) + s.f_ext_previous.col(i)).dot(s.v.col(i)) +
                   (s.m_ext.col(i) + s.m_ext_previous.col(i)).dot(s.omega.col(i)));
@@ -445,14 +468,35 @@ void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previ
   e.plastic_work += element_result.plastic_work;
   e.hourglass += hourglass_work;
   e.internal += element_work - hourglass_work;
+  // The contact energy is the work done against the contact forces, on the blank and on the tools
+  // (for the frictionless penalty: the spring energy 1/2 k g^2 up to the trapezoidal rule).
+  e.contact -= contact_work;
+  double tool_kinetic = 0.0;
   for (std::size_t t = 0; t < s.tools.size(); ++t) {
-    // The driver holds the tool against the blank's force on it: it does -F . dd of work.
-    const Vec3 step = s.tools[t].displacement - s.tools[t].previous_displacement;
-    e.external_work -= 0.5 * (s.tools[t].force + s.tools[t].previous_force).dot(step);
-    const double pushing = -s.tools[t].force.dot(model.tools[t].motion.direction());
-    s.tools[t].peak_force = std::max(s.tools[t].peak_force, pushing);
+    ToolState& tool = s.tools[t];
+    // Work of the blank's force F on the tool over the step.
+    const Vec3 step = tool.displacement - tool.previous_displacement;
+    const double reaction_work = 0.5 * (tool.force + tool.previous_force).dot(step);
+    e.contact -= reaction_work;
+    if (const auto& driven = model.tools[t].force_control) {
+      // The press does the work of the applied force along the travel; the tool's damping
+      // dissipates c M v^2 dt (on v(n+1/2), as for the blank); its kinetic energy is taken at
+      // the step end, like the blank's.
+      const double travel_step = dt * tool.velocity;
+      e.external_work +=
+          0.5 * (driven->applied_force(time_before) + driven->applied_force(s.time)) * travel_step;
+      e.damping += driven->damping() * driven->mass() * tool.velocity * tool.velocity * dt;
+      tool.speed = driven->whole_step_velocity(s.time, tool.force, tool.velocity, dt);
+      tool_kinetic += 0.5 * driven->mass() * tool.speed * tool.speed;
+    } else {
+      // The press holds the tool against F on its prescribed path: it does -F . du of work.
+      e.external_work -= reaction_work;
+      tool.speed = model.tools[t].motion.speed(s.time);
+    }
+    const double pushing = -tool.force.dot(model.tools[t].direction());
+    tool.peak_force = std::max(tool.peak_force, pushing);
   }
-  e.kinetic = whole_step_kinetic_energy(model, s, dt);
+  e.kinetic = whole_step_kinetic_energy(model, s, dt) + tool_kinetic;
 }
 
 RunSummary run_explicit(Model& model, const RunOptions& options) {
@@ -462,6 +506,7 @@ RunSummary run_explicit(Model& model, const RunOptions& options) {
   for (std::size_t t = 0; t < s.tools.size(); ++t) {
     s.tools[t].displacement = model.tools[t].motion.displacement(0.0);
     s.tools[t].travel = model.tools[t].motion.travel(0.0);
+    s.tools[t].speed = model.tools[t].motion.speed(0.0);
   }
 
   std::unique_ptr<FrameOutput> output;

@@ -23,6 +23,7 @@ std::vector<std::string> history_columns(const Model& model) {
                                       "scaled_elements"};
   for (const Tool& t : model.tools) {
     columns.push_back(t.name + "_travel");
+    columns.push_back(t.name + "_speed");
     columns.push_back(t.name + "_force");
     columns.push_back(t.name + "_nodes_in_contact");
   }
@@ -143,8 +144,9 @@ void FrameOutput::append_history(const Model& model, const SolutionState& s) {
   }
   for (std::size_t t = 0; t < model.tools.size(); ++t) {
     row_[k++] = s.tools[t].travel;
-    // Positive when the blank resists the tool's motion (the punch force).
-    row_[k++] = -s.tools[t].force.dot(model.tools[t].motion.direction());
+    row_[k++] = s.tools[t].speed;
+    // Positive when the blank resists the tool's motion (the punch force; a holder's force).
+    row_[k++] = -s.tools[t].force.dot(model.tools[t].direction());
     row_[k++] = s.tools[t].nodes_in_contact;
   }
   for (const SearchAuditRecord& r : audits_.records()) {

@@ -42,8 +42,13 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
     ToolSummary ts;
     ts.name = model.tools[t].name;
     ts.travel = s.tools[t].travel;
-    ts.final_force = -s.tools[t].force.dot(model.tools[t].motion.direction());
+    ts.speed = s.tools[t].speed;
+    ts.final_force = -s.tools[t].force.dot(model.tools[t].direction());
     ts.peak_force = s.tools[t].peak_force;
+    if (const auto& driven = model.tools[t].force_control) {
+      ts.force_controlled = true;
+      ts.applied_force = driven->applied_force(s.time);
+    }
     r.tools.push_back(ts);
   }
   for (const DrawInConfig& dc : model.config.draw_ins) {
@@ -91,8 +96,12 @@ std::string format_run_summary(const RunSummary& r) {
   add(fmt::format("  thickness           {:.4f} to {:.4f} mm", r.min_thickness, r.max_thickness));
   add(fmt::format("  max plastic strain  {:.4f}", r.max_plastic_strain));
   for (const ToolSummary& t : r.tools) {
-    add(fmt::format("  tool {:<14} travel {:8.3f} mm, force {:10.1f} N, peak {:10.1f} N", t.name,
-                    t.travel, t.final_force, t.peak_force));
+    add(fmt::format("  tool {:<14} travel {:8.3f} mm, force {:10.1f} N, peak {:10.1f} N{}", t.name,
+                    t.travel, t.final_force, t.peak_force,
+                    t.force_controlled
+                        ? fmt::format(" (force-controlled: applied {:.1f} N, speed {:.4g} mm/s)",
+                                      t.applied_force, t.speed)
+                        : std::string()));
   }
   for (const DrawInResult& d : r.draw_ins) {
     if (d.measured >= 0.0) {
@@ -155,8 +164,13 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
   j["max_thickness_mm"] = r.max_thickness;
   j["max_plastic_strain"] = r.max_plastic_strain;
   for (const ToolSummary& t : r.tools) {
-    j["tools"][t.name] = {
-        {"travel_mm", t.travel}, {"final_force_N", t.final_force}, {"peak_force_N", t.peak_force}};
+    j["tools"][t.name] = {{"travel_mm", t.travel},
+                          {"speed_mm_s", t.speed},
+                          {"final_force_N", t.final_force},
+                          {"peak_force_N", t.peak_force}};
+    if (t.force_controlled) {
+      j["tools"][t.name]["applied_force_N"] = t.applied_force;
+    }
   }
   for (const DrawInResult& d : r.draw_ins) {
     nlohmann::json entry = {{"computed_mm", d.computed}};

@@ -20,8 +20,11 @@ struct DrawInResult {
 struct ToolSummary {
   std::string name;
   double travel = 0.0;       ///< mm, at the end
+  double speed = 0.0;        ///< mm/s along the direction, at the end
   double final_force = 0.0;  ///< N, pushing force along the motion at the end
   double peak_force = 0.0;   ///< N
+  bool force_controlled = false;
+  double applied_force = 0.0;  ///< N, force-controlled tools: the applied force at the end
 };
 
 /// The search audit of one contact pair (audit = true), over the run.

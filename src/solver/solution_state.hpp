@@ -17,6 +17,12 @@ struct ToolState {
   double peak_force = 0.0;  ///< N, largest pushing force along the direction so far
   Vec3 previous_displacement = Vec3::Zero();  ///< mm, a step ago (for the work increment)
   Vec3 previous_force = Vec3::Zero();         ///< N, a step ago
+  /// mm/s along the direction at the state's time: a prescribed motion's speed; for a
+  /// force-controlled tool the whole-step velocity v(n+1) = v(n+1/2) + dt/2 u(n+1)
+  double speed = 0.0;
+  /// mm/s, force-controlled tools: the half-step velocity v(n+1/2) the step integrates (v(0)
+  /// before the first step)
+  double velocity = 0.0;
 };
 
 struct SolutionState {
@@ -43,6 +49,11 @@ struct SolutionState {
   VectorX half_thickness;      ///< mm per node, the contact offset
   VectorX mass_before;         ///< tonne per node, scratch: the masses before this cycle's scaling
   VectorX inertia_before;      ///< tonne mm^2 per node, likewise
+  /// N, the contact forces on the blank nodes a step ago (for the contact work increment).
+  Matrix3X f_contact_previous;
+  /// N mm, sum of 1/2 k g^2 over the penalty springs at the current state: a diagnostic only
+  /// (energies.contact is the work done against the contact forces, docs/time-integration.md).
+  double contact_spring_energy = 0.0;
   /// Per node, bits 0-2: the translation components a prescribed velocity holds (set by
   /// make_initial_state; empty means none).
   std::vector<unsigned char> prescribed_mask;

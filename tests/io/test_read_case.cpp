@@ -469,6 +469,8 @@ void expect_same_case(const sf::CaseConfig& a, const sf::CaseConfig& b) {
     EXPECT_EQ(x.motion.direction, y.motion.direction);
     EXPECT_EQ(x.motion.curve.times, y.motion.curve.times);
     EXPECT_EQ(x.motion.curve.values, y.motion.curve.values);
+    EXPECT_EQ(x.motion.mass, y.motion.mass);
+    EXPECT_EQ(x.motion.damping, y.motion.damping);
   }
   ASSERT_EQ(a.contacts.size(), b.contacts.size());
   for (std::size_t i = 0; i < a.contacts.size(); ++i) {
