@@ -28,6 +28,9 @@ struct Energies {
   /// Plastic dissipation at the integration points. Informational: it is PART of `internal`
   /// (internal = elastic energy + plastic work), not a term of its own in the balance.
   double plastic_work = 0.0;
+  /// Work dissipated by Coulomb friction (slip times the friction force). Informational: it is
+  /// PART of `contact` (the work done against all contact forces), not a term of its own.
+  double friction_work = 0.0;
 
   double total() const { return kinetic + internal + hourglass + contact + damping + mass_scaling; }
   /// What the total must equal: the work put in plus the initial kinetic energy.

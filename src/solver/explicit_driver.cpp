@@ -401,6 +401,7 @@ ShellForceResult compute_forces(Model& model, SolutionState& s, double dt) {
     tool.force += r.force_on_tool;
     tool.nodes_in_contact += r.nodes_in_contact;
     s.contact_spring_energy += r.energy;
+    s.energies.friction_work += r.friction_work;
   }
   s.contact_seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - contact_start).count();

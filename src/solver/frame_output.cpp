@@ -16,6 +16,7 @@ std::vector<std::string> history_columns(const Model& model) {
                                       "damping_energy",
                                       "mass_scaling_energy",
                                       "plastic_work",
+                                      "friction_work",
                                       "external_work",
                                       "energy_balance_error",
                                       "added_mass",
@@ -137,8 +138,8 @@ void FrameOutput::append_history(const Model& model, const SolutionState& s) {
   const MassScaling& scaling = model.blank.scaling;
   for (double value : {s.time, s.dt, s.stable_dt, static_cast<double>(s.dt_element), e.kinetic,
                        e.internal, e.hourglass, e.contact, e.damping, e.mass_scaling,
-                       e.plastic_work, e.external_work, e.balance_error(), scaling.added_mass,
-                       100.0 * scaling.added_mass / model.blank.physical_mass,
+                       e.plastic_work, e.friction_work, e.external_work, e.balance_error(),
+                       scaling.added_mass, 100.0 * scaling.added_mass / model.blank.physical_mass,
                        static_cast<double>(scaling.scaled_elements)}) {
     row_[k++] = value;
   }

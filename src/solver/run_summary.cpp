@@ -84,8 +84,9 @@ std::string format_run_summary(const RunSummary& r) {
                   r.energies.external_work));
   add(
       fmt::format("                      damping {:.4e}, mass scaling {:.4e}; plastic work {:.4e} "
-                  "(part of internal)",
-                  r.energies.damping, r.energies.mass_scaling, r.energies.plastic_work));
+                  "(part of internal), friction work {:.4e} (part of contact)",
+                  r.energies.damping, r.energies.mass_scaling, r.energies.plastic_work,
+                  r.energies.friction_work));
   add(fmt::format("  energy balance      {:+.3e} (total - external work, relative)",
                   r.energies.balance_error()));
   add(fmt::format("  kinetic / internal  {:.4f} at the end, {:.4f} at most after 10% of the run",
@@ -149,6 +150,7 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
                      {"initial_kinetic", r.energies.initial_kinetic},
                      {"mass_scaling", r.energies.mass_scaling},
                      {"plastic_work", r.energies.plastic_work},
+                     {"friction_work", r.energies.friction_work},
                      {"external_work", r.energies.external_work},
                      {"balance_error", r.energies.balance_error()}};
   j["kinetic_ratio_end"] = r.energies.kinetic_ratio();
