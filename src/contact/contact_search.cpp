@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include "contact/modified_search.hpp"
+#include "contact/standard_search.hpp"
 #include "core/errors.hpp"
 
 namespace sf {
@@ -15,9 +16,16 @@ std::unique_ptr<ContactSearch> make_contact_search(std::string_view name,
   if (name == "modified_brute_force") {
     return std::make_unique<ModifiedBruteForceSearch>(surface);
   }
-  throw InputError(fmt::format(
-      "tool '{}': unknown contact search '{}' (accepted: modified, modified_brute_force)",
-      surface.name(), name));
+  if (name == "standard") {
+    return std::make_unique<StandardSearch>(surface);
+  }
+  if (name == "standard_brute_force") {
+    return std::make_unique<StandardBruteForceSearch>(surface);
+  }
+  throw InputError(
+      fmt::format("tool '{}': unknown contact search '{}' (accepted: standard, "
+                  "standard_brute_force, modified, modified_brute_force)",
+                  surface.name(), name));
 }
 
 }  // namespace sf

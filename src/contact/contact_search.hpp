@@ -64,7 +64,11 @@ class ContactSearch {
 /// Makes the search called `name` over `surface` (which must outlive it):
 ///  - "modified": the paper's search (closest triangle over all triangles), accelerated by a
 ///    uniform grid of triangle bounding boxes; exactly the brute-force answer;
-///  - "modified_brute_force": the same, testing every triangle per query (the paper's cost).
+///  - "modified_brute_force": the same, testing every triangle per query (the paper's cost);
+///  - "standard": the standard search (Benson & Hallquist 1990): the triangles around the tool
+///    node closest to the point; the node found with a grid. Can return a wrong triangle (the
+///    paper's figure 1): kept for comparison;
+///  - "standard_brute_force": the same, the closest node over every node (the paper's cost);
 /// Throws InputError for an unknown name, listing the accepted ones.
 std::unique_ptr<ContactSearch> make_contact_search(std::string_view name,
                                                    const TriangleSurface& surface);
