@@ -32,10 +32,10 @@ using test::warp;
 
 /// Every search the factory makes.
 constexpr const char* kAllSearches[] = {"standard", "standard_brute_force", "modified",
-                                        "modified_brute_force"};
+                                        "modified_brute_force", "cached"};
 
-/// Makes `name` over s, prepared for one blank node: the configuration tests query node 0 (a
-/// search with per-node state answers from it, the others from find_closest).
+/// Makes `name` over s, prepared for one blank node: the configuration tests query node 0, so
+/// that the cached search answers from its candidate list (the others from find_closest).
 std::unique_ptr<ContactSearch> make_for_one_node(const char* name, const TriangleSurface& s) {
   auto search = make_contact_search(name, s);
   search->prepare(1);
@@ -299,7 +299,7 @@ TEST(ModifiedSearch, FactoryNamesAndErrors) {
     FAIL() << "no exception";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find(
-                  "standard, standard_brute_force, modified, modified_brute_force"),
+                  "standard, standard_brute_force, modified, modified_brute_force, cached"),
               std::string::npos);
     EXPECT_NE(std::string(e.what()).find("closest_node"), std::string::npos);
   }
