@@ -50,7 +50,22 @@ class BoxGrid {
   /// so its distance from p is at least the least distance from p to a face of that box beyond
   /// which cells remain: once that exceeds the bound, nothing farther can be within it.
   template <class Test>
-  void visit(const Vec3& p, double bound, Test&& test) const;
+  void visit(const Vec3& p, double bound, Test&& test) const {
+    visit(p, bound, test, NoCounter{});
+  }
+
+  /// The same, reporting its work to `counter` (for operation counts): counter.shell() for each
+  /// shell bound checked, counter.cell() for each cell box checked, counter.item() for each item
+  /// box checked.
+  template <class Test, class Counter>
+  void visit(const Vec3& p, double bound, Test&& test, Counter&& counter) const;
+
+  /// A counter that counts nothing (the default).
+  struct NoCounter {
+    void shell() const {}
+    void cell() const {}
+    void item() const {}
+  };
 
  private:
   int cell_index(int i, int j, int k) const { return (k * cells_[1] + j) * cells_[0] + i; }
@@ -63,8 +78,8 @@ class BoxGrid {
   std::vector<int> cell_items_;    ///< cell_items_[cell_offsets_[c] .. cell_offsets_[c+1])
 };
 
-template <class Test>
-void BoxGrid::visit(const Vec3& p, double bound, Test&& test) const {
+template <class Test, class Counter>
+void BoxGrid::visit(const Vec3& p, double bound, Test&& test, Counter&& counter) const {
   if (box_lo_.empty() || !p.allFinite()) {
     return;
   }
@@ -76,6 +91,7 @@ void BoxGrid::visit(const Vec3& p, double bound, Test&& test) const {
   double bound2 = bound * bound;
 
   auto visit_cell = [&](int i, int j, int k) {
+    counter.cell();
     const Vec3 cell_lo = lo_ + h_ * Vec3(i, j, k);
     const Vec3 cell_hi = cell_lo + Vec3::Constant(h_);
     // The last cell of each axis reaches the grid's end, which lies inside [cell_lo, cell_hi].
@@ -85,6 +101,7 @@ void BoxGrid::visit(const Vec3& p, double bound, Test&& test) const {
     const int cell = cell_index(i, j, k);
     for (int q = cell_offsets_[cell]; q < cell_offsets_[cell + 1]; ++q) {
       const int item = cell_items_[q];
+      counter.item();
       if (squared_distance_to_box(p, box_lo_[item], box_hi_[item]) > bound2) {
         continue;
       }
@@ -95,6 +112,7 @@ void BoxGrid::visit(const Vec3& p, double bound, Test&& test) const {
 
   for (int r = 0;; ++r) {
     if (r > 0) {
+      counter.shell();
       double lower = std::numeric_limits<double>::infinity();
       bool cells_left = false;
       for (int a = 0; a < 3; ++a) {

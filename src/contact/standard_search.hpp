@@ -78,6 +78,12 @@ class StandardSearch final : public StandardSearchBase {
   /// equals, looking no farther than `radius` (mm, may be +infinity); -1 if there is none.
   int closest_node(const Vec3& p, double radius) const;
 
+  /// The node grid (item i = tool node grid_nodes()[i]), for diagnostics and operation counts.
+  const detail::BoxGrid& grid() const { return grid_; }
+  const std::vector<int>& grid_nodes() const { return grid_nodes_; }
+  const std::vector<detail::TriangleProjector>& projectors() const { return projectors_; }
+  const detail::TieTolerance& tolerance() const { return tol_; }
+
  private:
   std::vector<int> grid_nodes_;  ///< grid item -> tool node (ascending)
   detail::BoxGrid grid_;
