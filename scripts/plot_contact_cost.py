@@ -53,14 +53,66 @@ def read(paths):
     return merged
 
 
+def print_markdown(data):
+    """Times, operation counts and ratios per mesh, from the merged data."""
+    tris = sorted({t for (_, _, t) in data})
+
+    def ns(search, mode, t):
+        v = data.get((search, mode, t))
+        return v["ns"] if v else float("nan")
+
+    def ops(search, mode, t):
+        v = data.get((search, mode, t))
+        return v["ops"] if v and v["ops"] is not None else float("nan")
+
+    print("| triangles | standard brute | modified brute | standard grid | modified grid "
+          "| standard grid, node-cycle | modified grid, node-cycle | cached, node-cycle 1e-3 "
+          "| cached, node-cycle 2e-2 | cached list build |")
+    print("|" + "---|" * 10)
+    for t in tris:
+        cells = [ns("standard_brute_force", "static", t), ns("modified_brute_force", "static", t),
+                 ns("standard", "static", t), ns("modified", "static", t),
+                 ns("standard", "motion_1e-3", t), ns("modified", "motion_1e-3", t),
+                 ns("cached", "motion_1e-3", t), ns("cached", "motion_2e-2", t),
+                 ns("cached", "static_build", t)]
+        print(f"| {t} | " + " | ".join(f"{c:,.0f}" for c in cells) + " |")
+    print()
+    print("| triangles | standard brute | modified brute | standard grid | modified grid "
+          "| cached 1e-3 | cached 2e-2 |")
+    print("|" + "---|" * 7)
+    for t in tris:
+        cells = [ops("standard_brute_force", "static", t), ops("modified_brute_force", "static", t),
+                 ops("standard", "static", t), ops("modified", "static", t),
+                 ops("cached", "motion_1e-3", t), ops("cached", "motion_2e-2", t)]
+        print(f"| {t} | " + " | ".join(f"{c:,.0f}" for c in cells) + " |")
+    print()
+    print("| triangles | modified/standard brute, time | modified/standard brute, mult+div "
+          "| cached/standard grid, node-cycle | cached/modified grid, node-cycle "
+          "| cached/standard grid, mult+div | cached/modified grid, mult+div |")
+    print("|" + "---|" * 7)
+    for t in tris:
+        r = [ns("modified_brute_force", "static", t) / ns("standard_brute_force", "static", t),
+             ops("modified_brute_force", "static", t) / ops("standard_brute_force", "static", t),
+             ns("cached", "motion_1e-3", t) / ns("standard", "motion_1e-3", t),
+             ns("cached", "motion_1e-3", t) / ns("modified", "motion_1e-3", t),
+             ops("cached", "motion_1e-3", t) / ops("standard", "static", t),
+             ops("cached", "motion_1e-3", t) / ops("modified", "static", t)]
+        print(f"| {t} | " + " | ".join(f"{c:.2f}" for c in r) + " |")
+    print()
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("csv", nargs="+")
     ap.add_argument("-o", "--output", default="docs/img/contact_cost.png")
+    ap.add_argument("--markdown", action="store_true",
+                    help="also print the merged figures as markdown tables")
     args = ap.parse_args()
     data = read(args.csv)
     if not data:
         sys.exit("no data")
+    if args.markdown:
+        print_markdown(data)
 
     fig, (ax_t, ax_o) = plt.subplots(1, 2, figsize=(13, 5.2))
     for search, mode, label, style, color in SERIES:
