@@ -61,12 +61,29 @@ class ContactSearch {
   virtual std::string_view name() const = 0;
 };
 
+/// Options of the searches that have any (the others ignore them).
+struct SearchOptions {
+  /// "cached": how far (mm) a node may move from where its candidate list was built before the
+  /// list is rebuilt; <= 0 chooses the default, a quarter of the mean tool edge length
+  /// (CachedSearch).
+  double cached_margin = 0;
+  /// "cached": candidate triangles kept per node (beyond that the node falls back to the grid).
+  int cached_capacity = 32;
+};
+
 /// Makes the search called `name` over `surface` (which must outlive it):
 ///  - "modified": the paper's search (closest triangle over all triangles), accelerated by a
 ///    uniform grid of triangle bounding boxes; exactly the brute-force answer;
-///  - "modified_brute_force": the same, testing every triangle per query (the paper's cost).
+///  - "modified_brute_force": the same, testing every triangle per query (the paper's cost);
+///  - "standard": the standard search (Benson & Hallquist 1990): the triangles around the tool
+///    node closest to the point; the node found with a grid. Can return a wrong triangle (the
+///    paper's figure 1): kept for comparison;
+///  - "standard_brute_force": the same, the closest node over every node (the paper's cost);
+///  - "cached": the modified search's answer (bit-identical to "modified") from a per-node list of
+///    candidate triangles, rebuilt when the node has moved more than `options.cached_margin`.
 /// Throws InputError for an unknown name, listing the accepted ones.
 std::unique_ptr<ContactSearch> make_contact_search(std::string_view name,
-                                                   const TriangleSurface& surface);
+                                                   const TriangleSurface& surface,
+                                                   const SearchOptions& options = {});
 
 }  // namespace sf

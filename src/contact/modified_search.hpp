@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "contact/box_grid.hpp"
 #include "contact/contact_search.hpp"
 #include "contact/triangle_projection.hpp"
 
@@ -28,15 +29,15 @@ class ModifiedBruteForceSearch final : public ContactSearch {
 
 /// "modified": the paper's search, visiting only the triangles that can be the closest.
 ///
-/// A uniform grid over the surface's bounding box holds, in each cell, every triangle whose
-/// bounding box overlaps the cell (built once in the reference frame). A query visits the cells
-/// in shells of growing Chebyshev distance around p's cell and stops when the nearest cell of the
-/// next shell is farther than min(cutoff, best distance so far) plus the tie tolerance; inside a
-/// shell it skips cells, and then triangles, whose bounding box is that far. Exactness: the
-/// distance from p to a triangle is never less than the distance from p to any box holding it,
-/// so every skipped triangle is farther than the bound, i.e. it can neither be the closest
-/// triangle within the cutoff nor tie with it; the triangles that are tested are tested by the
-/// same kernel as the brute force. Hence the same distance and the same tie set.
+/// A uniform grid over the surface's bounding box (detail::BoxGrid) holds, in each cell, every
+/// triangle whose bounding box overlaps the cell (built once in the reference frame). A query
+/// visits the cells in shells of growing Chebyshev distance around p's cell and stops when the
+/// nearest cell of the next shell is farther than min(cutoff, best distance so far) plus the tie
+/// tolerance; inside a shell it skips cells, and then triangles, whose bounding box is that far.
+/// Exactness: the distance from p to a triangle is never less than the distance from p to any
+/// box holding it, so every skipped triangle is farther than the bound, i.e. it can neither be the
+/// closest triangle within the cutoff nor tie with it; the triangles that are tested are tested
+/// by the same kernel as the brute force. Hence the same distance and the same tie set.
 class ModifiedSearch final : public ContactSearch {
  public:
   /// `surface` must outlive the search.
@@ -45,21 +46,21 @@ class ModifiedSearch final : public ContactSearch {
   std::string_view name() const override { return "modified"; }
 
   /// Grid dimensions and cell size (mm), for diagnostics.
-  const Eigen::Vector3i& grid_cells() const { return cells_; }
-  double cell_size() const { return h_; }
+  const Eigen::Vector3i& grid_cells() const { return grid_.cells(); }
+  double cell_size() const { return grid_.cell_size(); }
+
+  /// The pieces the cached search reuses: the surface, the per-triangle kernels, the tie
+  /// tolerance and the grid of triangle bounding boxes (item i = triangle i).
+  const TriangleSurface& surface() const { return surface_; }
+  const std::vector<detail::TriangleProjector>& projectors() const { return projectors_; }
+  const detail::TieTolerance& tolerance() const { return tol_; }
+  const detail::BoxGrid& grid() const { return grid_; }
 
  private:
-  int cell_index(int i, int j, int k) const { return (k * cells_[1] + j) * cells_[0] + i; }
-
   const TriangleSurface& surface_;
   std::vector<detail::TriangleProjector> projectors_;
   detail::TieTolerance tol_;
-  std::vector<Vec3> box_lo_, box_hi_;  ///< triangle bounding boxes, mm
-  Vec3 lo_ = Vec3::Zero();             ///< grid origin, mm
-  double h_ = 1;                       ///< cell size, mm
-  Eigen::Vector3i cells_ = Eigen::Vector3i::Ones();
-  std::vector<int> cell_offsets_;    ///< CSR: triangles of cell c in
-  std::vector<int> cell_triangles_;  ///< cell_triangles_[cell_offsets_[c] .. cell_offsets_[c+1])
+  detail::BoxGrid grid_;
 };
 
 }  // namespace sf

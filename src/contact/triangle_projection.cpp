@@ -79,7 +79,7 @@ void TieSet::fill(const std::vector<TriangleProjector>& projectors, const Triang
   }
   // The set, ascending (insertion sort of at most 8).
   out.set_size = size_;
-  out.set_truncated = truncated_;
+  out.set_truncated = truncated();
   for (int i = 0; i < size_; ++i) {
     int j = i;
     while (j > 0 && out.set[j - 1] > tri_[i]) {

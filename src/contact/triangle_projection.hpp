@@ -116,7 +116,6 @@ class TieSet {
       dist_[size_++] = d;
       return;
     }
-    truncated_ = true;
     int worst = 0;
     for (int i = 1; i < size_; ++i) {
       if (dist_[i] > dist_[worst]) {
@@ -124,10 +123,17 @@ class TieSet {
       }
     }
     if (d < dist_[worst]) {
+      lost_ = std::min(lost_, dist_[worst]);
       tri_[worst] = t;
       dist_[worst] = d;
+    } else {
+      lost_ = std::min(lost_, d);
     }
   }
+  /// Whether a triangle that belongs to the set (within the window of the least distance) was
+  /// dropped for want of room. Exact whatever the order of the offers: a triangle dropped while
+  /// the least distance was larger counts only if it is still within the final window.
+  bool truncated() const { return lost_ <= window(); }
   /// Fills `out` from the set (nothing within `cutoff` -> out.triangle = -1).
   void fill(const std::vector<TriangleProjector>& projectors, const TriangleSurface& surface,
             const Vec3& p, double cutoff, ClosestPoint& out) const;
@@ -138,7 +144,7 @@ class TieSet {
   std::array<int, ClosestPoint::max_set_size> tri_{};
   std::array<double, ClosestPoint::max_set_size> dist_{};
   int size_ = 0;
-  bool truncated_ = false;
+  double lost_ = std::numeric_limits<double>::infinity();  ///< least distance dropped, mm
 };
 
 }  // namespace sf::detail

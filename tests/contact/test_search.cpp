@@ -9,40 +9,38 @@
 // own rounding cannot exclude a true tie).
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <chrono>
-#include <cstdlib>
-#include <new>
 #include <numbers>
 #include <random>
 
+#include "allocation_counter.hpp"
 #include "brute_force_oracle.hpp"
 #include "contact/contact_search.hpp"
 #include "contact/modified_search.hpp"
 #include "core/errors.hpp"
 #include "test_meshes.hpp"
 
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-// Counts heap allocations, to check that queries allocate nothing.
-static std::atomic<long> g_allocations{0};
-void* operator new(std::size_t n) {
-  ++g_allocations;
-  if (void* p = std::malloc(n ? n : 1)) {
-    return p;
-  }
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-
 namespace sf {
 namespace {
 
 using Feature = ClosestPoint::Feature;
+using test::make_fold;
+using test::make_thin_trap;
+using test::make_trap;
+using test::random_points;
+using test::warp;
+
+/// Every search the factory makes.
+constexpr const char* kAllSearches[] = {"standard", "standard_brute_force", "modified",
+                                        "modified_brute_force", "cached"};
+
+/// Makes `name` over s, prepared for one blank node: the configuration tests query node 0, so
+/// that the cached search answers from its candidate list (the others from find_closest).
+std::unique_ptr<ContactSearch> make_for_one_node(const char* name, const TriangleSurface& s) {
+  auto search = make_contact_search(name, s);
+  search->prepare(1);
+  return search;
+}
 
 double surface_size(const TriangleSurface& s) {
   const Matrix3X& x = s.nodes();
@@ -109,20 +107,6 @@ int check_against_oracle(const TriangleSurface& s, const std::vector<Vec3>& poin
   return found;
 }
 
-std::vector<Vec3> random_points(int n, const Vec3& lo, const Vec3& hi, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<Vec3> pts(n);
-  for (Vec3& p : pts) {
-    p = lo + Vec3(u(rng), u(rng), u(rng)).cwiseProduct(hi - lo);
-  }
-  return pts;
-}
-
-double warp(double x, double y) {
-  return 0.3 * std::sin(2.0 * x) * std::cos(3.0 * y) + 0.1 * x * y;
-}
-
 TEST(ModifiedSearch, RandomSoupMatchesOracle) {
   for (unsigned seed : {1u, 2u, 3u}) {
     const TriangleSurface s = test::make_random_soup(300, seed);
@@ -157,26 +141,6 @@ TEST(ModifiedSearch, CoarseWarpedSurfaceMatchesOracle) {
   check_against_oracle(s, pts, 0.2);
 }
 
-/// The paper's trap (its figure 1): a long thin triangle N_min holds the projection of P, while
-/// the surface node K closest to P belongs only to small triangles beside it.
-TriangleSurface make_trap() {
-  Matrix3X x(3, 8);
-  x.col(0) = Vec3(-10, -1, 0);  // N_min = (0, 1, 2): long and thin, far vertices
-  x.col(1) = Vec3(10, -1, 0);
-  x.col(2) = Vec3(0, 3, 0.2);
-  x.col(3) = Vec3(0, -1.1, -0.05);  // K: small triangles below y = -1
-  x.col(4) = Vec3(-0.5, -1.2, 0);
-  x.col(5) = Vec3(0.5, -1.2, 0);
-  x.col(6) = Vec3(-0.5, -2.0, 0);
-  x.col(7) = Vec3(0.5, -2.0, 0);
-  TriConn t(3, 4);
-  t << 0, 3, 3, 3,  //
-      1, 5, 4, 6,   //
-      2, 4, 6, 7;
-  t.col(3) << 3, 7, 5;
-  return TriangleSurface("trap", x, t);
-}
-
 TEST(ModifiedSearch, PaperTrapClosestNodeNotOnContactTriangle) {
   const TriangleSurface s = make_trap();
   const Vec3 p(0, -0.2, 0.8);
@@ -203,51 +167,10 @@ TEST(ModifiedSearch, PaperTrapClosestNodeNotOnContactTriangle) {
 
 TEST(ModifiedSearch, ThinTriangleTrapsMatchOracle) {
   // Adversarial: fans of long thin triangles beside small ones, randomly perturbed heights.
-  std::mt19937 rng(42);
-  std::uniform_real_distribution<double> u(-1, 1);
-  const int n = 30;
-  Matrix3X x(3, 2 * n + 2);
-  for (int i = 0; i <= n; ++i) {
-    const double xi = -1 + 2.0 * i / n;
-    x.col(i) = Vec3(xi, -0.05 + 0.02 * u(rng), 0.05 * u(rng));  // dense row near y = 0
-    x.col(n + 1 + i) = Vec3(xi, 0.05, 0.05 * u(rng));
-  }
-  std::vector<std::array<int, 3>> tris;
-  for (int i = 0; i < n; ++i) {
-    tris.push_back({i, i + 1, n + 2 + i});
-    tris.push_back({i, n + 2 + i, n + 1 + i});
-  }
-  // Two long thin triangles spanning the whole strip, above and below (the traps).
-  Matrix3X y(3, x.cols() + 4);
-  y << x, Vec3(-1, 0.06, 0.02), Vec3(1, 0.06, -0.02), Vec3(0, 2.0, 0.3), Vec3(0, -2.0, -0.3);
-  tris.push_back({2 * n + 2, 2 * n + 3, 2 * n + 4});
-  tris.push_back({0, n, 2 * n + 5});
-  TriConn t(3, tris.size());
-  for (std::size_t k = 0; k < tris.size(); ++k) {
-    t.col(k) << tris[k][0], tris[k][1], tris[k][2];
-  }
-  const TriangleSurface s("thin", y, t);
+  const TriangleSurface s = make_thin_trap();
   const auto pts = random_points(4000, Vec3(-1.5, -2.5, -1), Vec3(1.5, 2.5, 1), 9);
   EXPECT_EQ(check_against_oracle(s, pts, std::numeric_limits<double>::infinity()), 4000);
   check_against_oracle(s, pts, 0.05);
-}
-
-/// Two faces meeting along the x axis: (x, y, z) = (x, s, slope * |s|) for s in [-1, 1].
-/// slope > 0: a valley (concave seen from +z); slope < 0: a ridge (convex seen from +z).
-TriangleSurface make_fold(double slope) {
-  Matrix3X x(3, 6);
-  x.col(0) = Vec3(-1, -1, slope);
-  x.col(1) = Vec3(1, -1, slope);
-  x.col(2) = Vec3(-1, 0, 0);
-  x.col(3) = Vec3(1, 0, 0);
-  x.col(4) = Vec3(-1, 1, slope);
-  x.col(5) = Vec3(1, 1, slope);
-  TriConn t(3, 4);
-  t.col(0) << 0, 1, 3;
-  t.col(1) << 0, 3, 2;
-  t.col(2) << 2, 3, 5;
-  t.col(3) << 2, 5, 4;
-  return TriangleSurface("fold", x, t);
 }
 
 TEST(ContactConfigurations, ConcaveFoldDeadZone) {
@@ -255,11 +178,11 @@ TEST(ContactConfigurations, ConcaveFoldDeadZone) {
   // (0, 0.1, -0.5) projects onto neither face's interior (dead zone): the contact must be found
   // anyway, at the fold edge, with gap = -distance to the fold edge.
   const TriangleSurface s = make_fold(1.0);
-  for (const char* name : {"modified", "modified_brute_force"}) {
-    const auto search = make_contact_search(name, s);
+  for (const char* name : kAllSearches) {
+    const auto search = make_for_one_node(name, s);
     const Vec3 p(0.2, 0.1, -0.5);
     ClosestPoint cp;
-    search->find_closest(p, 2.0, cp);
+    search->find_closest_for_node(0, p, 2.0, cp);
     ASSERT_GE(cp.triangle, 0) << name;
     EXPECT_EQ(cp.feature, Feature::edge) << name;
     EXPECT_NEAR(cp.distance, std::hypot(0.1, 0.5), 1e-14) << name;
@@ -277,41 +200,44 @@ TEST(ContactConfigurations, ConvexRidgeNormalIsContinuous) {
   // sweeps across it; the normal and the distance must vary continuously (no jump larger than
   // the sweep step allows: |dn| <= |dp| / D for the edge region, |dn| = 0 on the faces).
   const TriangleSurface s = make_fold(-0.5);
-  const auto search = make_contact_search("modified", s);
-  ClosestPoint prev, cp;
-  const int steps = 2000;
-  const double dy = 1.0 / steps;
-  double max_jump = 0;
-  for (int k = 0; k <= steps; ++k) {
-    const Vec3 p(0.1, -0.5 + k * dy, 0.3);
-    search->find_closest(p, 5.0, cp);
-    ASSERT_GE(cp.triangle, 0);
-    EXPECT_GT(cp.signed_distance, 0);
-    if (k > 0) {
-      max_jump = std::max(max_jump, (cp.normal - prev.normal).norm());
-      EXPECT_LT(std::abs(cp.distance - prev.distance), 1.01 * dy);
+  for (const char* name : kAllSearches) {
+    SCOPED_TRACE(name);
+    const auto search = make_for_one_node(name, s);
+    ClosestPoint prev, cp;
+    const int steps = 2000;
+    const double dy = 1.0 / steps;
+    double max_jump = 0;
+    for (int k = 0; k <= steps; ++k) {
+      const Vec3 p(0.1, -0.5 + k * dy, 0.3);
+      search->find_closest_for_node(0, p, 5.0, cp);
+      ASSERT_GE(cp.triangle, 0);
+      EXPECT_GT(cp.signed_distance, 0);
+      if (k > 0) {
+        max_jump = std::max(max_jump, (cp.normal - prev.normal).norm());
+        EXPECT_LT(std::abs(cp.distance - prev.distance), 1.01 * dy);
+      }
+      prev = cp;
     }
-    prev = cp;
+    EXPECT_LT(max_jump, 1.01 * dy / 0.3);
+    // Over the ridge line the normal is +z, and far on either side the face normals.
+    search->find_closest_for_node(0, Vec3(0.1, 0, 0.3), 5.0, cp);
+    EXPECT_NEAR((cp.normal - Vec3::UnitZ()).norm(), 0.0, 1e-14);
+    EXPECT_EQ(cp.set_size, 2);
+    search->find_closest_for_node(0, Vec3(0.1, 0.5, 0.3), 5.0, cp);
+    EXPECT_EQ(cp.feature, Feature::face);
+    EXPECT_NEAR((cp.normal - s.triangle_normals().col(cp.triangle)).norm(), 0.0, 1e-14);
   }
-  EXPECT_LT(max_jump, 1.01 * dy / 0.3);
-  // Over the ridge line the normal is +z, and far on either side the face normals.
-  search->find_closest(Vec3(0.1, 0, 0.3), 5.0, cp);
-  EXPECT_NEAR((cp.normal - Vec3::UnitZ()).norm(), 0.0, 1e-14);
-  EXPECT_EQ(cp.set_size, 2);
-  search->find_closest(Vec3(0.1, 0.5, 0.3), 5.0, cp);
-  EXPECT_EQ(cp.feature, Feature::face);
-  EXPECT_NEAR((cp.normal - s.triangle_normals().col(cp.triangle)).norm(), 0.0, 1e-14);
 }
 
 TEST(ContactConfigurations, ExactEdgeHitGivesBothTriangles) {
   const TriangleSurface s =
       test::make_height_field("flat", 4, 4, 0, 4, 0, 4, [](double, double) { return 0.0; });
-  for (const char* name : {"modified", "modified_brute_force"}) {
-    const auto search = make_contact_search(name, s);
+  for (const char* name : kAllSearches) {
+    const auto search = make_for_one_node(name, s);
     ClosestPoint cp;
     // Cell (0, 0) is split by its diagonal (0,0)-(1,1): the point above (0.3, 0.3) is on it.
     for (double h : {0.7, 0.0, -0.4}) {
-      search->find_closest(Vec3(0.3, 0.3, h), 1.0, cp);
+      search->find_closest_for_node(0, Vec3(0.3, 0.3, h), 1.0, cp);
       EXPECT_EQ(cp.set_size, 2) << name << " h = " << h;
       EXPECT_EQ(cp.set[0], 0);
       EXPECT_EQ(cp.set[1], 1);
@@ -332,10 +258,10 @@ TEST(ContactConfigurations, ExactVertexHitGivesAllTrianglesAtTheVertex) {
     std::vector<int> expected(s.node_triangles().begin() + s.node_triangle_offsets()[node],
                               s.node_triangles().begin() + s.node_triangle_offsets()[node + 1]);
     ASSERT_GE(expected.size(), 4u);
-    for (const char* name : {"modified", "modified_brute_force"}) {
-      const auto search = make_contact_search(name, s);
+    for (const char* name : kAllSearches) {
+      const auto search = make_for_one_node(name, s);
       ClosestPoint cp;
-      search->find_closest(Vec3(2, 2, apex + 0.5), 2.0, cp);
+      search->find_closest_for_node(0, Vec3(2, 2, apex + 0.5), 2.0, cp);
       ASSERT_EQ(cp.set_size, static_cast<int>(expected.size())) << name;
       EXPECT_TRUE(std::equal(expected.begin(), expected.end(), cp.set.begin())) << name;
       EXPECT_EQ(cp.feature, Feature::vertex) << name;
@@ -345,33 +271,36 @@ TEST(ContactConfigurations, ExactVertexHitGivesAllTrianglesAtTheVertex) {
   }
 }
 
-TEST(ModifiedSearch, NothingWithinCutoff) {
+TEST(ContactConfigurations, NothingWithinCutoff) {
   const TriangleSurface s =
       test::make_height_field("flat", 4, 4, 0, 4, 0, 4, [](double, double) { return 0.0; });
-  for (const char* name : {"modified", "modified_brute_force"}) {
-    const auto search = make_contact_search(name, s);
+  for (const char* name : kAllSearches) {
+    const auto search = make_for_one_node(name, s);
     ClosestPoint cp;
-    search->find_closest(Vec3(2, 2, 1.5), 1.0, cp);
+    search->find_closest_for_node(0, Vec3(2, 2, 1.5), 1.0, cp);
     EXPECT_EQ(cp.triangle, -1) << name;
     EXPECT_EQ(cp.set_size, 0) << name;
-    search->find_closest(Vec3(2, 2, 0.9), 1.0, cp);
+    search->find_closest_for_node(0, Vec3(2, 2, 0.9), 1.0, cp);
     EXPECT_GE(cp.triangle, 0) << name;
-    search->find_closest(Vec3(50, 2, 0), 1.0, cp);  // far off the grid
+    search->find_closest_for_node(0, Vec3(50, 2, 0), 1.0, cp);  // far off the grid
     EXPECT_EQ(cp.triangle, -1) << name;
-    search->find_closest(Vec3(50, 2, 0), std::numeric_limits<double>::infinity(), cp);
+    search->find_closest_for_node(0, Vec3(50, 2, 0), std::numeric_limits<double>::infinity(), cp);
     EXPECT_NEAR(cp.distance, 46.0, 1e-12) << name;
   }
 }
 
 TEST(ModifiedSearch, FactoryNamesAndErrors) {
   const TriangleSurface s = make_trap();
-  EXPECT_EQ(make_contact_search("modified", s)->name(), "modified");
-  EXPECT_EQ(make_contact_search("modified_brute_force", s)->name(), "modified_brute_force");
+  for (const char* name : kAllSearches) {
+    EXPECT_EQ(make_contact_search(name, s)->name(), name);
+  }
   try {
     make_contact_search("closest_node", s);
     FAIL() << "no exception";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("modified, modified_brute_force"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find(
+                  "standard, standard_brute_force, modified, modified_brute_force, cached"),
+              std::string::npos);
     EXPECT_NE(std::string(e.what()).find("closest_node"), std::string::npos);
   }
 }
@@ -382,7 +311,7 @@ TEST(ModifiedSearch, QueriesDoNotAllocate) {
   const auto modified = make_contact_search("modified", s);
   const auto brute = make_contact_search("modified_brute_force", s);
   ClosestPoint cp;
-  const long before = g_allocations.load();
+  const long before = test::allocation_count();
   double sum = 0;
   for (const Vec3& p : pts) {
     modified->find_closest(p, 0.2, cp);
@@ -390,7 +319,7 @@ TEST(ModifiedSearch, QueriesDoNotAllocate) {
     brute->find_closest(p, std::numeric_limits<double>::infinity(), cp);
     sum += cp.distance;
   }
-  EXPECT_EQ(g_allocations.load() - before, 0);
+  EXPECT_EQ(test::allocation_count() - before, 0);
   EXPECT_GT(sum, 0);
 }
 

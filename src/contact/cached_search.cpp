@@ -1,0 +1,212 @@
+#include "contact/cached_search.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <limits>
+
+#include "core/errors.hpp"
+
+namespace sf {
+
+namespace {
+
+double mean_edge_length(const TriangleSurface& surface) {
+  const Matrix3X& x = surface.nodes();
+  const TriConn& tri = surface.triangles();
+  double sum = 0;
+  for (int t = 0; t < surface.num_triangles(); ++t) {
+    for (int a = 0; a < 3; ++a) {
+      sum += (x.col(tri((a + 1) % 3, t)) - x.col(tri(a, t))).norm();
+    }
+  }
+  return surface.num_triangles() > 0 ? sum / (3.0 * surface.num_triangles()) : 1.0;
+}
+
+}  // namespace
+
+CachedSearch::CachedSearch(const TriangleSurface& surface, double margin, int capacity)
+    : exact_(surface),
+      margin_(margin > 0 ? margin : 0.25 * mean_edge_length(surface)),
+      capacity_(capacity) {
+  if (capacity < 1 || !std::isfinite(margin_)) {
+    throw InputError(
+        fmt::format("tool '{}': cached contact search needs a capacity >= 1 and a finite margin "
+                    "(got capacity {}, margin {} mm)",
+                    surface.name(), capacity, margin));
+  }
+}
+
+void CachedSearch::find_closest(const Vec3& p, double cutoff, ClosestPoint& out) const {
+  exact_.find_closest(p, cutoff, out);
+}
+
+void CachedSearch::prepare(int node_count) {
+  nodes_.assign(std::max(node_count, 0), NodeCache{});
+  candidates_.assign(static_cast<std::size_t>(nodes_.size()) * capacity_, Candidate{0.0, -1});
+}
+
+void CachedSearch::rebuild(NodeCache& cache, Candidate* list, const Vec3& p0, double cutoff,
+                           double step) {
+  const detail::TieTolerance& tol = exact_.tolerance();
+  const std::vector<detail::TriangleProjector>& projectors = exact_.projectors();
+  const double m = margin_;
+  // R(b, m): the list radius for least distance b and margin m (class comment).
+  auto radius_for = [&](double b, double mm) {
+    return tol.window(std::min(cutoff, b + mm)) + mm + tol.absolute;
+  };
+  auto radius = [&](double b) { return radius_for(b, m); };
+  double best = std::numeric_limits<double>::infinity();
+  double bound = radius(best);
+  double lost = std::numeric_limits<double>::infinity();  // least distance dropped for room
+  int count = 0;
+  long tests = 0;
+  exact_.grid().visit(p0, bound, [&](int t) {
+    for (int k = 0; k < count; ++k) {
+      if (list[k].triangle == t) {
+        return bound;  // met again in another cell (cheaper to find than to test again)
+      }
+    }
+    const double d = std::sqrt(detail::squared_distance(projectors[t], p0));
+    ++tests;
+    if (!(d <= bound)) {
+      return bound;
+    }
+    if (d < best) {
+      best = d;
+      bound = radius(best);
+    }
+    if (count < capacity_) {
+      list[count++] = Candidate{d, t};
+      return bound;
+    }
+    int worst = 0;
+    for (int k = 1; k < count; ++k) {
+      if (list[k].distance > list[worst].distance) {
+        worst = k;
+      }
+    }
+    if (d < list[worst].distance) {
+      lost = std::min(lost, list[worst].distance);
+      list[worst] = Candidate{d, t};
+    } else {
+      lost = std::min(lost, d);
+    }
+    return bound;
+  });
+  // Keep those within the final radius, ascending by distance (then by index): insertion sort.
+  int kept = 0;
+  for (int k = 0; k < count; ++k) {
+    if (!(list[k].distance <= bound)) {
+      continue;
+    }
+    const Candidate c = list[k];
+    int j = kept++;
+    while (j > 0 && (list[j - 1].distance > c.distance ||
+                     (list[j - 1].distance == c.distance && list[j - 1].triangle > c.triangle))) {
+      list[j] = list[j - 1];
+      --j;
+    }
+    list[j] = c;
+  }
+  // The list holds every triangle nearer than `lost` (those dropped for room are all at least that
+  // far), so it serves the reaches r with R(best, r) < lost. If some were dropped within the
+  // radius, shrink the node's reach to the largest such r (R is piecewise linear in r: slope
+  // 2 + relative while best + r < cutoff, 1 beyond), less a rounding allowance.
+  double reach = m;
+  bool overflow = false;
+  if (lost <= bound) {
+    double r = (lost - 2 * tol.absolute - (1 + tol.relative) * best) / (2 + tol.relative);
+    if (!(best + r <= cutoff)) {
+      r = lost - tol.window(cutoff) - tol.absolute;
+    }
+    r -= tol.absolute;
+    if (r > 0 && r >= min_cycles_of_reach * step && radius_for(best, r) < lost) {
+      reach = r;
+      ++cache.stats.shrunk_lists;
+    } else {
+      overflow = true;  // too short to be worth rebuilding for: the grid until the node moves m
+    }
+  }
+  cache.anchor = p0;
+  cache.cutoff = cutoff;
+  cache.reach = reach;
+  cache.count = kept;
+  cache.overflow = overflow;
+  cache.valid = true;
+  cache.built_at = cache.stats.queries;
+  ++cache.stats.rebuilds;
+  cache.stats.rebuild_tests += tests;
+}
+
+void CachedSearch::find_closest_for_node(int node, const Vec3& p, double cutoff,
+                                         ClosestPoint& out) {
+  if (node < 0 || node >= static_cast<int>(nodes_.size()) || !p.allFinite()) {
+    exact_.find_closest(p, cutoff, out);
+    return;
+  }
+  NodeCache& cache = nodes_[node];
+  Candidate* list = candidates_.data() + static_cast<std::size_t>(node) * capacity_;
+  ++cache.stats.queries;
+  double delta = (p - cache.anchor).norm();
+  if (!cache.valid || !(delta <= cache.reach) || !(cutoff <= cache.cutoff)) {
+    // The node's recent motion per query, from how far it went since the last build.
+    const long since = cache.stats.queries - cache.built_at;
+    const double step = cache.valid && since > 0 ? delta / static_cast<double>(since) : 0.0;
+    rebuild(cache, list, p, cutoff, step);
+    delta = 0;
+  }
+  if (cache.overflow) {
+    ++cache.stats.overflow_fallbacks;
+    exact_.find_closest(p, cutoff, out);
+    return;
+  }
+  const detail::TieTolerance& tol = exact_.tolerance();
+  const std::vector<detail::TriangleProjector>& projectors = exact_.projectors();
+  detail::TieSet ties(tol);
+  // The same bound as the modified search; a candidate whose lower bound d(p0, T) - delta
+  // exceeds it (beyond the rounding allowance) ends the scan.
+  double bound = tol.window(cutoff);
+  const double slack = delta + tol.absolute;
+  long tests = 0;
+  for (int k = 0; k < cache.count; ++k) {
+    if (list[k].distance - slack > bound) {
+      break;
+    }
+    const int t = list[k].triangle;
+    const double d2 = detail::squared_distance(projectors[t], p);
+    ++tests;
+    if (d2 <= bound * bound) {
+      ties.offer(t, std::sqrt(d2));
+      bound = tol.window(std::min(cutoff, ties.best()));
+    }
+  }
+  cache.stats.candidates_tested += tests;
+  ties.fill(projectors, exact_.surface(), p, cutoff, out);
+  if (out.set_truncated) {
+    ++cache.stats.tie_fallbacks;
+    exact_.find_closest(p, cutoff, out);
+  }
+}
+
+CachedSearchStatistics CachedSearch::statistics() const {
+  CachedSearchStatistics sum;
+  for (const NodeCache& c : nodes_) {
+    sum.queries += c.stats.queries;
+    sum.rebuilds += c.stats.rebuilds;
+    sum.overflow_fallbacks += c.stats.overflow_fallbacks;
+    sum.tie_fallbacks += c.stats.tie_fallbacks;
+    sum.shrunk_lists += c.stats.shrunk_lists;
+    sum.candidates_tested += c.stats.candidates_tested;
+    sum.rebuild_tests += c.stats.rebuild_tests;
+  }
+  return sum;
+}
+
+void CachedSearch::reset_statistics() {
+  for (NodeCache& c : nodes_) {
+    c.stats = CachedSearchStatistics{};
+  }
+}
+
+}  // namespace sf
