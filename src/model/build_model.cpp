@@ -270,7 +270,8 @@ void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& s
     contact.tool = static_cast<int>(found - model.tools.begin());
     const Tool& tool = model.tools[static_cast<std::size_t>(contact.tool)];
     contact.pair.surface = &tool.surface;
-    contact.pair.search = make_contact_search(cc.search, tool.surface);
+    contact.pair.search = make_contact_search(cc.search, tool.surface,
+                                              SearchOptions{.cached_margin = cc.search_margin});
     contact.pair.search->prepare(static_cast<int>(model.blank.mesh.nodes.cols()));
     // The contact spring adds to the element stiffness at a node: with the element part at
     // w_e dt <= 2 x safety (1.8), the total stays below the stability limit w dt = 2 when the
