@@ -13,27 +13,11 @@
 #include <numbers>
 #include <random>
 
+#include "allocation_counter.hpp"  // the one operator new of this test program
 #include "contact/coulomb_friction.hpp"
 #include "contact/penalty_contact.hpp"
 #include "core/errors.hpp"
 #include "test_meshes.hpp"
-
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-// Counts heap allocations, to check that a contact step allocates nothing.
-static std::atomic<long> g_allocations{0};
-void* operator new(std::size_t n) {
-  ++g_allocations;
-  if (void* p = std::malloc(n ? n : 1)) {
-    return p;
-  }
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
 
 namespace sf {
 namespace {
@@ -391,7 +375,7 @@ TEST(PenaltyFriction, ContactStepDoesNotAllocate) {
   const double dt = 1e-4;
   f.setZero();
   compute_penalty_contact(pair, {x, v, half, Vec3::Zero(), Vec3::Zero(), dt}, f);  // sizes state
-  const long before = g_allocations.load();
+  const long before = test::allocation_count();
   int in_contact = 0;
   for (int step = 0; step < 20; ++step) {
     x += dt * v;
@@ -399,7 +383,7 @@ TEST(PenaltyFriction, ContactStepDoesNotAllocate) {
     in_contact += compute_penalty_contact(pair, {x, v, half, Vec3::Zero(), Vec3::Zero(), dt}, f)
                       .nodes_in_contact;
   }
-  EXPECT_EQ(g_allocations.load() - before, 0);
+  EXPECT_EQ(test::allocation_count() - before, 0);
   EXPECT_GT(in_contact, 0);
 }
 

@@ -20,27 +20,11 @@
 #include <random>
 #include <vector>
 
+#include "allocation_counter.hpp"  // the one operator new of this test program
 #include "contact/contact_search.hpp"
 #include "contact/interpolated_projection.hpp"
 #include "faceted_cylinder.hpp"
 #include "test_meshes.hpp"
-
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-// Counts heap allocations, to check that projections allocate nothing.
-static std::atomic<long> g_allocations{0};
-void* operator new(std::size_t n) {
-  ++g_allocations;
-  if (void* p = std::malloc(n ? n : 1)) {
-    return p;
-  }
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
 
 namespace sf {
 namespace {
@@ -467,13 +451,13 @@ TEST(InterpolatedProjection, DoesNotAllocate) {
   ClosestPoint cp;
   InterpolatedProjection ip;
   double sum = 0;
-  const long before = g_allocations.load();
+  const long before = test::allocation_count();
   for (const Vec3& p : points) {
     search->find_closest(p, 2.0, cp);
     proj.project(p, cp, ip);
     sum += ip.distance;
   }
-  EXPECT_EQ(g_allocations.load() - before, 0);
+  EXPECT_EQ(test::allocation_count() - before, 0);
   EXPECT_TRUE(std::isfinite(sum));
 }
 
