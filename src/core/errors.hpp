@@ -1,5 +1,5 @@
 #pragma once
-// The two kinds of failure a user can meet, each with its own exit code.
+// The kinds of failure a user can meet, each with its own exit code.
 #include <stdexcept>
 #include <string>
 
@@ -11,6 +11,7 @@ enum ExitCode : int {
   exit_internal_error = 1,  ///< a bug: an unexpected exception
   exit_input_error = 2,     ///< bad input: case file, mesh, command line
   exit_unstable = 3,        ///< the run went unstable (NaN, inversion, energy blow-up)
+  exit_not_converged = 4,   ///< an implicit static step failed: no convergence, singular system
 };
 
 /// Anything a user can get wrong: the message names the file, the key or the entity, and what
@@ -22,6 +23,14 @@ class InputError : public std::runtime_error {
 
 /// A run that went unstable. The message names the element or node, the time and the cycle.
 class InstabilityError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// An implicit static step that cannot go on: Newton failed after every allowed cut of the
+/// increment, or the stiffness is singular (missing constraints, a mechanism). The message names
+/// the load level, the residual and the node or degree of freedom where it is largest.
+class ConvergenceError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
