@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "io/case_config_implicit.hpp"
 #include "io/toml_reader.hpp"
 
 namespace sf {
@@ -603,7 +604,8 @@ CaseConfig read_case(const fs::path& case_file) {
 
   const TomlSection top(root, "", file);
   top.check_keys({"title", "units", "blank", "materials", "tools", "contact", "boundary", "draw_in",
-                  "load", "initial_velocity", "prescribed_velocity", "control", "output"});
+                  "load", "initial_velocity", "prescribed_velocity", "control", "output",
+                  "analysis", "implicit", "springback"});
   top.read_string("title", config.title, Presence::optional, true);
   top.read_string("units", config.units);
   read_materials(top, folder, config.materials);
@@ -617,6 +619,7 @@ CaseConfig read_case(const fs::path& case_file) {
   read_prescribed_velocities(top, config.prescribed_velocities);
   read_control(top, config, config.control);
   read_output(top, folder, config.output);
+  read_implicit_sections(top, config);
   return config;
 }
 

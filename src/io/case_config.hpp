@@ -185,6 +185,65 @@ struct OutputConfig {
   bool stress_layers = true;          ///< write mid, top and bottom stress per element
 };
 
+/// What the case runs: an explicit forming run (optionally followed by springback), or a static
+/// analysis of the blank under its loads and boundary conditions (docs/static-analysis.md).
+struct AnalysisConfig {
+  enum class Type { explicit_dynamic, static_equilibrium };
+  Type type = Type::explicit_dynamic;  ///< "explicit" or "static"
+  /// static: true = one linear solve on the initial geometry (small displacements, the elastic
+  /// tangent at the initial state); false = Newton-Raphson with large rotations and plasticity.
+  bool linear = false;
+};
+
+/// Newton-Raphson controls of an implicit static step: a static analysis, or springback.
+struct ImplicitConfig {
+  enum class LinearSolver { automatic, cholmod, umfpack };
+  enum class RigidBodyModes { automatic, error };
+  /// Equal increments the load (static: the load curves over 0..control.end_time; springback:
+  /// the release of the tool forces) is applied in; an increment that fails is halved.
+  int increments = 1;
+  int max_iterations = 25;  ///< Newton iterations per increment before it is cut
+  int max_cuts = 8;         ///< successive halvings of one increment before the step stops
+  /// -, converged when the residual force norm <= this x the reference force norm ...
+  double force_tolerance = 1e-6;
+  /// -, ... and the last correction's norm <= this x the increment's displacement norm
+  double displacement_tolerance = 1e-6;
+  bool line_search = true;  ///< scale the Newton correction so that it lowers the residual
+  /// "auto": CHOLMOD when the tangent is symmetric (to its finite-difference accuracy) and
+  /// positive definite, else UMFPACK; or force one of them.
+  LinearSolver linear_solver = LinearSolver::automatic;
+  /// "auto": hold a minimal set of degrees of freedom that removes the rigid-body modes the
+  /// case's constraints leave free (logged); "error": stop and name them.
+  RigidBodyModes rigid_body_modes = RigidBodyModes::automatic;
+};
+
+/// The NUMISHEET'93 U-channel springback measures, computed on a line of blank nodes along the
+/// channel (x along the length from the symmetry plane, z the punch axis). The three regions are
+/// picked on the formed shape (at the end of forming) and measured on the current one.
+struct UChannelMeasureConfig {
+  std::string section;                   ///< node group: a line of blank nodes along x
+  std::array<double, 2> bottom{0.0, 0.0};  ///< mm, x range of the bottom (formed shape)
+  std::array<double, 2> wall{0.0, 0.0};    ///< mm, z range of the side wall (formed shape)
+  std::array<double, 2> flange{0.0, 0.0};  ///< mm, x range of the flange (formed shape)
+};
+
+/// Springback after the forming run: the tools are removed, the blank keeps its stresses and
+/// plastic history and finds its unloaded shape.
+struct SpringbackConfig {
+  enum class Method { implicit, dynamic_relaxation };
+  /// implicit: a static Newton step (the [implicit] controls) that releases the tool forces;
+  /// dynamic_relaxation: the explicit route, the tool forces ramped to zero over release_time,
+  /// then kinetic damping until the blank is at rest.
+  Method method = Method::implicit;
+  double release_time = 0.0;  ///< s, dynamic_relaxation: required (> 0)
+  /// s, dynamic_relaxation: the longest the relaxation may run after the release; 0 = 10 x
+  /// release_time
+  double max_time = 0.0;
+  /// -, dynamic_relaxation: at rest when the kinetic energy is below this x the internal energy
+  double kinetic_tolerance = 1e-6;
+  std::optional<UChannelMeasureConfig> u_channel;  ///< [springback.u_channel]
+};
+
 struct CaseConfig {
   std::filesystem::path file;  ///< the case file, absolute
   std::string title;
@@ -200,6 +259,9 @@ struct CaseConfig {
   std::vector<LoadConfig> loads;                                ///< [[load]] tables
   std::vector<InitialVelocityConfig> initial_velocities;        ///< [[initial_velocity]]
   std::vector<PrescribedVelocityConfig> prescribed_velocities;  ///< [[prescribed_velocity]]
+  AnalysisConfig analysis;                                      ///< [analysis]
+  ImplicitConfig implicit;                                      ///< [implicit]
+  std::optional<SpringbackConfig> springback;                   ///< [springback]
 
   /// The material named by blank.material (the reader guarantees it exists).
   const MaterialConfig& blank_material() const;

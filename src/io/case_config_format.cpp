@@ -296,6 +296,51 @@ void write_control(TomlWriter& w, const ControlConfig& c) {
   w.number("damping", c.damping, "1/s, mass-proportional");
 }
 
+std::string format_range(const std::array<double, 2>& r) {
+  return fmt::format("[{}, {}]", format_toml_number(r[0]), format_toml_number(r[1]));
+}
+
+void write_implicit_sections(TomlWriter& w, const CaseConfig& config) {
+  const bool is_static = config.analysis.type == AnalysisConfig::Type::static_equilibrium;
+  w.header("analysis");
+  w.string("type", is_static ? "static" : "explicit");
+  if (is_static) {
+    w.string("geometry", config.analysis.linear ? "linear" : "nonlinear");
+  }
+  const ImplicitConfig& c = config.implicit;
+  w.header("implicit");
+  w.integer("increments", c.increments);
+  w.integer("max_iterations", c.max_iterations, "per increment");
+  w.integer("max_cuts", c.max_cuts, "halvings of one increment");
+  w.number("force_tolerance", c.force_tolerance, "residual / reference force");
+  w.number("displacement_tolerance", c.displacement_tolerance, "correction / increment");
+  w.boolean("line_search", c.line_search);
+  static constexpr const char* solvers[] = {"auto", "cholmod", "umfpack"};
+  w.string("linear_solver", solvers[static_cast<int>(c.linear_solver)]);
+  w.string("rigid_body_modes",
+           c.rigid_body_modes == ImplicitConfig::RigidBodyModes::automatic ? "auto" : "error");
+  if (!config.springback) {
+    return;
+  }
+  const SpringbackConfig& sb = *config.springback;
+  w.header("springback");
+  if (sb.method == SpringbackConfig::Method::implicit) {
+    w.string("method", "implicit");
+  } else {
+    w.string("method", "dynamic_relaxation");
+    w.number("release_time", sb.release_time, "s");
+    w.number("max_time", sb.max_time, "s");
+    w.number("kinetic_tolerance", sb.kinetic_tolerance, "kinetic / internal energy");
+  }
+  if (sb.u_channel) {
+    w.header("springback.u_channel");
+    w.string("section", sb.u_channel->section);
+    w.raw("bottom", format_range(sb.u_channel->bottom));
+    w.raw("wall", format_range(sb.u_channel->wall));
+    w.raw("flange", format_range(sb.u_channel->flange));
+  }
+}
+
 }  // namespace
 
 std::string format_resolved_case(const CaseConfig& config) {
@@ -332,6 +377,7 @@ std::string format_resolved_case(const CaseConfig& config) {
     write_prescribed_velocity(w, pv);
   }
   write_control(w, config.control);
+  write_implicit_sections(w, config);
   w.header("output");
   w.string("directory", config.output.directory);
   w.boolean("stress_layers", config.output.stress_layers);
