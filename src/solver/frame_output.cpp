@@ -72,6 +72,10 @@ FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& direct
                                        build_info::compiler + ", flags: " + build_info::cxx_flags);
   const Eigen::Index n_elements = element_count(model.blank.part);
   displacement_.resize(3, model.blank.mesh.nodes.cols());
+  has_springback_field_ = model.config.springback.has_value();
+  if (has_springback_field_) {
+    springback_displacement_ = Matrix3X::Zero(3, model.blank.mesh.nodes.cols());
+  }
   plastic_strain_.resize(n_elements);
   if (model.blank.scaling.enabled()) {
     added_mass_percent_.resize(n_elements);
@@ -96,6 +100,13 @@ void FrameOutput::write_frame(const Model& model, const SolutionState& s) {
       {"thickness", FieldCenter::cell, 1, s.shell.thickness.data()},
       {"plastic_strain", FieldCenter::cell, 1, plastic_strain_.data()},
   };
+  if (has_springback_field_) {
+    if (springback_reference_.cols() > 0) {
+      springback_displacement_ = s.x - springback_reference_;
+    }
+    blank.fields.push_back(
+        {"springback_displacement", FieldCenter::node, 3, springback_displacement_.data()});
+  }
   if (model.blank.scaling.enabled()) {
     // Per element: 100 (rho_e / rho - 1), the share of its own mass that scaling added.
     const MassScaling& scaling = model.blank.scaling;
@@ -154,6 +165,12 @@ void FrameOutput::append_history(const Model& model, const SolutionState& s) {
     row_[k++] = r.last.misses;
   }
   writer_->append_history(row_);
+}
+
+void FrameOutput::set_springback_reference(const Matrix3X& x_formed) {
+  has_springback_field_ = true;
+  springback_reference_ = x_formed;
+  springback_displacement_.setZero(3, x_formed.cols());
 }
 
 void FrameOutput::flush() {

@@ -20,6 +20,10 @@ class FrameOutput {
   /// Buffers a history row of the current state (none if this cycle has one already).
   void append_history(const Model& model, const SolutionState& state);
   void flush();
+  /// From now on, frames carry springback_displacement = x - x_formed (mm) with x_formed these
+  /// coordinates (the end of forming). Before this call, a case with [springback] writes the field
+  /// as zeros, so that every frame has the same arrays.
+  void set_springback_reference(const Matrix3X& x_formed);
   /// The search audits run with the frames and history rows (contact pairs with audit = true).
   const SearchAuditRecorder& search_audits() const { return audits_; }
 
@@ -27,6 +31,9 @@ class FrameOutput {
   std::unique_ptr<ResultsWriter> writer_;
   SearchAuditRecorder audits_;
   Matrix3X displacement_;
+  bool has_springback_field_ = false;
+  Matrix3X springback_reference_;     ///< mm, x_formed (empty until set)
+  Matrix3X springback_displacement_;  ///< mm
   VectorX plastic_strain_;
   VectorX added_mass_percent_;  ///< per element, written when mass scaling is on
   Eigen::Matrix<double, 6, Eigen::Dynamic> stress_mid_, stress_top_, stress_bottom_;

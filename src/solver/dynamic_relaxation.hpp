@@ -1,0 +1,31 @@
+#pragma once
+// The explicit springback route: the tool forces at the end of forming are released slowly (the
+// tools withdrawn without touching the part again), then dynamic relaxation brings the blank to
+// rest. The comparison route for the implicit springback step; docs/static-analysis.md.
+#include "io/case_config.hpp"
+#include "model/model.hpp"
+#include "solver/frame_output.hpp"
+#include "solver/solution_state.hpp"
+
+namespace sf {
+
+struct DynamicRelaxationResult {
+  double release_time = 0.0;         ///< s, the tool forces went to zero over this time
+  double relaxation_time = 0.0;      ///< s, after the release, until at rest (or max_time)
+  long cycles = 0;                   ///< explicit cycles, release and relaxation
+  double final_kinetic_ratio = 0.0;  ///< kinetic / internal energy at the end
+  bool at_rest = false;              ///< the kinetic tolerance was reached before max_time
+};
+
+/// Continues the run from `state` (the end of forming: time, positions, stresses, the contact
+/// forces of the last cycle in state.f_contact) with the contact switched off: the contact forces
+/// act as nodal loads ramped linearly to zero over config.release_time, then the blank relaxes
+/// with kinetic damping (every velocity zeroed at each peak of the kinetic energy) until the
+/// kinetic energy falls below config.kinetic_tolerance x the internal energy or config.max_time
+/// has passed after the release (a warning then, not an error). Writes frames (about
+/// control.output_frames / 4 of them, at least 2) and history rows to `output` (may be null).
+/// Throws InstabilityError when the run goes unstable.
+DynamicRelaxationResult run_dynamic_relaxation(Model& model, SolutionState& state,
+                                               FrameOutput* output, const SpringbackConfig& config);
+
+}  // namespace sf
