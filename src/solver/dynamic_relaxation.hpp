@@ -16,9 +16,10 @@ struct DynamicRelaxationResult {
   double final_kinetic_ratio = 0.0;  ///< kinetic / internal energy at the end
   bool at_rest = false;              ///< the kinetic tolerance was reached before max_time
 
-  // final_kinetic_ratio is measured as the stop rule measures it: the peak of the kinetic energy
-  // between the last two resets over reference_energy (right after a reset the kinetic energy
-  // itself is ~0 and says nothing).
+  // final_kinetic_ratio is measured as the stop rule measures it, a peak of the kinetic energy
+  // over reference_energy (right after a reset the kinetic energy itself is 0 and says nothing):
+  // at rest, the largest kinetic energy of the final check of rest (a free run without resets);
+  // at max_time, the larger of the last peak before a reset and the peak since.
   /// N mm, what kinetic_tolerance multiplies: the larger of the internal (+ hourglass) energy at
   /// the start of springback and at the end
   double reference_energy = 0.0;
