@@ -15,6 +15,26 @@ struct DynamicRelaxationResult {
   long cycles = 0;                   ///< explicit cycles, release and relaxation
   double final_kinetic_ratio = 0.0;  ///< kinetic / internal energy at the end
   bool at_rest = false;              ///< the kinetic tolerance was reached before max_time
+
+  // final_kinetic_ratio is measured as the stop rule measures it, a peak of the kinetic energy
+  // over reference_energy (right after a reset the kinetic energy itself is 0 and says nothing):
+  // at rest, the largest kinetic energy of the final check of rest (a free run without resets);
+  // at max_time, the larger of the last peak before a reset and the peak since.
+  /// N mm, what kinetic_tolerance multiplies: the larger of the internal (+ hourglass) energy at
+  /// the start of springback and at the end
+  double reference_energy = 0.0;
+  /// blank nodes whose contact force became a released load
+  int frozen_load_nodes = 0;
+  /// N, the sum of those loads at the start of the release (the contact forces' sum)
+  Vec3 frozen_force = Vec3::Zero();
+  /// kinetic-damping resets (every velocity zeroed at a peak of the kinetic energy)
+  long resets = 0;
+  /// rest probes started (free runs without resets that check the blank is at rest; the last one
+  /// succeeded when at_rest)
+  int rest_probes = 0;
+  /// N mm, the kinetic energy the resets (and the stopped force-controlled tools) took out; part
+  /// of energies.damping
+  double damping_energy = 0.0;
 };
 
 /// Continues the run from `state` (the end of forming: time, positions, stresses, the contact
