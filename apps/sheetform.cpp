@@ -1,10 +1,12 @@
-// sheetform: explicit finite-element simulation of sheet metal forming.
+// sheetform: explicit finite-element simulation of sheet metal forming, with springback and
+// static analyses by an implicit static step.
 //
 //   sheetform run   CASE [-o DIR]   run a case, write results (HDF5 + XDMF for ParaView)
 //   sheetform check CASE            validate a case and print the model it builds
 //   sheetform mesh  CASE [-o DIR]   write only the meshes, to look at the set-up in ParaView
 //
-// Exit codes: 0 success, 2 bad input, 3 the run went unstable, 1 an internal error.
+// Exit codes: 0 success, 2 bad input, 3 the run went unstable, 4 a static step did not converge
+// (or its stiffness is singular), 1 an internal error.
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <filesystem>
@@ -18,6 +20,7 @@
 #include "model/build_model.hpp"
 #include "solver/explicit_driver.hpp"
 #include "solver/frame_output.hpp"
+#include "solver/static_driver.hpp"
 
 namespace fs = std::filesystem;
 
@@ -29,6 +32,7 @@ struct Arguments {
   double stroke = -1.0;    // mm; < 0 = as in the case
   double end_time = -1.0;  // s; < 0 = as in the case
   bool quiet = false;
+  bool verbose = false;
 };
 
 // Command-line overrides of the case's end condition (used for short versions of long runs).
@@ -173,10 +177,13 @@ int run(const Arguments& args) {
   fs::create_directories(out);
   std::ofstream(out / "case.resolved.toml") << sf::format_resolved_case(model.config);
   sf::log_info("Results     {}\n\n", out.string());
-  // 4. Run the explicit time loop.
+  // 4. Run the explicit time loop (and springback when the case asks), or the static analysis.
   sf::RunOptions options;
   options.output_directory = out;
-  const sf::RunSummary summary = sf::run_explicit(model, options);
+  const sf::RunSummary summary =
+      model.config.analysis.type == sf::AnalysisConfig::Type::static_equilibrium
+          ? sf::run_static(model, options)
+          : sf::run_explicit(model, options);
   // 5. Report.
   sf::write_run_summary_json(summary, out / "summary.json");
   sf::log_info("\n{}", sf::format_run_summary(summary));
@@ -220,6 +227,8 @@ int main(int argc, char** argv) {
         ->required()
         ->check(CLI::ExistingFile);
     sub->add_flag("-q,--quiet", args.quiet, "print errors only");
+    sub->add_flag("-v,--verbose", args.verbose,
+                  "print more: gmsh's messages, every Newton iteration of a static step");
   };
   CLI::App* run_cmd = app.add_subcommand("run", "run a case and write results for ParaView");
   add_common(run_cmd);
@@ -241,6 +250,8 @@ int main(int argc, char** argv) {
   }
   if (args.quiet) {
     sf::verbosity() = sf::Verbosity::quiet;
+  } else if (args.verbose) {
+    sf::verbosity() = sf::Verbosity::verbose;
   }
   try {
     if (*run_cmd) {
@@ -257,6 +268,10 @@ int main(int argc, char** argv) {
     std::cerr << "error: the run went unstable: " << e.what()
               << "\nThe frames written so far are readable in the results folder.\n";
     return sf::exit_unstable;
+  } catch (const sf::ConvergenceError& e) {
+    std::cerr << "error: the static step did not converge: " << e.what()
+              << "\nThe frames written so far are readable in the results folder.\n";
+    return sf::exit_not_converged;
   } catch (const std::exception& e) {
     std::cerr << "internal error: " << e.what() << "\n";
     return sf::exit_internal_error;

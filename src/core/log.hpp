@@ -20,6 +20,15 @@ void log_info(fmt::format_string<Args...> f, Args&&... args) {
   }
 }
 
+/// Detail for --verbose runs (Newton iterations, solver statistics).
+template <typename... Args>
+void log_verbose(fmt::format_string<Args...> f, Args&&... args) {
+  if (verbosity() >= Verbosity::verbose) {
+    fmt::print(stdout, f, std::forward<Args>(args)...);
+    std::fflush(stdout);
+  }
+}
+
 template <typename... Args>
 void log_warning(fmt::format_string<Args...> f, Args&&... args) {
   fmt::print(stderr, "warning: ");

@@ -93,6 +93,9 @@ void read_blank(const CaseConfig& config, Model& model) {
   for (const PrescribedVelocityConfig& v : config.prescribed_velocities) {
     names.push_back(v.group);
   }
+  if (config.springback && config.springback->u_channel) {
+    names.push_back(config.springback->u_channel->section);
+  }
   for (const std::string& name : names) {
     const bool seen = std::any_of(blank.groups.begin(), blank.groups.end(),
                                   [&](const NodeGroup& g) { return g.name == name; });

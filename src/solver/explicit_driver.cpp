@@ -8,9 +8,11 @@
 
 #include "core/errors.hpp"
 #include "core/log.hpp"
+#include "model/external_loads.hpp"
 #include "solver/central_difference.hpp"
 #include "solver/frame_output.hpp"
 #include "solver/progress.hpp"
+#include "solver/springback.hpp"
 
 namespace sf {
 namespace {
@@ -123,52 +125,6 @@ double apply_prescribed_velocities(const Model& model, SolutionState& s, double 
     }
   }
   return work;
-}
-
-// Applied forces and moments at the current time and configuration.
-void compute_external_forces(const Model& model, SolutionState& s) {
-  const ExternalLoads& loads = model.loads;
-  s.f_ext.setZero();
-  s.m_ext.setZero();
-  if (!loads.gravity.isZero()) {
-    for (Eigen::Index i = 0; i < s.f_ext.cols(); ++i) {
-      s.f_ext.col(i) = model.blank.physical_nodal_mass[i] * loads.gravity;
-    }
-  }
-  for (const NodalLoad& load : loads.nodal) {
-    const Vec3 value = load.scale.value(s.time) * load.value;
-    Matrix3X& target = load.moment ? s.m_ext : s.f_ext;
-    for (int node : load.nodes) {
-      target.col(node) += value;
-    }
-  }
-  const QuadConn& quads = model.blank.part.quads;
-  const TriConn& triangles = model.blank.part.triangles;
-  const Eigen::Index n_quads = quads.cols();
-  for (const PressureLoad& load : loads.pressures) {
-    const double p = load.scale.value(s.time) * load.pressure;
-    for (int e : load.elements) {
-      // Vector area of the element, shared equally by its nodes; the pressure on the top face
-      // pushes along -normal. Quad: (x3 - x1) x (x4 - x2) / 2; triangle: (x2 - x1) x (x3 - x1) / 2.
-      if (e < n_quads) {
-        const Vec3 area = 0.5 * (s.x.col(quads(2, e)) - s.x.col(quads(0, e)))
-                                    .cross(s.x.col(quads(3, e)) - s.x.col(quads(1, e)));
-        const Vec3 f = (-0.25 * p) * area;
-        for (int a = 0; a < 4; ++a) {
-          s.f_ext.col(quads(a, e)) += f;
-        }
-      } else {
-        const Eigen::Index k = e - n_quads;
-        const Vec3 x1 = s.x.col(triangles(0, k));
-        const Vec3 area =
-            0.5 * (s.x.col(triangles(1, k)) - x1).cross(s.x.col(triangles(2, k)) - x1);
-        const Vec3 f = (-p / 3.0) * area;
-        for (int a = 0; a < 3; ++a) {
-          s.f_ext.col(triangles(a, k)) += f;
-        }
-      }
-    }
-  }
 }
 
 [[noreturn]] void throw_non_finite(const Model& model, const SolutionState& s) {
@@ -353,7 +309,7 @@ ShellForceResult compute_forces(Model& model, SolutionState& s, double dt) {
   s.f_int.setZero();
   s.m_int.setZero();
   s.f_contact.setZero();
-  compute_external_forces(model, s);
+  compute_external_forces(model, s.time, s.x, s.f_ext, s.m_ext);
   ShellForceResult element_result;
   const auto element_start = std::chrono::steady_clock::now();
   try {
@@ -500,7 +456,7 @@ void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previ
   e.kinetic = whole_step_kinetic_energy(model, s, dt) + tool_kinetic;
 }
 
-RunSummary run_explicit(Model& model, const RunOptions& options) {
+RunSummary run_explicit(Model& model, const RunOptions& options, SolutionState* final_state) {
   const auto wall_start = std::chrono::steady_clock::now();
   const ControlConfig& control = model.config.control;
   SolutionState s = make_initial_state(model);
@@ -623,6 +579,16 @@ RunSummary run_explicit(Model& model, const RunOptions& options) {
                                        a.last.nodes_checked, a.max_misses, a.max_misses_time,
                                        a.total_misses, a.max_gap_error});
     }
+  }
+  // The forming summary above is the state with the tools in place; springback goes on from it.
+  if (model.config.springback) {
+    summary.springback = run_springback(model, s, output.get());
+    if (output) {
+      output->flush();
+    }
+  }
+  if (final_state) {
+    *final_state = std::move(s);
   }
   return summary;
 }

@@ -14,9 +14,12 @@ struct RunOptions {
   bool write_results = true;
 };
 
-/// Runs the model from time 0 to its end time, writing frames and history as it goes. Throws
-/// InstabilityError (after writing what it can) when the run goes unstable.
-RunSummary run_explicit(Model& model, const RunOptions& options);
+/// Runs the model from time 0 to its end time, writing frames and history as it goes, then the
+/// case's springback if it has one; the final state goes to `final_state` when given. Throws
+/// InstabilityError (after writing what it can) when the run goes unstable, ConvergenceError when
+/// an implicit springback cannot converge.
+RunSummary run_explicit(Model& model, const RunOptions& options,
+                        SolutionState* final_state = nullptr);
 
 /// One step's worth of the loop's phases, public so tests can drive a model cycle by cycle.
 SolutionState make_initial_state(const Model& model);

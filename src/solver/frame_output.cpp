@@ -89,8 +89,8 @@ FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& direct
 void FrameOutput::write_frame(const Model& model, const SolutionState& s) {
   audits_.record(model, s);
   displacement_ = s.x - model.blank.mesh.nodes;
-  compute_element_stress_output(model.blank.part, s.x, s.shell, stress_mid_, stress_top_,
-                                stress_bottom_, plastic_strain_);
+  compute_element_stress_output(model.blank.part, stress_geometry_ ? *stress_geometry_ : s.x,
+                                s.shell, stress_mid_, stress_top_, stress_bottom_, plastic_strain_);
   std::vector<PartFrameView> frames;
   PartFrameView blank{"blank", s.x, {}};
   blank.fields = {

@@ -24,6 +24,10 @@ class FrameOutput {
   /// coordinates (the end of forming). Before this call, a case with [springback] writes the field
   /// as zeros, so that every frame has the same arrays.
   void set_springback_reference(const Matrix3X& x_formed);
+  /// From now on, element stresses are turned to global components with the element frames at
+  /// these coordinates (mm) rather than the current ones: a linear analysis refers its stresses
+  /// to the undeformed geometry (null = the current coordinates again).
+  void set_stress_geometry(const Matrix3X* x) { stress_geometry_ = x; }
   /// The search audits run with the frames and history rows (contact pairs with audit = true).
   const SearchAuditRecorder& search_audits() const { return audits_; }
 
@@ -32,6 +36,7 @@ class FrameOutput {
   SearchAuditRecorder audits_;
   Matrix3X displacement_;
   bool has_springback_field_ = false;
+  const Matrix3X* stress_geometry_ = nullptr;
   Matrix3X springback_reference_;     ///< mm, x_formed (empty until set)
   Matrix3X springback_displacement_;  ///< mm
   VectorX plastic_strain_;

@@ -8,6 +8,7 @@
 
 #include "core/build_info.hpp"
 #include "core/errors.hpp"
+#include "solver/implicit_summary.hpp"
 
 namespace sf {
 
@@ -127,6 +128,13 @@ std::string format_run_summary(const RunSummary& r) {
         a.tool, a.search, a.final_misses, a.final_nodes_checked, a.max_misses, a.max_misses_time,
         a.total_misses, a.audits, a.max_gap_error));
   }
+  if (r.static_step) {
+    add("Static step");
+    text += format_implicit_step(*r.static_step);
+  }
+  if (r.springback) {
+    text += format_springback(*r.springback);
+  }
   return text;
 }
 
@@ -191,6 +199,12 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
                                  {"max_misses_time_s", a.max_misses_time},
                                  {"total_misses", a.total_misses},
                                  {"max_gap_error_mm", a.max_gap_error}};
+  }
+  if (r.static_step) {
+    j["static_step"] = implicit_step_json(*r.static_step);
+  }
+  if (r.springback) {
+    j["springback"] = springback_json(*r.springback);
   }
   std::ofstream out(file);
   if (!out) {

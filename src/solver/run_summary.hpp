@@ -5,8 +5,10 @@
 #include <string>
 #include <vector>
 
+#include "implicit/static_step.hpp"
 #include "model/model.hpp"
 #include "solver/solution_state.hpp"
+#include "solver/springback.hpp"
 
 namespace sf {
 
@@ -64,6 +66,8 @@ struct RunSummary {
   std::vector<ToolSummary> tools;
   std::vector<DrawInResult> draw_ins;
   std::vector<SearchAuditSummary> search_audits;  ///< filled by the driver when results are written
+  std::optional<ImplicitStepSummary> static_step;  ///< a static analysis
+  std::optional<SpringbackSummary> springback;     ///< after an explicit forming run
 };
 
 RunSummary make_run_summary(const Model& model, const SolutionState& state, double wall_seconds);

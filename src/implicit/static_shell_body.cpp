@@ -1,0 +1,94 @@
+#include "implicit/static_shell_body.hpp"
+
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <variant>
+
+namespace sf {
+
+StaticShellBody::StaticShellBody(const ShellPart& part, const Matrix3X& x, const ShellState& state)
+    : part_(part), x_(x), state_(state), x_trial_(3, x.cols()) {
+  if (part_.hourglass_form == HourglassForm::viscous) {
+    part_.hourglass_form = HourglassForm::stiffness;
+    state_.hourglass.assign(
+        static_cast<std::size_t>(kHourglassModes) * static_cast<std::size_t>(element_count(part_)),
+        0.0);
+  }
+  // Mean edge length and mean thickness.
+  double edges = 0.0;
+  long edge_count = 0;
+  for (Eigen::Index e = 0; e < part_.quads.cols(); ++e) {
+    for (int a = 0; a < 4; ++a) {
+      edges += (x_.col(part_.quads(a, e)) - x_.col(part_.quads((a + 1) % 4, e))).norm();
+      ++edge_count;
+    }
+  }
+  for (Eigen::Index e = 0; e < part_.triangles.cols(); ++e) {
+    for (int a = 0; a < 3; ++a) {
+      edges += (x_.col(part_.triangles(a, e)) - x_.col(part_.triangles((a + 1) % 3, e))).norm();
+      ++edge_count;
+    }
+  }
+  if (edge_count == 0) {
+    throw std::invalid_argument("StaticShellBody: the part has no elements");
+  }
+  length_scale_ = edges / static_cast<double>(edge_count);
+  const double t = std::accumulate(state_.thickness.begin(), state_.thickness.end(), 0.0) /
+                   static_cast<double>(state_.thickness.size());
+  const auto [young, poisson] =
+      std::visit([](const auto& law) { return std::pair(law.E, law.nu); }, part_.material);
+  drilling_stiffness_ =
+      kDrillingStiffnessFraction * young * t * t * t / (12.0 * (1.0 - poisson * poisson));
+  update_normals();
+}
+
+void StaticShellBody::update_normals() {
+  normal_.setZero(3, x_.cols());
+  for (Eigen::Index e = 0; e < part_.quads.cols(); ++e) {
+    const auto q = part_.quads.col(e);
+    const Vec3 n = (x_.col(q(2)) - x_.col(q(0))).cross(x_.col(q(3)) - x_.col(q(1)));
+    for (int a = 0; a < 4; ++a) {
+      normal_.col(q(a)) += n;
+    }
+  }
+  for (Eigen::Index e = 0; e < part_.triangles.cols(); ++e) {
+    const auto q = part_.triangles.col(e);
+    const Vec3 n = (x_.col(q(1)) - x_.col(q(0))).cross(x_.col(q(2)) - x_.col(q(0)));
+    for (int a = 0; a < 3; ++a) {
+      normal_.col(q(a)) += n;
+    }
+  }
+  for (Eigen::Index i = 0; i < normal_.cols(); ++i) {
+    const double length = normal_.col(i).norm();
+    if (length > 0.0) {
+      normal_.col(i) /= length;
+    }
+  }
+}
+
+ShellForceResult StaticShellBody::compute_forces(const Matrix3X& du, const Matrix3X& dtheta,
+                                                 Matrix3X& f, Matrix3X& m, ShellState& trial,
+                                                 bool small_strain) const {
+  trial = state_;  // same sizes after the first call: no allocation
+  // The element takes its strain increments on x_end - du / 2.
+  x_trial_ = small_strain ? Matrix3X(x_ + 0.5 * du) : Matrix3X(x_ + du);
+  f.setZero(3, x_.cols());
+  m.setZero(3, x_.cols());
+  // One step of unit length: "velocities" du, dtheta over dt = 1.
+  ShellForceResult r = compute_shell_internal_forces(part_, x_trial_, du, dtheta, 1.0, trial, f, m);
+  // Drilling springs about the committed normals.
+  for (Eigen::Index i = 0; i < x_.cols(); ++i) {
+    const Vec3 n = normal_.col(i);
+    m.col(i) += (drilling_stiffness_ * n.dot(dtheta.col(i))) * n;
+  }
+  return r;
+}
+
+void StaticShellBody::commit(const Matrix3X& du, const ShellState& trial) {
+  x_ += du;
+  state_ = trial;
+  update_normals();
+}
+
+}  // namespace sf

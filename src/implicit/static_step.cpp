@@ -1,0 +1,402 @@
+#include "implicit/static_step.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/errors.hpp"
+#include "core/log.hpp"
+#include "implicit/node_graph.hpp"
+#include "implicit/rigid_body_modes.hpp"
+#include "implicit/tangent_stiffness.hpp"
+
+namespace sf {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// The full Newton step is kept unless it multiplies the residual norm by more than this.
+constexpr double kResidualGrowthLimit = 1e3;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// A trial point of the Newton iteration: the increment, the forces there and the trial state.
+struct TrialPoint {
+  Matrix3X du, dtheta;    // mm, rad
+  Matrix3X f_int, m_int;  // N, N mm
+  Matrix3X f_ext, m_ext;  // N, N mm
+  ShellState state;
+  VectorX residual;  // per equation: external - internal
+  ShellForceResult forces;
+  double reference = 0.0;      // N
+  double residual_norm = 0.0;  // N (moments / length)
+};
+
+class NewtonSolver {
+ public:
+  NewtonSolver(StaticShellBody& body, const DofMap& dofs, const StaticLoad& load,
+               const StaticStepOptions& options, StaticStepReport& report)
+      : body_(body),
+        dofs_(dofs),
+        load_(load),
+        options_(options),
+        report_(report),
+        graph_(make_node_graph(body.part(), body.node_count())),
+        tangent_(graph_, dofs, body.length_scale()),
+        solver_(options.controls.linear_solver),
+        length_(body.length_scale()) {
+    const Eigen::Index n = body.node_count();
+    for (TrialPoint* p : {&current_, &candidate_}) {
+      p->du.setZero(3, n);
+      p->dtheta.setZero(3, n);
+      p->f_ext.setZero(3, n);
+      p->m_ext.setZero(3, n);
+      p->residual.setZero(dofs.equation_count());
+    }
+    delta_.setZero(dofs.equation_count());
+    report_.colours = tangent_.colour_count();
+    report_.equations = dofs.equation_count();
+  }
+
+  // Tries the increment lambda_start -> lambda_end from the committed state; commits it and
+  // returns true when it converges.
+  bool run_increment(double lambda_start, double lambda_end, IncrementRecord& record) {
+    record.lambda_start = lambda_start;
+    record.lambda_end = lambda_end;
+    lambda_end_ = lambda_end;
+    const ImplicitConfig& c = options_.controls;
+    current_.du.setZero();
+    current_.dtheta.setZero();
+    try {
+      evaluate(current_, lambda_end);
+    } catch (const InstabilityError& e) {
+      record.failure = e.what();
+      return false;
+    }
+    // External work of the increment by the trapezoidal rule needs the loads at its start.
+    f_ext_start_.resize(3, body_.node_count());
+    m_ext_start_.resize(3, body_.node_count());
+    load_.at(lambda_start, body_.x(), f_ext_start_, m_ext_start_);
+    record.initial_residual = current_.residual_norm / current_.reference;
+    bool converged =
+        !options_.linear && current_.residual_norm <= c.force_tolerance * current_.reference;
+    const int max_iterations = options_.linear ? 1 : c.max_iterations;
+    const double initial_norm = std::max(current_.residual_norm, 1e-300);
+    for (int it = 0; it < max_iterations && !converged; ++it) {
+      const auto tangent_start = Clock::now();
+      tangent_.compute(body_, current_.du, current_.dtheta, stiffness_);
+      report_.tangent_seconds += seconds_since(tangent_start);
+      report_.tangent_evaluations += tangent_.evaluations_per_tangent();
+      factorize_or_throw();
+      solved_for_ = current_.residual;
+      solver_.solve(std::span<const double>(current_.residual.data(), current_.residual.size()),
+                    std::span<double>(delta_.data(), delta_.size()));
+      NewtonIteration iteration;
+      double step = 1.0;
+      try {
+        if (options_.linear) {
+          take_step(1.0);
+        } else {
+          step = search_line();
+        }
+      } catch (const InstabilityError& e) {
+        record.failure = fmt::format("iteration {}: {}", it + 1, e.what());
+        return false;
+      }
+      std::swap(current_, candidate_);
+      iteration.step = step;
+      iteration.residual = current_.residual_norm / current_.reference;
+      const double increment_norm = displacement_norm(current_.du, current_.dtheta);
+      iteration.correction = step * correction_norm() / std::max(increment_norm, 1e-300);
+      record.iterations.push_back(iteration);
+      log_verbose("    iteration {}: residual {:.3e}, correction {:.3e}, line search {:.3f}\n",
+                  it + 1, iteration.residual, iteration.correction, step);
+      if (!std::isfinite(current_.residual_norm) || current_.residual_norm > 1e6 * initial_norm) {
+        record.failure = fmt::format("iteration {}: the residual diverged to {:.3e} (relative)",
+                                     it + 1, iteration.residual);
+        return false;
+      }
+      converged = options_.linear || (iteration.residual <= c.force_tolerance &&
+                                      iteration.correction <= c.displacement_tolerance);
+    }
+    if (!converged) {
+      record.failure = fmt::format(
+          "no convergence in {} iterations: residual {:.3e} (tolerance {:.1e}), largest at {}",
+          max_iterations, current_.residual_norm / current_.reference, c.force_tolerance,
+          worst_node());
+      return false;
+    }
+    record.converged = true;
+    if (options_.linear) {
+      // The nonlinear residual at the linear solution means little; report how well the linear
+      // system was solved instead.
+      report_.final_residual = linear_solve_residual();
+    } else {
+      report_.final_residual = current_.residual_norm / current_.reference;
+    }
+    report_.internal_work += current_.forces.internal_work + current_.forces.hourglass_power;
+    double external = 0.0;
+    for (Eigen::Index i = 0; i < current_.du.cols(); ++i) {
+      external += 0.5 * ((f_ext_start_.col(i) + current_.f_ext.col(i)).dot(current_.du.col(i)) +
+                         (m_ext_start_.col(i) + current_.m_ext.col(i)).dot(current_.dtheta.col(i)));
+    }
+    report_.external_work += external;
+    body_.commit(current_.du, current_.state);
+    return true;
+  }
+
+  const StiffnessSolver& solver() const { return solver_; }
+  bool factorised() const { return factorised_; }
+
+ private:
+  void evaluate(TrialPoint& p, double lambda) {
+    p.forces = body_.compute_forces(p.du, p.dtheta, p.f_int, p.m_int, p.state, options_.linear);
+    x_trial_ = body_.x() + p.du;
+    load_.at(lambda, x_trial_, p.f_ext, p.m_ext);
+    double external = 0.0;
+    double internal = 0.0;
+    for (Eigen::Index i = 0; i < p.du.cols(); ++i) {
+      external += p.f_ext.col(i).squaredNorm() + p.m_ext.col(i).squaredNorm() / (length_ * length_);
+      internal += p.f_int.col(i).squaredNorm() + p.m_int.col(i).squaredNorm() / (length_ * length_);
+    }
+    // The largest load seen in the step is a floor: a load that returns to zero would otherwise
+    // measure the residual against nothing.
+    largest_load_ = std::max(largest_load_, std::sqrt(external));
+    p.reference = std::max({load_.reference_force, largest_load_, std::sqrt(internal), 1e-300});
+    double norm = 0.0;
+    for (int eq = 0; eq < dofs_.equation_count(); ++eq) {
+      const int node = dofs_.node_of(eq);
+      const int dof = dofs_.dof_of(eq);
+      const double r = dof < 3 ? p.f_ext(dof, node) - p.f_int(dof, node)
+                               : p.m_ext(dof - 3, node) - p.m_int(dof - 3, node);
+      p.residual[eq] = r;
+      norm += dof < 3 ? r * r : r * r / (length_ * length_);
+    }
+    p.residual_norm = std::sqrt(norm);
+  }
+
+  // candidate_ = current_ + s delta, evaluated at the increment's end load.
+  void take_step(double s) {
+    candidate_.du = current_.du;
+    candidate_.dtheta = current_.dtheta;
+    for (int eq = 0; eq < dofs_.equation_count(); ++eq) {
+      const int node = dofs_.node_of(eq);
+      const int dof = dofs_.dof_of(eq);
+      (dof < 3 ? candidate_.du(dof, node) : candidate_.dtheta(dof - 3, node)) += s * delta_[eq];
+    }
+    evaluate(candidate_, lambda_end_);
+  }
+
+  // The line search is a safeguard, not an energy minimisation: thin shells store bending
+  // energy quadratically but membrane energy quartically in a large-rotation step, so the energy
+  // minimum along a Newton correction sits far short of the step that the next iteration
+  // completes (the membrane part is fixed by one more linear solve). The full step is therefore
+  // kept unless it inverts an element (then halved, up to four times) or raises the residual
+  // norm more than a thousandfold (a thin strip's first step in a 22-degree increment raises it
+  // 420-fold and converges in 7 iterations without a search); only then g(s) = delta . r(u + s
+  // delta) is driven towards zero by regula falsi (Crisfield 1991, vol. 1, sec. 9.5), at most five
+  // evaluations, s in [0.1, 1].
+  double search_line() {
+    const double g0 = delta_.dot(current_.residual);
+    double s = 1.0;
+    for (int attempt = 0;; ++attempt) {
+      try {
+        take_step(s);
+        break;
+      } catch (const InstabilityError&) {
+        if (attempt >= 4) {
+          throw;
+        }
+        s *= 0.5;
+      }
+    }
+    log_verbose("      full step: residual x {:.3e}\n",
+                candidate_.residual_norm / current_.residual_norm);
+    if (!options_.controls.line_search ||
+        candidate_.residual_norm <= kResidualGrowthLimit * current_.residual_norm) {
+      return s;
+    }
+    double g = delta_.dot(candidate_.residual);
+    if (g * g0 > 0.0) {
+      return s;  // still descending at the full step: no root of g to find in (0, s)
+    }
+    double s_low = 0.0, g_low = g0, s_high = s, g_high = g;
+    double best_s = s, best_g = g;
+    for (int k = 0; k < 5; ++k) {
+      double trial = s_high - g_high * (s_high - s_low) / (g_high - g_low);
+      trial = std::clamp(trial, 0.1, 1.0);
+      take_step(trial);
+      const double gt = delta_.dot(candidate_.residual);
+      if (std::abs(gt) < std::abs(best_g)) {
+        best_s = trial;
+        best_g = gt;
+      }
+      if (std::abs(gt) <= 0.5 * std::abs(g0)) {
+        return trial;
+      }
+      if (gt * g0 > 0.0) {
+        s_low = trial;
+        g_low = gt;
+      } else {
+        s_high = trial;
+        g_high = gt;
+      }
+    }
+    take_step(best_s);
+    return best_s;
+  }
+
+  void factorize_or_throw() {
+    try {
+      solver_.factorize(stiffness_);
+      factorised_ = true;
+      report_.last_factorization = solver_.last_stats();
+    } catch (const SingularSystemError& e) {
+      std::string where = "an equation the solver does not name";
+      if (e.equation() >= 0 && e.equation() < dofs_.equation_count()) {
+        where = fmt::format("{} {}", name(dofs_.node_of(e.equation())),
+                            kDofNames[dofs_.dof_of(e.equation())]);
+      }
+      throw ConvergenceError(fmt::format(
+          "the tangent stiffness is singular at {} ({}): the constraints leave a mechanism or a "
+          "rigid-body mode free there; hold it with [[boundary]] entries (or leave "
+          "implicit.rigid_body_modes = \"auto\" for the rigid-body modes)",
+          where, e.what()));
+    }
+  }
+
+  // ||K delta - r|| / ||r|| of the last solve (r the residual it was solved for).
+  double linear_solve_residual() {
+    product_.resize(delta_.size());
+    stiffness_.multiply(std::span<const double>(delta_.data(), delta_.size()),
+                        std::span<double>(product_.data(), product_.size()));
+    return (product_ - solved_for_).norm() / std::max(solved_for_.norm(), 1e-300);
+  }
+
+  double displacement_norm(const Matrix3X& du, const Matrix3X& dtheta) const {
+    return std::sqrt(du.squaredNorm() + length_ * length_ * dtheta.squaredNorm());
+  }
+
+  double correction_norm() const {
+    double norm = 0.0;
+    for (int eq = 0; eq < dofs_.equation_count(); ++eq) {
+      const double d = delta_[eq];
+      norm += dofs_.dof_of(eq) < 3 ? d * d : d * d * length_ * length_;
+    }
+    return std::sqrt(norm);
+  }
+
+  std::string name(int node) const {
+    return options_.node_name ? options_.node_name(node) : fmt::format("node {}", node);
+  }
+
+  std::string worst_node() const {
+    int worst = -1;
+    double largest = -1.0;
+    std::vector<double> per_node(static_cast<std::size_t>(body_.node_count()), 0.0);
+    for (int eq = 0; eq < dofs_.equation_count(); ++eq) {
+      const double r = current_.residual[eq];
+      per_node[static_cast<std::size_t>(dofs_.node_of(eq))] +=
+          dofs_.dof_of(eq) < 3 ? r * r : r * r / (length_ * length_);
+    }
+    for (std::size_t i = 0; i < per_node.size(); ++i) {
+      if (per_node[i] > largest) {
+        largest = per_node[i];
+        worst = static_cast<int>(i);
+      }
+    }
+    return worst < 0 ? std::string("no node")
+                     : fmt::format("{} ({:.3e} N)", name(worst), std::sqrt(largest));
+  }
+
+  StaticShellBody& body_;
+  const DofMap& dofs_;
+  const StaticLoad& load_;
+  const StaticStepOptions& options_;
+  StaticStepReport& report_;
+  NodeGraph graph_;
+  TangentStiffness tangent_;
+  StiffnessSolver solver_;
+  double length_;
+  CscMatrix stiffness_;
+  TrialPoint current_, candidate_;
+  VectorX delta_;
+  VectorX solved_for_, product_;  // the right-hand side of the last solve, and K delta
+  Matrix3X x_trial_, f_ext_start_, m_ext_start_;
+  bool factorised_ = false;
+  double lambda_end_ = 0.0;    // the load factor the increment being solved ends at
+  double largest_load_ = 0.0;  // N, the largest external load norm evaluated in the step
+};
+
+}  // namespace
+
+StaticStepReport solve_static_step(StaticShellBody& body, const DofMap& dofs,
+                                   const StaticLoad& load, const StaticStepOptions& options,
+                                   const IncrementCallback& on_converged) {
+  StaticStepReport report;
+  // Free rigid-body modes make the tangent singular; finite differences would only make it
+  // nearly so, and the factorisation could return a huge rigid motion instead of failing.
+  const RigidBodyModes free = find_free_rigid_body_modes(body.x(), dofs.held());
+  if (free.free_count > 0) {
+    std::string listed;
+    for (const std::string& m : free.free_modes) {
+      listed += (listed.empty() ? "" : "; ") + m;
+    }
+    throw ConvergenceError(
+        fmt::format("the stiffness is singular: the holds leave {} rigid-body mode{} free ({})",
+                    free.free_count, free.free_count == 1 ? "" : "s", listed));
+  }
+  NewtonSolver newton(body, dofs, load, options, report);
+  const ImplicitConfig& c = options.controls;
+  const double nominal = options.linear ? 1.0 : 1.0 / c.increments;
+  double lambda = 0.0;
+  double step = nominal;
+  int cut_level = 0;
+  int successes_since_cut = 0;
+  while (lambda < 1.0 - 1e-12) {
+    const double target = std::min(1.0, lambda + step);
+    IncrementRecord record;
+    const bool ok = newton.run_increment(lambda, target, record);
+    report.increments.push_back(record);
+    if (ok) {
+      lambda = target;
+      report.converged_increments += 1;
+      report.newton_iterations += static_cast<int>(record.iterations.size());
+      log_info("  increment {}: load factor {:.4f}, {} iterations, residual {:.2e}\n",
+               report.converged_increments, lambda, record.iterations.size(),
+               report.final_residual);
+      if (on_converged) {
+        on_converged(lambda, body, report);
+      }
+      // After two good increments at a cut size, try twice the size again (up to the nominal).
+      if (cut_level > 0 && ++successes_since_cut >= 2) {
+        step = std::min(2.0 * step, nominal);
+        cut_level -= 1;
+        successes_since_cut = 0;
+      }
+      continue;
+    }
+    report.cuts += 1;
+    cut_level += 1;
+    successes_since_cut = 0;
+    if (options.linear || cut_level > c.max_cuts) {
+      report.solver = newton.solver().totals();
+      throw ConvergenceError(fmt::format(
+          "the static step stopped at load factor {:.6f} of 1: the increment to {:.6f} failed "
+          "after {} halvings ({}); raise implicit.max_iterations or implicit.max_cuts, or give "
+          "more implicit.increments",
+          lambda, target, cut_level - 1, record.failure));
+    }
+    log_info("  increment to load factor {:.4f} failed ({}); halved\n", target, record.failure);
+    step *= 0.5;
+  }
+  report.solver = newton.solver().totals();
+  return report;
+}
+
+}  // namespace sf

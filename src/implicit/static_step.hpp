@@ -1,0 +1,88 @@
+#pragma once
+// An implicit static step: the load applied in increments, each solved by Newton-Raphson on the
+// finite-difference tangent with a line search, convergence on the force and displacement
+// norms, and an increment that fails halved and tried again (docs/static-analysis.md).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "implicit/dof_map.hpp"
+#include "implicit/static_shell_body.hpp"
+#include "implicit/stiffness_solver.hpp"
+#include "io/case_config.hpp"
+
+namespace sf {
+
+/// What loads the body over the step, as a function of the load factor lambda in [0, 1].
+struct StaticLoad {
+  /// External forces f (N) and moments m (N mm) at lambda on the coordinates x (f, m sized by
+  /// the caller; the function sets every entry).
+  std::function<void(double lambda, const Matrix3X& x, Matrix3X& f, Matrix3X& m)> at;
+  /// N, the force level the residual is measured against (moments count divided by the body's
+  /// length scale); 0 = the larger of the internal force norm at each iteration and the largest
+  /// external load norm met so far in the step.
+  double reference_force = 0.0;
+};
+
+/// One Newton iteration's record.
+struct NewtonIteration {
+  double residual = 0.0;    ///< -, residual norm / reference force after the iteration
+  double correction = 0.0;  ///< -, correction norm / increment norm
+  double step = 1.0;        ///< -, the line search's factor on the Newton correction
+};
+
+struct IncrementRecord {
+  double lambda_start = 0.0;
+  double lambda_end = 0.0;
+  bool converged = false;
+  double initial_residual = 0.0;  ///< -, before the first iteration
+  std::vector<NewtonIteration> iterations;
+  std::string failure;  ///< why it was cut (empty when converged)
+};
+
+struct StaticStepOptions {
+  ImplicitConfig controls;
+  /// One solve on the tangent at the start, no iterations (a linear analysis).
+  bool linear = false;
+  /// Names a node in messages (e.g. "node 12 (gmsh 13)"); default "node i".
+  std::function<std::string(int node)> node_name;
+};
+
+struct StaticStepReport {
+  std::vector<IncrementRecord> increments;  ///< every attempt, in order, cut ones included
+  int converged_increments = 0;
+  int cuts = 0;
+  int newton_iterations = 0;  ///< over the converged increments
+  double tangent_seconds = 0.0;
+  int tangent_evaluations = 0;
+  int colours = 0;  ///< of the distance-2 node colouring
+  int equations = 0;
+  FactorizationStats last_factorization;
+  StiffnessSolverTotals solver;
+  double internal_work = 0.0;   ///< N mm, work of the internal forces over the step
+  double external_work = 0.0;   ///< N mm, work of the loads over the step
+  double final_residual = 0.0;  ///< -, relative, of the last converged increment
+};
+
+/// A static step as the run summary reports it.
+struct ImplicitStepSummary {
+  StaticStepReport report;
+  std::vector<std::string> free_modes;  ///< rigid-body modes the case's constraints left free
+  std::vector<std::string> added_constraints;  ///< the holds added for them
+  double wall_seconds = 0.0;                   ///< s, the whole step
+};
+
+/// Called after each converged increment with its load factor, the body (committed) and the
+/// report so far.
+using IncrementCallback =
+    std::function<void(double lambda, const StaticShellBody& body, const StaticStepReport& report)>;
+
+/// Solves the step, committing each converged increment into `body` and calling on_converged
+/// after it. Throws ConvergenceError naming the load factor, the
+/// residual and the worst node when an increment fails after controls.max_cuts halvings or the
+/// stiffness is singular.
+StaticStepReport solve_static_step(StaticShellBody& body, const DofMap& dofs,
+                                   const StaticLoad& load, const StaticStepOptions& options,
+                                   const IncrementCallback& on_converged = {});
+
+}  // namespace sf
