@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "core/errors.hpp"
 #include "core/log.hpp"
 
 namespace sf {
@@ -14,10 +15,17 @@ SpringbackSummary run_springback(Model& model, SolutionState& s, FrameOutput* ou
     output->set_springback_reference(formed);
   }
   SpringbackSummary summary;
+  // The measures' regions are picked on the formed shape, known only now: ranges that do not fit
+  // it (a shorter stroke than the case was written for) cost the measures, not the springback.
   const std::vector<int>* section = nullptr;
   if (config.u_channel) {
     section = &model.blank.group(config.u_channel->section).nodes;
-    summary.u_channel_formed = measure_u_channel(*config.u_channel, *section, formed, formed);
+    try {
+      summary.u_channel_formed = measure_u_channel(*config.u_channel, *section, formed, formed);
+    } catch (const InputError& e) {
+      log_warning("no U-channel measures: {}\n", e.what());
+      section = nullptr;
+    }
   }
   if (config.method == SpringbackConfig::Method::implicit) {
     summary.method = "implicit";
@@ -33,7 +41,7 @@ SpringbackSummary run_springback(Model& model, SolutionState& s, FrameOutput* ou
       summary.max_displacement_node = static_cast<int>(i);
     }
   }
-  if (config.u_channel) {
+  if (section) {
     summary.u_channel = measure_u_channel(*config.u_channel, *section, formed, s.x);
   }
   summary.wall_seconds =
