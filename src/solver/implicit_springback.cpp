@@ -5,16 +5,14 @@
 
 #include "core/log.hpp"
 #include "implicit/static_constraints.hpp"
+#include "solver/blank_node_name.hpp"
 #include "solver/springback.hpp"
 
 namespace sf {
 
 ImplicitStepSummary run_implicit_springback(Model& model, SolutionState& s, FrameOutput* output) {
   const auto start = std::chrono::steady_clock::now();
-  const auto& tags = model.blank.mesh.gmsh_node_tags;
-  const auto node_name = [&tags](int node) {
-    return fmt::format("node {} (gmsh {})", node, tags[static_cast<std::size_t>(node)]);
-  };
+  const auto node_name = blank_node_namer(model);
   StaticShellBody body(model.blank.part, s.x, s.shell);
   ImplicitStepSummary summary;
   StaticConstraints constraints = make_static_constraints(

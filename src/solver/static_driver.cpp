@@ -8,6 +8,7 @@
 #include "implicit/static_constraints.hpp"
 #include "implicit/static_step.hpp"
 #include "model/external_loads.hpp"
+#include "solver/blank_node_name.hpp"
 #include "solver/frame_output.hpp"
 
 namespace sf {
@@ -24,10 +25,7 @@ RunSummary run_static(Model& model, const RunOptions& options, SolutionState* fi
   if (output && model.config.analysis.linear) {
     output->set_stress_geometry(&model.blank.mesh.nodes);
   }
-  const auto& tags = model.blank.mesh.gmsh_node_tags;
-  const auto node_name = [&tags](int node) {
-    return fmt::format("node {} (gmsh {})", node, tags[static_cast<std::size_t>(node)]);
-  };
+  const auto node_name = blank_node_namer(model);
   StaticShellBody body(model.blank.part, s.x, s.shell);
   ImplicitStepSummary step;
   StaticConstraints constraints = make_static_constraints(
