@@ -221,7 +221,7 @@ struct ImplicitConfig {
 /// channel (x along the length from the symmetry plane, z the punch axis). The three regions are
 /// picked on the formed shape (at the end of forming) and measured on the current one.
 struct UChannelMeasureConfig {
-  std::string section;                   ///< node group: a line of blank nodes along x
+  std::string section;                     ///< node group: a line of blank nodes along x
   std::array<double, 2> bottom{0.0, 0.0};  ///< mm, x range of the bottom (formed shape)
   std::array<double, 2> wall{0.0, 0.0};    ///< mm, z range of the side wall (formed shape)
   std::array<double, 2> flange{0.0, 0.0};  ///< mm, x range of the flange (formed shape)

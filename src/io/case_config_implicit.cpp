@@ -60,9 +60,9 @@ void read_implicit(const TomlSection& top, ImplicitConfig& implicit) {
                  interval(0.0, true, 1.0, true));
   s->read_bool("line_search", implicit.line_search);
   using Solver = ImplicitConfig::LinearSolver;
-  s->read_choice("linear_solver", implicit.linear_solver,
-                 {{"auto", Solver::automatic}, {"cholmod", Solver::cholmod},
-                  {"umfpack", Solver::umfpack}});
+  s->read_choice(
+      "linear_solver", implicit.linear_solver,
+      {{"auto", Solver::automatic}, {"cholmod", Solver::cholmod}, {"umfpack", Solver::umfpack}});
   using Modes = ImplicitConfig::RigidBodyModes;
   s->read_choice("rigid_body_modes", implicit.rigid_body_modes,
                  {{"auto", Modes::automatic}, {"error", Modes::error}});
@@ -88,9 +88,9 @@ void read_springback(const TomlSection& top, std::optional<SpringbackConfig>& sp
   s->check_keys({"method", "release_time", "max_time", "kinetic_tolerance", "u_channel"});
   SpringbackConfig sb;
   using Method = SpringbackConfig::Method;
-  s->read_choice("method", sb.method,
-                 {{"implicit", Method::implicit},
-                  {"dynamic_relaxation", Method::dynamic_relaxation}});
+  s->read_choice(
+      "method", sb.method,
+      {{"implicit", Method::implicit}, {"dynamic_relaxation", Method::dynamic_relaxation}});
   if (sb.method == Method::implicit) {
     for (const std::string_view key : {"release_time", "max_time", "kinetic_tolerance"}) {
       if (s->has(key)) {

@@ -95,7 +95,8 @@ kinetic_tolerance = 1e-5
   EXPECT_DOUBLE_EQ(dr.springback->release_time, 0.01);
   EXPECT_DOUBLE_EQ(dr.springback->max_time, 0.1);  // default: 10 x release_time
   EXPECT_DOUBLE_EQ(dr.springback->kinetic_tolerance, 1e-5);
-  const sf::CaseConfig again = sf::read_case(write_case(sf::format_resolved_case(dr), "again.toml"));
+  const sf::CaseConfig again =
+      sf::read_case(write_case(sf::format_resolved_case(dr), "again.toml"));
   ASSERT_TRUE(again.springback.has_value());
   EXPECT_EQ(again.springback->method, dr.springback->method);
   EXPECT_DOUBLE_EQ(again.springback->max_time, 0.1);
@@ -105,8 +106,7 @@ TEST_F(ReadCaseImplicit, ErrorsNameTheKeyAndTheRule) {
   const std::string base = std::string(kMinimal);
   expect_error(base + "[analysis]\ntype = \"implicit\"\n", 0,
                {"analysis.type", "\"explicit\"", "\"static\""});
-  expect_error(base + "[analysis]\ngeometry = \"linear\"\n", 0,
-               {"analysis.geometry", "static"});
+  expect_error(base + "[analysis]\ngeometry = \"linear\"\n", 0, {"analysis.geometry", "static"});
   expect_error(base + "[implicit]\nincrements = 0\n", 0, {"implicit.increments"});
   expect_error(base + "[implicit]\nforce_tolerance = -1e-6\n", 0, {"implicit.force_tolerance"});
   expect_error(base + "[implicit]\nlinear_solver = \"pardiso\"\n", 0,
