@@ -72,7 +72,7 @@ ShellForceResult StaticShellBody::compute_forces(const Matrix3X& du, const Matri
                                                  bool small_strain) const {
   trial = state_;  // same sizes after the first call: no allocation
   // The element takes its strain increments on x_end - du / 2.
-  x_trial_ = small_strain ? Matrix3X(x_ + 0.5 * du) : Matrix3X(x_ + du);
+  x_trial_ = x_ + (small_strain ? 0.5 : 1.0) * du;  // into the sized buffer: no allocation
   f.setZero(3, x_.cols());
   m.setZero(3, x_.cols());
   // One step of unit length: "velocities" du, dtheta over dt = 1.

@@ -151,7 +151,6 @@ class NewtonSolver {
   }
 
   const StiffnessSolver& solver() const { return solver_; }
-  bool factorised() const { return factorised_; }
 
  private:
   void evaluate(TrialPoint& p, double lambda) {
@@ -254,7 +253,6 @@ class NewtonSolver {
   void factorize_or_throw() {
     try {
       solver_.factorize(stiffness_);
-      factorised_ = true;
       report_.last_factorization = solver_.last_stats();
     } catch (const SingularSystemError& e) {
       std::string where = "an equation the solver does not name";
@@ -328,7 +326,6 @@ class NewtonSolver {
   VectorX delta_;
   VectorX solved_for_, product_;  // the right-hand side of the last solve, and K delta
   Matrix3X x_trial_, f_ext_start_, m_ext_start_;
-  bool factorised_ = false;
   double lambda_end_ = 0.0;    // the load factor the increment being solved ends at
   double largest_load_ = 0.0;  // N, the largest external load norm evaluated in the step
 };

@@ -8,8 +8,10 @@ void compute_external_forces(const Model& model, double time, const Matrix3X& x,
   f_ext.setZero();
   m_ext.setZero();
   if (!loads.gravity.isZero()) {
+    const Vec3 g =
+        (loads.gravity_scale.empty() ? 1.0 : loads.gravity_scale.value(time)) * loads.gravity;
     for (Eigen::Index i = 0; i < f_ext.cols(); ++i) {
-      f_ext.col(i) = model.blank.physical_nodal_mass[i] * loads.gravity;
+      f_ext.col(i) = model.blank.physical_nodal_mass[i] * g;
     }
   }
   for (const NodalLoad& load : loads.nodal) {

@@ -63,6 +63,7 @@ struct ExternalLoads {
   std::vector<PressureLoad> pressures;
   std::vector<PrescribedVelocity> prescribed_velocities;
   Vec3 gravity = Vec3::Zero();  ///< mm/s^2
+  LoadCurve gravity_scale;      ///< scale factor against time; empty = 1 (explicit runs)
   double damping = 0.0;         ///< 1/s, mass-proportional
   bool empty() const {
     return nodal.empty() && pressures.empty() && gravity.isZero() && prescribed_velocities.empty();

@@ -450,21 +450,8 @@ DynamicRelaxationResult run_dynamic_relaxation(Model& model, SolutionState& stat
   } catch (const InstabilityError& error) {
     // As run_explicit: the history up to the stop and, when the positions are finite, one last
     // frame of the state at the stop.
-    std::string last_frame;
-    if (output) {
-      output->append_history(model, s);
-      if (s.x.allFinite() && s.time > last_frame_time) {
-        try {
-          output->write_frame(model, s);
-          last_frame = fmt::format(
-              "; the last frame in the results (t = {:.6e} s) is the state at the stop", s.time);
-        } catch (const std::exception& write_error) {
-          last_frame =
-              fmt::format("; the state at the stop could not be written ({})", write_error.what());
-        }
-      }
-      output->flush();
-    }
+    const std::string last_frame =
+        output ? output->write_stop_state(model, s, last_frame_time) : std::string();
     throw InstabilityError(error.what() + last_frame);
   }
 

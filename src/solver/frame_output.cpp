@@ -1,5 +1,7 @@
 #include "solver/frame_output.hpp"
 
+#include <fmt/core.h>
+
 #include "core/build_info.hpp"
 
 namespace sf {
@@ -171,6 +173,24 @@ void FrameOutput::set_springback_reference(const Matrix3X& x_formed) {
   has_springback_field_ = true;
   springback_reference_ = x_formed;
   springback_displacement_.setZero(3, x_formed.cols());
+}
+
+std::string FrameOutput::write_stop_state(const Model& model, const SolutionState& s,
+                                          double last_frame_time) {
+  std::string last_frame;
+  append_history(model, s);
+  if (s.x.allFinite() && s.time > last_frame_time) {
+    try {
+      write_frame(model, s);
+      last_frame = fmt::format(
+          "; the last frame in the results (t = {:.6e} s) is the state at the stop", s.time);
+    } catch (const std::exception& write_error) {
+      last_frame =
+          fmt::format("; the state at the stop could not be written ({})", write_error.what());
+    }
+  }
+  flush();
+  return last_frame;
 }
 
 void FrameOutput::flush() {

@@ -20,6 +20,11 @@ class FrameOutput {
   /// Buffers a history row of the current state (none if this cycle has one already).
   void append_history(const Model& model, const SolutionState& state);
   void flush();
+  /// After a run stopped on an InstabilityError: the history up to the stop and, when the
+  /// positions are finite and newer than the last frame (time last_frame_time, s), one last frame
+  /// of the state at the stop; then flushes. Returns the sentence to append to the error message.
+  std::string write_stop_state(const Model& model, const SolutionState& state,
+                               double last_frame_time);
   /// From now on, frames carry springback_displacement = x - x_formed (mm) with x_formed these
   /// coordinates (the end of forming). Before this call, a case with [springback] writes the field
   /// as zeros, so that every frame has the same arrays.

@@ -47,15 +47,7 @@ RunSummary run_static(Model& model, const RunOptions& options, SolutionState* fi
       scale = ramp;
     }
   }
-  if (!model.loads.gravity.isZero()) {
-    for (Eigen::Index i = 0; i < s.x.cols(); ++i) {
-      model.loads.nodal.push_back({{static_cast<int>(i)},
-                                   model.blank.physical_nodal_mass[i] * model.loads.gravity,
-                                   false,
-                                   ramp});
-    }
-    model.loads.gravity.setZero();
-  }
+  model.loads.gravity_scale = ramp;
   StaticLoad load;
   load.at = [&](double lambda, const Matrix3X& x, Matrix3X& f, Matrix3X& m) {
     compute_external_forces(model, lambda * end_time, x, f, m);
