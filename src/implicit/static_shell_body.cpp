@@ -38,6 +38,7 @@ StaticShellBody::StaticShellBody(const ShellPart& part, const Matrix3X& x, const
                    static_cast<double>(state_.thickness.size());
   const auto [young, poisson] =
       std::visit([](const auto& law) { return std::pair(law.E, law.nu); }, part_.material);
+  membrane_stiffness_ = young * t;
   drilling_stiffness_ =
       kDrillingStiffnessFraction * young * t * t * t / (12.0 * (1.0 - poisson * poisson));
   update_normals();

@@ -43,6 +43,9 @@ class StaticShellBody {
   double length_scale() const { return length_scale_; }
   /// N mm per rad, the drilling spring of every node.
   double drilling_stiffness() const { return drilling_stiffness_; }
+  /// N/mm, E times the mean thickness at the start: the membrane stiffness scale that the
+  /// stabilising springs of a static step are given as a fraction of.
+  double membrane_stiffness() const { return membrane_stiffness_; }
 
  private:
   void update_normals();
@@ -53,6 +56,7 @@ class StaticShellBody {
   Matrix3X normal_;  ///< averaged unit normal per node at the committed coordinates
   double length_scale_ = 1.0;
   double drilling_stiffness_ = 0.0;
+  double membrane_stiffness_ = 0.0;
   mutable Matrix3X x_trial_;
 };
 

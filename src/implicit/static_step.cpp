@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "core/errors.hpp"
 #include "core/log.hpp"
@@ -68,6 +69,7 @@ class NewtonSolver {
   bool run_increment(double lambda_start, double lambda_end, IncrementRecord& record) {
     record.lambda_start = lambda_start;
     record.lambda_end = lambda_end;
+    record.stabilization = spring_;
     lambda_end_ = lambda_end;
     const ImplicitConfig& c = options_.controls;
     current_.du.setZero();
@@ -90,6 +92,7 @@ class NewtonSolver {
     for (int it = 0; it < max_iterations && !converged; ++it) {
       const auto tangent_start = Clock::now();
       tangent_.compute(body_, current_.du, current_.dtheta, stiffness_);
+      add_stabilization_to_tangent();
       report_.tangent_seconds += seconds_since(tangent_start);
       report_.tangent_evaluations += tangent_.evaluations_per_tangent();
       factorize_or_throw();
@@ -132,6 +135,7 @@ class NewtonSolver {
       return false;
     }
     record.converged = true;
+    record.unbalanced = spring_ * translation_norm(current_.du) / current_.reference;
     if (options_.linear) {
       // The nonlinear residual at the linear solution means little; report how well the linear
       // system was solved instead.
@@ -151,6 +155,9 @@ class NewtonSolver {
   }
 
   const StiffnessSolver& solver() const { return solver_; }
+
+  /// N/mm, the stabilising springs on every free translation, anchored at the increment's start.
+  void set_stabilization(double k) { spring_ = k; }
 
  private:
   void evaluate(TrialPoint& p, double lambda) {
@@ -173,8 +180,8 @@ class NewtonSolver {
       const int dof = dofs_.dof_of(eq);
       const double r = dof < 3 ? p.f_ext(dof, node) - p.f_int(dof, node)
                                : p.m_ext(dof - 3, node) - p.m_int(dof - 3, node);
-      p.residual[eq] = r;
-      norm += dof < 3 ? r * r : r * r / (length_ * length_);
+      p.residual[eq] = dof < 3 ? r - spring_ * p.du(dof, node) : r;
+      norm += dof < 3 ? p.residual[eq] * p.residual[eq] : r * r / (length_ * length_);
     }
     p.residual_norm = std::sqrt(norm);
   }
@@ -276,6 +283,34 @@ class NewtonSolver {
     return (product_ - solved_for_).norm() / std::max(solved_for_.norm(), 1e-300);
   }
 
+  void add_stabilization_to_tangent() {
+    if (spring_ == 0.0) {
+      return;
+    }
+    if (diagonal_.empty()) {  // the pattern is fixed: find the translations' diagonal once
+      for (int eq = 0; eq < dofs_.equation_count(); ++eq) {
+        if (dofs_.dof_of(eq) < 3) {
+          diagonal_.push_back(stiffness_.find(eq, eq));
+        }
+      }
+    }
+    for (const int at : diagonal_) {
+      stiffness_.values[static_cast<std::size_t>(at)] += spring_;
+    }
+  }
+
+  // mm, the norm of the free translations of an increment.
+  double translation_norm(const Matrix3X& du) const {
+    double norm = 0.0;
+    for (int eq = 0; eq < dofs_.equation_count(); ++eq) {
+      const int dof = dofs_.dof_of(eq);
+      if (dof < 3) {
+        norm += du(dof, dofs_.node_of(eq)) * du(dof, dofs_.node_of(eq));
+      }
+    }
+    return std::sqrt(norm);
+  }
+
   double displacement_norm(const Matrix3X& du, const Matrix3X& dtheta) const {
     return std::sqrt(du.squaredNorm() + length_ * length_ * dtheta.squaredNorm());
   }
@@ -326,9 +361,67 @@ class NewtonSolver {
   VectorX delta_;
   VectorX solved_for_, product_;  // the right-hand side of the last solve, and K delta
   Matrix3X x_trial_, f_ext_start_, m_ext_start_;
+  std::vector<int> diagonal_;  // positions of the translations' diagonal entries in stiffness_
+  double spring_ = 0.0;        // N/mm, stabilising springs (StaticStepOptions::stabilization)
   double lambda_end_ = 0.0;    // the load factor the increment being solved ends at
   double largest_load_ = 0.0;  // N, the largest external load norm evaluated in the step
 };
+
+// Settling at load factor 1 (pseudo-transient continuation with switched evolution
+// relaxation: Mulder & van Leer 1985, Kelley & Keyes 1998). Each settling increment is solved with
+// springs k anchored at its start, so the converged state misses equilibrium by the springs'
+// force k |du|, the unbalanced force. The springs are scaled by the ratio of the last two
+// unbalanced forces (softer as the motion dies out, within [1/20, 2] per increment) and, after an
+// increment that took at most a third of max_iterations, softened fourfold more; once the
+// unbalanced force is within the force tolerance, or the springs are a millionth of their start,
+// an increment without springs finishes the step (a plain Newton solve from a state that is
+// nearly in equilibrium). An increment that fails is retried with ten times stiffer springs.
+constexpr int kMaxSettlingIncrements = 60;
+
+void settle(NewtonSolver& newton, const StaticStepOptions& options, StaticStepReport& report) {
+  const double k_start = options.stabilization;
+  const double tolerance = options.controls.force_tolerance;
+  double k = k_start;
+  double previous = report.increments.back().unbalanced;
+  for (int n = 0; n < kMaxSettlingIncrements; ++n) {
+    const bool last_try = previous <= tolerance || k <= 1e-6 * k_start;
+    newton.set_stabilization(last_try ? 0.0 : k);
+    IncrementRecord record;
+    const bool ok = newton.run_increment(1.0, 1.0, record);
+    report.increments.push_back(record);
+    if (!ok) {
+      report.cuts += 1;
+      log_info("  settling increment with {:.3e} N/mm springs failed ({}); stiffer springs\n",
+               record.stabilization, record.failure);
+      k = std::min(10.0 * std::max(k, 1e-6 * k_start), 10.0 * k_start);
+      previous = std::numeric_limits<double>::infinity();  // not done: springs again next
+      continue;
+    }
+    report.settling_increments += 1;
+    report.newton_iterations += static_cast<int>(record.iterations.size());
+    log_info(
+        "  settling {} at load factor 1: springs {:.3e} N/mm, {} iterations, unbalanced "
+        "{:.2e}\n",
+        report.settling_increments, record.stabilization, record.iterations.size(),
+        record.unbalanced);
+    if (record.stabilization == 0.0) {
+      report.final_stabilization = 0.0;
+      return;
+    }
+    const double ratio =
+        std::isfinite(previous) && previous > 0.0 ? record.unbalanced / previous : 1.0;
+    const bool easy =
+        static_cast<int>(record.iterations.size()) * 3 <= options.controls.max_iterations;
+    k *= std::clamp(ratio, 0.05, 2.0) * (easy ? 0.25 : 1.0);
+    k = std::min(k, 10.0 * k_start);
+    previous = record.unbalanced;
+  }
+  throw ConvergenceError(fmt::format(
+      "the static step reached load factor 1 but did not settle in {} increments: the state "
+      "still misses equilibrium by {:.3e} x the reference force without its stabilising springs; "
+      "raise implicit.increments, or lower the stabilisation",
+      kMaxSettlingIncrements, previous));
+}
 
 }  // namespace
 
@@ -350,6 +443,8 @@ StaticStepReport solve_static_step(StaticShellBody& body, const DofMap& dofs,
   }
   NewtonSolver newton(body, dofs, load, options, report);
   const ImplicitConfig& c = options.controls;
+  const bool stabilized = options.stabilization > 0.0 && !options.linear;
+  newton.set_stabilization(stabilized ? options.stabilization : 0.0);
   const double nominal = options.linear ? 1.0 : 1.0 / c.increments;
   double lambda = 0.0;
   double step = nominal;
@@ -364,10 +459,13 @@ StaticStepReport solve_static_step(StaticShellBody& body, const DofMap& dofs,
       lambda = target;
       report.converged_increments += 1;
       report.newton_iterations += static_cast<int>(record.iterations.size());
-      log_info("  increment {}: load factor {:.4f}, {} iterations, residual {:.2e}\n",
-               report.converged_increments, lambda, record.iterations.size(),
-               report.final_residual);
-      if (on_converged) {
+      log_info("  increment {}: load factor {:.4f}, {} iterations, residual {:.2e}{}\n",
+               report.converged_increments, lambda, record.iterations.size(), report.final_residual,
+               stabilized ? fmt::format(", unbalanced {:.2e} (held by the stabilising springs)",
+                                        record.unbalanced)
+                          : std::string());
+      // A stabilised step reports load factor 1 once it has settled there.
+      if (on_converged && !(stabilized && lambda >= 1.0 - 1e-12)) {
         on_converged(lambda, body, report);
       }
       // After two good increments at a cut size, try twice the size again (up to the nominal).
@@ -386,11 +484,18 @@ StaticStepReport solve_static_step(StaticShellBody& body, const DofMap& dofs,
       throw ConvergenceError(fmt::format(
           "the static step stopped at load factor {:.6f} of 1: the increment to {:.6f} failed "
           "after {} halvings ({}); raise implicit.max_iterations or implicit.max_cuts, or give "
-          "more implicit.increments",
-          lambda, target, cut_level - 1, record.failure));
+          "more implicit.increments{}",
+          lambda, target, cut_level - 1, record.failure,
+          stabilized ? ", or stronger stabilising springs" : ""));
     }
     log_info("  increment to load factor {:.4f} failed ({}); halved\n", target, record.failure);
     step *= 0.5;
+  }
+  if (stabilized) {
+    settle(newton, options, report);
+    if (on_converged) {
+      on_converged(1.0, body, report);
+    }
   }
   report.solver = newton.solver().totals();
   return report;

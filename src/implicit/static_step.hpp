@@ -37,7 +37,11 @@ struct IncrementRecord {
   bool converged = false;
   double initial_residual = 0.0;  ///< -, before the first iteration
   std::vector<NewtonIteration> iterations;
-  std::string failure;  ///< why it was cut (empty when converged)
+  std::string failure;         ///< why it was cut (empty when converged)
+  double stabilization = 0.0;  ///< N/mm, the stabilising springs it was solved with
+  /// -, the springs' force at the converged state / the reference force: the force by which the
+  /// state misses equilibrium without them (0 without springs)
+  double unbalanced = 0.0;
 };
 
 struct StaticStepOptions {
@@ -46,6 +50,12 @@ struct StaticStepOptions {
   bool linear = false;
   /// Names a node in messages (e.g. "node 12 (gmsh 13)"); default "node i".
   std::function<std::string(int node)> node_name;
+  /// N/mm, stabilising springs on every free translation, anchored at the start of each
+  /// increment (0 = none). They resist only the motion within an increment, so the step can pass
+  /// states where the unsupported body is unstable; once the load factor reaches 1 the step
+  /// settles at it, the springs softened as the motion dies out and finally removed, so the last
+  /// state is in equilibrium without them (pseudo-transient continuation, docs/static-analysis.md).
+  double stabilization = 0.0;
 };
 
 struct StaticStepReport {
@@ -62,6 +72,10 @@ struct StaticStepReport {
   double internal_work = 0.0;   ///< N mm, work of the internal forces over the step
   double external_work = 0.0;   ///< N mm, work of the loads over the step
   double final_residual = 0.0;  ///< -, relative, of the last converged increment
+  /// Stabilisation (StaticStepOptions::stabilization > 0): the settling increments at load
+  /// factor 1 and the spring stiffness (N/mm) of the last one, 0 when it was taken without springs.
+  int settling_increments = 0;
+  double final_stabilization = 0.0;
 };
 
 /// A static step as the run summary reports it.

@@ -241,6 +241,11 @@ struct SpringbackConfig {
   double max_time = 0.0;
   /// -, dynamic_relaxation: at rest when the kinetic energy is below this x the internal energy
   double kinetic_tolerance = 1e-6;
+  /// -, implicit: stabilising springs on every node's translations, this x E x the mean thickness
+  /// (N/mm), anchored at the start of each increment and removed at the end (0 = none): the
+  /// formed part, its tools replaced by their forces, can be unstable (a flange compressed under
+  /// the holder buckles once released). docs/static-analysis.md
+  double stabilization = 1e-6;
   std::optional<UChannelMeasureConfig> u_channel;  ///< [springback.u_channel]
 };
 

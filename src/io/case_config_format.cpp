@@ -326,6 +326,7 @@ void write_implicit_sections(TomlWriter& w, const CaseConfig& config) {
   w.header("springback");
   if (sb.method == SpringbackConfig::Method::implicit) {
     w.string("method", "implicit");
+    w.number("stabilization", sb.stabilization, "x E t per node, N/mm; 0 = none");
   } else {
     w.string("method", "dynamic_relaxation");
     w.number("release_time", sb.release_time, "s");

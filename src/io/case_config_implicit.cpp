@@ -85,7 +85,8 @@ void read_springback(const TomlSection& top, std::optional<SpringbackConfig>& sp
   if (!s) {
     return;
   }
-  s->check_keys({"method", "release_time", "max_time", "kinetic_tolerance", "u_channel"});
+  s->check_keys(
+      {"method", "release_time", "max_time", "kinetic_tolerance", "stabilization", "u_channel"});
   SpringbackConfig sb;
   using Method = SpringbackConfig::Method;
   s->read_choice(
@@ -99,7 +100,13 @@ void read_springback(const TomlSection& top, std::optional<SpringbackConfig>& sp
                           "takes its controls from [implicit])");
       }
     }
+    s->read_number("stabilization", sb.stabilization, interval(0.0, false, 1e-2, false));
   } else {
+    if (s->has("stabilization")) {
+      s->fail_forbidden("stabilization",
+                        "it belongs to method = \"implicit\" (dynamic relaxation releases the "
+                        "tool forces over release_time instead)");
+    }
     s->read_number("release_time", sb.release_time, greater_than(0.0, "s"), Presence::required);
     s->read_number("max_time", sb.max_time, at_least(0.0, "s"));
     s->read_number("kinetic_tolerance", sb.kinetic_tolerance, interval(0.0, true, 1.0, true));

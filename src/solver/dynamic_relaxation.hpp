@@ -27,6 +27,9 @@ struct DynamicRelaxationResult {
   int frozen_load_nodes = 0;
   /// N, the sum of those loads at the start of the release (the contact forces' sum)
   Vec3 frozen_force = Vec3::Zero();
+  /// N, the part of frozen_force along directions no boundary condition holds (the blank's inertia
+  /// at the end of forming), taken out of the released loads, spread by nodal mass
+  Vec3 removed_force = Vec3::Zero();
   /// kinetic-damping resets (every velocity zeroed at a peak of the kinetic energy)
   long resets = 0;
   /// rest probes started (free runs without resets that check the blank is at rest; the last one

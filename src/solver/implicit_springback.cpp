@@ -39,6 +39,9 @@ ImplicitStepSummary run_implicit_springback(Model& model, SolutionState& s, Fram
   StaticStepOptions options;
   options.controls = model.config.implicit;
   options.node_name = node_name;
+  options.stabilization = model.config.springback
+                              ? model.config.springback->stabilization * body.membrane_stiffness()
+                              : 0.0;
   const double t_formed = s.time;
   const double frame_interval = model.end_time / model.config.control.output_frames;
   s.v.setZero();

@@ -39,13 +39,17 @@ std::string format_implicit_step(const ImplicitStepSummary& step) {
   const FactorizationStats& f = r.last_factorization;
   std::string text;
   auto add = [&text](const std::string& line) { text += line + "\n"; };
+  const int solved = r.converged_increments + r.settling_increments;
   add(fmt::format(
-      "  increments          {} converged, {} cut; Newton iterations {} ({} per "
+      "  increments          {} converged{}, {} cut; Newton iterations {} ({} per "
       "increment: {})",
-      r.converged_increments, r.cuts, r.newton_iterations,
-      r.converged_increments > 0
-          ? fmt::format("{:.1f}", static_cast<double>(r.newton_iterations) / r.converged_increments)
-          : std::string("-"),
+      r.converged_increments,
+      r.settling_increments > 0
+          ? fmt::format(" + {} settling at load factor 1 (stabilised)", r.settling_increments)
+          : std::string(),
+      r.cuts, r.newton_iterations,
+      solved > 0 ? fmt::format("{:.1f}", static_cast<double>(r.newton_iterations) / solved)
+                 : std::string("-"),
       iteration_list(r)));
   add(fmt::format("  final residual      {:.2e} (relative to the reference force)",
                   r.final_residual));
@@ -111,12 +115,15 @@ nlohmann::json implicit_step_json(const ImplicitStepSummary& step) {
                           {"converged", inc.converged},
                           {"initial_residual", inc.initial_residual},
                           {"residuals", residuals},
+                          {"stabilization_N_per_mm", inc.stabilization},
+                          {"unbalanced", inc.unbalanced},
                           {"failure", inc.failure}});
     if (inc.converged) {
       iterations.push_back(inc.iterations.size());
     }
   }
   return {{"converged_increments", r.converged_increments},
+          {"settling_increments", r.settling_increments},
           {"cuts", r.cuts},
           {"newton_iterations", r.newton_iterations},
           {"iterations_per_increment", iterations},

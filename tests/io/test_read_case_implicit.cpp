@@ -83,6 +83,13 @@ flange = [45.0, 180.0]
   EXPECT_EQ(implicit.springback->u_channel->section, "sym_y");
   EXPECT_DOUBLE_EQ(implicit.springback->u_channel->wall[0], -60.0);
   EXPECT_DOUBLE_EQ(implicit.springback->u_channel->flange[1], 180.0);
+  EXPECT_DOUBLE_EQ(implicit.springback->stabilization, 1e-6);  // the default
+  const sf::CaseConfig stiffer =
+      sf::read_case(write_case(with_tool("[springback]\nstabilization = 1e-5\n"), "stiffer.toml"));
+  EXPECT_DOUBLE_EQ(stiffer.springback->stabilization, 1e-5);
+  const sf::CaseConfig stiffer_again =
+      sf::read_case(write_case(sf::format_resolved_case(stiffer), "stiffer_again.toml"));
+  EXPECT_DOUBLE_EQ(stiffer_again.springback->stabilization, 1e-5);
 
   const sf::CaseConfig dr = sf::read_case(write_case(with_tool(R"(
 [springback]
@@ -119,6 +126,10 @@ TEST_F(ReadCaseImplicit, ErrorsNameTheKeyAndTheRule) {
   expect_error(base + "[springback]\n", 0, {"springback", "no [[tools]]"});
   expect_error(with_tool("[springback]\nrelease_time = 0.01\n"), 0,
                {"springback.release_time", "dynamic_relaxation"});
+  expect_error(with_tool("[springback]\nstabilization = -1e-6\n"), 0, {"springback.stabilization"});
+  expect_error(with_tool("[springback]\nmethod = \"dynamic_relaxation\"\nrelease_time = 0.01\n"
+                         "stabilization = 1e-6\n"),
+               0, {"springback.stabilization", "implicit"});
   expect_error(with_tool("[springback]\nmethod = \"dynamic_relaxation\"\n"), 0,
                {"springback.release_time", "missing"});
   expect_error(with_tool("[springback]\n[springback.u_channel]\nsection = \"s\"\nbottom = [0, "
