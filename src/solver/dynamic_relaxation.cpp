@@ -99,50 +99,51 @@ double reset_velocities(const Model& model, SolutionState& s) {
   return removed;
 }
 
-/// What freezing the contact forces did.
+/// What freezing the tool forces did.
 struct FrozenLoads {
-  int nodes = 0;                // nodes with a nonzero contact force
-  Vec3 sum = Vec3::Zero();      // N, their sum
-  Vec3 removed = Vec3::Zero();  // N, the part of the sum taken out (free directions)
+  int nodes = 0;                    // nodes that got a released load
+  Vec3 contact_sum = Vec3::Zero();  // N, the contact forces' sum at the end of forming
+  Vec3 sum = Vec3::Zero();          // N, the released loads' sum
 };
 
-/// Turns the contact forces of the state into nodal loads released linearly over [t0, t0 + T]
-/// and moves them from state.f_contact into state.f_ext (the applied force at t0, scale 1).
-/// Along a direction no boundary condition holds, the forces' sum is not zero but the blank's
-/// inertia at the end of forming; released, it would push the free blank away as a rigid body
-/// (a 30 mm drift in a U-channel's release), so it is taken out, spread over the nodes by mass.
-FrozenLoads freeze_contact_forces(Model& model, SolutionState& s, double release_time) {
+/// Turns what the tools held the blank with into nodal loads released linearly over
+/// [t0, t0 + T]: per node, the static internal force and moment of the formed state (velocities
+/// zero, no strain increment) less the case's own loads, as the implicit route releases them
+/// (run_implicit_springback). With them the blank starts in equilibrium at rest. The contact
+/// forces themselves are not used: at the end of a dynamic run they differ from those by the
+/// blank's inertia, which on a U-channel is a vibrating flange tapping the holder (about 70 of its
+/// 280 nodes touch at any one time): frozen, that snapshot is a set of unbalanced point loads of
+/// a few N on a flange whose tip stiffness is 0.03 N/mm, and the flange swung up by 36 degrees.
+/// Call with the contact off and the velocities zeroed; moves the loads into state.f_ext, m_ext.
+FrozenLoads freeze_tool_forces(Model& model, SolutionState& s, double release_time,
+                               const Matrix3X& contact_force) {
   FrozenLoads frozen;
+  for (Eigen::Index i = 0; i < contact_force.cols(); ++i) {
+    frozen.contact_sum += contact_force.col(i);
+  }
+  compute_forces(model, s, 0.0);  // dt = 0: the stresses as they are, no viscous terms at rest
   const double t0 = s.time;
   const LoadCurve release({t0, t0 + release_time}, {1.0, 0.0});
-  const Eigen::Index n = s.f_contact.cols();
-  for (Eigen::Index i = 0; i < n; ++i) {
-    frozen.sum += s.f_contact.col(i);
-  }
-  const std::vector<unsigned char>& mask = model.constraints.mask;
-  const double total_mass = model.blank.mass.sum();
-  for (int d = 0; d < 3; ++d) {
-    const bool held =
-        std::any_of(mask.begin(), mask.end(), [d](unsigned char m) { return (m >> d) & 1U; });
-    if (!held && total_mass > 0.0) {
-      frozen.removed(d) = frozen.sum(d);
+  for (Eigen::Index i = 0; i < s.f_int.cols(); ++i) {
+    const Vec3 f = s.f_int.col(i) - s.f_ext.col(i);
+    const Vec3 m = s.m_int.col(i) - s.m_ext.col(i);
+    for (const auto& [value, moment] : {std::pair{f, false}, std::pair{m, true}}) {
+      if (value.isZero(0.0)) {
+        continue;
+      }
+      NodalLoad load;
+      load.nodes = {static_cast<int>(i)};
+      load.value = value;
+      load.moment = moment;
+      load.scale = release;
+      model.loads.nodal.push_back(std::move(load));
     }
-  }
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const Vec3 f = s.f_contact.col(i) - (model.blank.mass(i) / total_mass) * frozen.removed;
-    if (f.isZero(0.0)) {
-      continue;
-    }
-    NodalLoad load;
-    load.nodes = {static_cast<int>(i)};
-    load.value = f;
-    load.moment = false;
-    load.scale = release;
-    model.loads.nodal.push_back(std::move(load));
-    s.f_ext.col(i) += f;
-    if (!s.f_contact.col(i).isZero(0.0)) {
+    if (!f.isZero(0.0) || !m.isZero(0.0)) {
       ++frozen.nodes;
     }
+    s.f_ext.col(i) += f;
+    s.m_ext.col(i) += m;
+    frozen.sum += f;
   }
   s.f_contact.setZero();
   s.f_contact_previous.setZero();
@@ -379,16 +380,22 @@ DynamicRelaxationResult run_dynamic_relaxation(Model& model, SolutionState& stat
   if (output) {
     output->set_springback_reference(s.x);
   }
-  const FrozenLoads frozen = freeze_contact_forces(model, s, release_time);
-  result.frozen_load_nodes = frozen.nodes;
-  result.frozen_force = frozen.sum;
-  result.removed_force = frozen.removed;
+  // After forming, the punch stops at the end of its stroke: the release starts from rest, as the
+  // implicit route's does (the forming's velocities would carry the free blank on).
+  // Without contact at the end (a relaxation under the case's own loads) nothing is released and
+  // the run goes on from its present motion.
+  const Matrix3X contact_force = s.f_contact;
+  const bool formed = !contact_force.isZero(0.0);
   switch_contact_off(model, output);
   result.damping_energy += hold_tools(model, s);
-  // The punch stops at the end of its stroke: the release starts from rest, as the implicit
-  // route's does. The forming's velocities (the bottom follows the punch at full speed) would
-  // otherwise carry the free blank on, tens of millimetres in a U-channel before the first reset.
-  result.damping_energy += reset_velocities(model, s);
+  FrozenLoads frozen;
+  if (formed) {
+    result.damping_energy += reset_velocities(model, s);
+    frozen = freeze_tool_forces(model, s, release_time, contact_force);
+  }
+  result.frozen_load_nodes = frozen.nodes;
+  result.frozen_force = frozen.sum;
+  result.contact_force = frozen.contact_sum;
 
   const Energies& e = s.energies;
   const double entry_internal = e.internal + e.hourglass;
@@ -396,11 +403,11 @@ DynamicRelaxationResult run_dynamic_relaxation(Model& model, SolutionState& stat
   const double initial_dt = model.time_step;
 
   log_info(
-      "springback by dynamic relaxation from t = {:.6e} s: {} contact forces ({:.4g} N in total, "
-      "{:.4g} N of it along free directions taken out) released over {:.4e} s, then kinetic "
-      "damping until the kinetic energy peak < {:.1e} x the internal energy (max_time {:.4e} s "
-      "after the release)\n",
-      t0, frozen.nodes, frozen.sum.norm(), frozen.removed.norm(), release_time,
+      "springback by dynamic relaxation from t = {:.6e} s: the formed state's static internal "
+      "forces at {} nodes (sum {:.4g} N; the contact forces' sum {:.4g} N) released over {:.4e} "
+      "s, then kinetic damping until the kinetic energy peak < {:.1e} x the internal energy "
+      "(max_time {:.4e} s after the release)\n",
+      t0, frozen.nodes, frozen.sum.norm(), frozen.contact_sum.norm(), release_time,
       config.kinetic_tolerance, max_time);
 
   // Frames: release_frames evenly over the release, one at the end.
@@ -413,7 +420,7 @@ DynamicRelaxationResult run_dynamic_relaxation(Model& model, SolutionState& stat
   RelaxationProgress progress(control.progress_interval);
   KineticDamping damping(config.kinetic_tolerance, entry_internal, t0, e.kinetic);
   double dt_previous = s.dt;  // the last forming step (0 from a fresh state: v(0) then)
-  bool restart = true;        // the last step ended with a reset (the start is one)
+  bool restart = formed;      // the last step ended with a reset (a formed part starts at rest)
   bool reached_stop = false;
   const long first_cycle = s.cycle;
 

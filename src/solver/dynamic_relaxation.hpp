@@ -23,13 +23,14 @@ struct DynamicRelaxationResult {
   /// N mm, what kinetic_tolerance multiplies: the larger of the internal (+ hourglass) energy at
   /// the start of springback and at the end
   double reference_energy = 0.0;
-  /// blank nodes whose contact force became a released load
+  /// blank nodes that got a released load (the formed state's static internal force and moment,
+  /// less the case's own loads)
   int frozen_load_nodes = 0;
-  /// N, the sum of those loads at the start of the release (the contact forces' sum)
+  /// N, the sum of the released forces at the start of the release
   Vec3 frozen_force = Vec3::Zero();
-  /// N, the part of frozen_force along directions no boundary condition holds (the blank's inertia
-  /// at the end of forming), taken out of the released loads, spread by nodal mass
-  Vec3 removed_force = Vec3::Zero();
+  /// N, the sum of the contact forces at the end of forming (the released forces' sum differs
+  /// from it by the blank's inertia and the boundary reactions)
+  Vec3 contact_force = Vec3::Zero();
   /// kinetic-damping resets (every velocity zeroed at a peak of the kinetic energy)
   long resets = 0;
   /// rest probes started (free runs without resets that check the blank is at rest; the last one

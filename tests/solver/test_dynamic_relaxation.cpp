@@ -227,20 +227,19 @@ TEST(DynamicRelaxation, ElasticStripPressedByAPadSpringsBackFlat) {
   // reversed (1e-3 relative) and the strip is back at its flat initial shape (1e-3 of the formed
   // deflection). The stop rule bounds the energy left in each mode by the tolerance 1e-8 x the
   // formed internal energy, so the shape error by about sqrt(1e-8) = 1e-4 of the deflection:
-  // measured 5.2e-5 (2.4e-4 with the default tolerance 1e-6).
+  // measured 2.2e-6 since the release starts from rest with the static internal forces
+  // (5.2e-5 when it released the contact forces of the moving strip).
   EXPECT_NEAR(springback / formed_deflection, 1.0, 1e-3);
   EXPECT_LT(residual, 1e-3 * formed_deflection);
   // The energy balance through the springback: central difference keeps total - supplied - D
-  // (docs/time-integration.md), the resets' kinetic energy counted in the damping column; at
-  // rest D is ~0, so total - supplied moves by -D(start) only. Tolerance 1e-6 of the work done;
-  // measured 1.4e-8 of it, 3.1e-8 N mm (what is left: the steps cut short to land on the
-  // release frames change D).
+  // (docs/time-integration.md), the resets' kinetic energy counted in the damping column. The
+  // springback starts from rest (the velocities zeroed, their energy to damping, D = 0) and ends
+  // at rest (D ~ 0), so total - supplied does not move. Tolerance 1e-6 of the work done.
   const double balance_after = p.state.energies.total() - p.state.energies.supplied();
-  EXPECT_NEAR(balance_after, total_before - half_kick_before,
-              1e-6 * p.state.energies.external_work);
+  EXPECT_NEAR(balance_after, total_before, 1e-6 * p.state.energies.external_work);
   std::printf("balance through the springback: %.3e N mm off, %.2e of the work %.4e N mm\n",
-              balance_after - (total_before - half_kick_before),
-              (balance_after - (total_before - half_kick_before)) / p.state.energies.external_work,
+              balance_after - total_before,
+              (balance_after - total_before) / p.state.energies.external_work,
               p.state.energies.external_work);
   // Nothing is left in the strip: the internal energy, 11.5 N mm when formed, is back to ~0
   // (measured 2.1e-7 N mm).
@@ -270,7 +269,7 @@ TEST(DynamicRelaxation, ElasticStripPressedByAPadSpringsBackFlat) {
   }
 }
 
-TEST(DynamicRelaxation, ReleasedLoadsStartAsTheContactForces) {
+TEST(DynamicRelaxation, ReleasedLoadsAreTheFormedStatesStaticInternalForces) {
   const std::string name = "dynamic_relaxation_loads";
   Pressed p;
   p.model = sf::build_model(
@@ -294,44 +293,51 @@ TEST(DynamicRelaxation, ReleasedLoadsStartAsTheContactForces) {
   EXPECT_EQ(p.state.f_contact.cwiseAbs().maxCoeff(), 0.0);
   EXPECT_EQ(p.state.tools.front().force.norm(), 0.0);
 
-  // One released load per node with a contact force, its value that force, scale 1 at t0,
-  // falling linearly to 0 at t0 + release_time.
+  // One released force (and, where nonzero, one moment) per node: the formed state's static
+  // internal forces (the case has no loads of its own), scale 1 at t0 falling linearly to 0 at
+  // t0 + release_time.
+  ASSERT_GT(p.model.loads.nodal.size(), p.loads_before);
+  sf::Matrix3X released = sf::Matrix3X::Zero(3, p.state.x.cols());
+  for (std::size_t k = p.loads_before; k < p.model.loads.nodal.size(); ++k) {
+    const sf::NodalLoad& load = p.model.loads.nodal[k];
+    ASSERT_EQ(load.nodes.size(), 1u);
+    EXPECT_EQ(load.scale.value(t0), 1.0);
+    EXPECT_NEAR(load.scale.value(t0 + 0.5 * config.release_time), 0.5, 1e-12);
+    EXPECT_EQ(load.scale.value(t0 + config.release_time), 0.0);
+    if (!load.moment) {
+      released.col(load.nodes.front()) += load.value;
+    }
+  }
+  EXPECT_EQ(r.frozen_load_nodes, static_cast<int>(p.state.x.cols()));
   int in_contact = 0;
   sf::Vec3 contact_sum = sf::Vec3::Zero();
+  sf::Vec3 released_at_contact = sf::Vec3::Zero();
   for (Eigen::Index i = 0; i < p.contact_force.cols(); ++i) {
     if (!p.contact_force.col(i).isZero(0.0)) {
       ++in_contact;
       contact_sum += p.contact_force.col(i);
+      released_at_contact += released.col(i);
     }
   }
   ASSERT_GT(in_contact, 0);
-  ASSERT_EQ(p.model.loads.nodal.size(), p.loads_before + static_cast<std::size_t>(in_contact));
-  EXPECT_EQ(r.frozen_load_nodes, in_contact);
-  sf::Vec3 load_sum = sf::Vec3::Zero();
-  for (std::size_t k = p.loads_before; k < p.model.loads.nodal.size(); ++k) {
-    const sf::NodalLoad& load = p.model.loads.nodal[k];
-    ASSERT_EQ(load.nodes.size(), 1u);
-    EXPECT_FALSE(load.moment);
-    const sf::Vec3 at_start = load.scale.value(t0) * load.value;
-    // Exactly the node's contact force (a copy, scale exactly 1).
-    EXPECT_EQ(at_start, sf::Vec3(p.contact_force.col(load.nodes.front())));
-    EXPECT_NEAR(load.scale.value(t0 + 0.5 * config.release_time), 0.5, 1e-12);
-    EXPECT_EQ(load.scale.value(t0 + config.release_time), 0.0);
-    load_sum += at_start;
-  }
-  // Force balance: the sum of the released loads is the sum of the contact forces (the same
-  // numbers, summed in the same order: equal to round-off) and the pad's reaction (the blank's
-  // force on the pad is minus the contact forces' sum: round-off of the sums over nodes).
   const double scale = contact_sum.norm();
   EXPECT_GT(scale, 10.0);  // N: a real press (measured 14.8 N on the 2 tip nodes)
-  EXPECT_LT((load_sum - contact_sum).norm(), 1e-14 * scale);
-  EXPECT_LT((r.frozen_force - contact_sum).norm(), 1e-14 * scale);
+  EXPECT_LT((r.contact_force - contact_sum).norm(), 1e-14 * scale);
   EXPECT_LT((contact_sum + p.pad_reaction).norm(), 1e-12 * scale);
+  // Internal forces are self-equilibrated: the released forces sum to zero over the strip (the
+  // clamp's nodes included), to round-off.
+  EXPECT_LT(r.frozen_force.norm(), 1e-10 * scale);
+  // Where the pad pressed, the released forces are the contact forces but for the strip's inertia
+  // at the end of the slow press (4 periods): along the press (z) within 1 % (measured 0.48 %).
+  // Along the strip (x) the contact's friction, -0.39 N, is not what the strip's membrane holds
+  // there (+0.045 N): the rest is the axial vibration's inertia, which the snapshot of the contact
+  // forces would have released as a load.
   std::printf(
-      "%d nodes in contact, sum of contact forces (%.6e, %.6e, %.6e) N, pad reaction "
-      "(%.6e, %.6e, %.6e) N\n",
-      in_contact, contact_sum[0], contact_sum[1], contact_sum[2], p.pad_reaction[0],
-      p.pad_reaction[1], p.pad_reaction[2]);
+      "%d nodes in contact, contact forces' sum (%.6e, %.6e, %.6e) N, released forces there "
+      "(%.6e, %.6e, %.6e) N, released forces' sum %.2e N\n",
+      in_contact, contact_sum[0], contact_sum[1], contact_sum[2], released_at_contact[0],
+      released_at_contact[1], released_at_contact[2], r.frozen_force.norm());
+  EXPECT_NEAR(released_at_contact[2], contact_sum[2], 0.01 * std::abs(contact_sum[2]));
 }
 
 // The tip force case: 0.5 N on each of the 2 tip nodes (1 N in total), held from t = 0.
