@@ -405,7 +405,6 @@ void settle(NewtonSolver& newton, const StaticStepOptions& options, StaticStepRe
         report.settling_increments, record.stabilization, record.iterations.size(),
         record.unbalanced);
     if (record.stabilization == 0.0) {
-      report.final_stabilization = 0.0;
       return;
     }
     const double ratio =

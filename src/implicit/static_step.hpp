@@ -73,9 +73,8 @@ struct StaticStepReport {
   double external_work = 0.0;   ///< N mm, work of the loads over the step
   double final_residual = 0.0;  ///< -, relative, of the last converged increment
   /// Stabilisation (StaticStepOptions::stabilization > 0): the settling increments at load
-  /// factor 1 and the spring stiffness (N/mm) of the last one, 0 when it was taken without springs.
+  /// factor 1 (the last one is taken without springs: increments.back().stabilization == 0).
   int settling_increments = 0;
-  double final_stabilization = 0.0;
 };
 
 /// A static step as the run summary reports it.
