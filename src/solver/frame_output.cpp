@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include "core/build_info.hpp"
+#include "solver/draw_in.hpp"
 
 namespace sf {
 
@@ -29,6 +30,9 @@ std::vector<std::string> history_columns(const Model& model) {
     columns.push_back(t.name + "_speed");
     columns.push_back(t.name + "_force");
     columns.push_back(t.name + "_nodes_in_contact");
+  }
+  for (const DrawInConfig& d : model.config.draw_ins) {
+    columns.push_back("draw_in_" + d.name);
   }
   for (std::size_t c = 0; c < model.contacts.size(); ++c) {
     if (model.config.contacts[c].audit) {
@@ -162,6 +166,9 @@ void FrameOutput::append_history(const Model& model, const SolutionState& s) {
     // Positive when the blank resists the tool's motion (the punch force; a holder's force).
     row_[k++] = -s.tools[t].force.dot(model.tools[t].direction());
     row_[k++] = s.tools[t].nodes_in_contact;
+  }
+  for (const DrawInConfig& d : model.config.draw_ins) {
+    row_[k++] = measure_draw_in(model, d, s.x);
   }
   for (const SearchAuditRecord& r : audits_.records()) {
     row_[k++] = r.last.misses;

@@ -8,6 +8,7 @@
 
 #include "core/build_info.hpp"
 #include "core/errors.hpp"
+#include "solver/draw_in.hpp"
 #include "solver/implicit_summary.hpp"
 
 namespace sf {
@@ -53,14 +54,7 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
     r.tools.push_back(ts);
   }
   for (const DrawInConfig& dc : model.config.draw_ins) {
-    const NodeGroup& group = model.blank.group(dc.group);
-    const Vec3 direction(dc.direction[0], dc.direction[1], dc.direction[2]);
-    double sum = 0.0;
-    for (int node : group.nodes) {
-      sum += (s.x.col(node) - model.blank.mesh.nodes.col(node)).dot(direction);
-    }
-    r.draw_ins.push_back(
-        {dc.name, sum / static_cast<double>(group.nodes.size()), dc.measured, dc.source});
+    r.draw_ins.push_back({dc.name, measure_draw_in(model, dc, s.x), dc.measured, dc.source});
   }
   return r;
 }

@@ -1,0 +1,15 @@
+#include "solver/draw_in.hpp"
+
+namespace sf {
+
+double measure_draw_in(const Model& model, const DrawInConfig& draw_in, const Matrix3X& x) {
+  const NodeGroup& group = model.blank.group(draw_in.group);
+  const Vec3 direction(draw_in.direction[0], draw_in.direction[1], draw_in.direction[2]);
+  double sum = 0.0;
+  for (int node : group.nodes) {
+    sum += (x.col(node) - model.blank.mesh.nodes.col(node)).dot(direction);
+  }
+  return sum / static_cast<double>(group.nodes.size());
+}
+
+}  // namespace sf
