@@ -3,7 +3,7 @@
 //
 //   sheetform run   CASE [-o DIR]   run a case, write results (HDF5 + XDMF for ParaView)
 //   sheetform check CASE            validate a case and print the model it builds
-//   sheetform mesh  CASE [-o DIR]   write only the meshes, to look at the set-up in ParaView
+//   sheetform mesh  CASE [-o DIR]   write only the meshes (HDF5 + XDMF, and .msh of each .geo)
 //
 // Exit codes: 0 success, 2 bad input, 3 the run went unstable, 4 a static step did not converge
 // (or its stiffness is singular), 1 an internal error.
@@ -17,6 +17,7 @@
 #include "core/errors.hpp"
 #include "core/log.hpp"
 #include "io/case_config.hpp"
+#include "io/gmsh_reader.hpp"
 #include "model/build_model.hpp"
 #include "solver/explicit_driver.hpp"
 #include "solver/frame_output.hpp"
@@ -31,6 +32,7 @@ struct Arguments {
   std::string output_directory;
   double stroke = -1.0;    // mm; < 0 = as in the case
   double end_time = -1.0;  // s; < 0 = as in the case
+  std::string search;      // "" = as in the case; else the search of every [[contact]]
   bool quiet = false;
   bool verbose = false;
 };
@@ -50,6 +52,18 @@ void apply_overrides(const Arguments& args, sf::CaseConfig& config) {
   if (args.end_time > 0.0) {
     config.control.end_time = args.end_time;
     config.control.stroke = 0.0;
+  }
+  if (!args.search.empty()) {
+    if (config.contacts.empty()) {
+      throw sf::InputError(config.file.string() +
+                           ": --search needs a [[contact]] (the case has none)");
+    }
+    for (sf::ContactConfig& contact : config.contacts) {
+      contact.search = args.search;
+      if (args.search != "cached") {
+        contact.search_margin = 0.0;  // a cached-search option only
+      }
+    }
   }
 }
 
@@ -209,8 +223,23 @@ int mesh(const Arguments& args) {
   sf::SolutionState state = sf::make_initial_state(model);
   output.write_frame(model, state);
   output.flush();
-  sf::log_info("Meshes written to {} (open blank.xdmf and the tools' .xdmf in ParaView)\n",
-               out.string());
+  // Each part meshed from a .geo is also written as the .msh it made (gmsh ASCII 4.1), so a case
+  // folder can keep its meshes beside their .geo files (scripts/update_case_meshes.sh).
+  const sf::CaseConfig& c = model.config;
+  auto write_msh_of = [&out](const std::string& part, const sf::MeshSourceConfig& mesh,
+                             bool recombine) {
+    if (mesh.file.extension() == ".geo") {
+      sf::write_msh(mesh.file, mesh.element_size, recombine, out / (part + ".msh"));
+    }
+  };
+  write_msh_of("blank", c.blank.mesh, c.blank.element == "quad");
+  for (const sf::ToolConfig& t : c.tools) {
+    write_msh_of(t.name, t.mesh, false);
+  }
+  sf::log_info(
+      "Meshes written to {} (open blank.xdmf and the tools' .xdmf in ParaView; <part>.msh for "
+      "each part meshed from a .geo)\n",
+      out.string());
   return sf::exit_ok;
 }
 
@@ -236,6 +265,11 @@ int main(int argc, char** argv) {
                       "results folder (default: the case's output.directory)");
   run_cmd->add_option("--stroke", args.stroke, "override the end condition: stroke in mm");
   run_cmd->add_option("--end-time", args.end_time, "override the end condition: end time in s");
+  run_cmd
+      ->add_option("--search", args.search,
+                   "override the search of every [[contact]]: standard, modified or cached")
+      ->check(CLI::IsMember(
+          {"standard", "modified", "cached", "standard_brute_force", "modified_brute_force"}));
   CLI::App* check_cmd = app.add_subcommand("check", "validate a case and print its model");
   add_common(check_cmd);
   CLI::App* mesh_cmd = app.add_subcommand("mesh", "write only the meshes (HDF5 + XDMF)");

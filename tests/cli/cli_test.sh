@@ -94,6 +94,11 @@ if command -v pvpython >/dev/null; then
 else
   echo "FAIL ParaView: pvpython not found (scripts/run_tests.sh installs it)"; failures=$((failures+1))
 fi
+# --search overrides every [[contact]]'s search; the resolved case records it.
+expect "--search override" 0 "draw-in DX" -- "$sheetform" run "$demo" -o "$work/run_standard" --stroke 0.2 --search standard
+n_standard=$(grep -c '^search = "standard"' "$work/run_standard/case.resolved.toml")
+[ "$n_standard" -eq 3 ] && passed=$((passed+1)) || { echo "FAIL --search: $n_standard of 3 contacts resolved as standard"; failures=$((failures+1)); }
+expect "--search unknown name" 2 "search" -- "$sheetform" run "$demo" -o "$work/run_bad" --search nearest
 # The resolved case is itself a valid case.
 cp "$work/run/case.resolved.toml" "$work/case/cli_test_resolved.toml"
 expect "resolved case re-reads" 0 "Case is valid" -- "$sheetform" check "$work/case/cli_test_resolved.toml"
