@@ -155,10 +155,11 @@ struct PrescribedVelocityConfig {
 };
 
 struct ControlConfig {
-  double end_time = 0.0;       ///< s; 0 = run until the stroke is reached
-  double stroke = 0.0;         ///< mm of travel of `stroke_tool`; 0 = use end_time
-  std::string stroke_tool;     ///< tool of prescribed motion giving the stroke (default: the first)
-  int output_frames = 20;      ///< frames written, evenly spaced in time (plus the initial one)
+  double end_time = 0.0;    ///< s; 0 = run until the stroke is reached
+  double stroke = 0.0;      ///< mm of travel of `stroke_tool`; 0 = use end_time
+  std::string stroke_tool;  ///< tool of prescribed motion giving the stroke (default: the first)
+  int output_frames = 20;   ///< frames at evenly spaced times (plus the initial one), each at the
+                            ///< first step end at or past it
   int history_interval = 100;  ///< cycles between history rows
   int progress_interval = 0;   ///< cycles between progress lines; 0 = about every 2 s of wall time
   double time_step_safety = 0.9;  ///< factor on the elements' critical time step
@@ -177,7 +178,10 @@ struct DrawInConfig {
   std::string group;                                ///< physical group holding one blank node
   std::array<double, 3> direction{-1.0, 0.0, 0.0};  ///< unit vector (normalised on read)
   double measured = -1.0;                           ///< mm; < 0 = no measured value
-  std::string source;                               ///< where the measured value comes from
+  /// mm of the stroke tool's travel at which `measured` was taken; 0 = at the end of the run. A
+  /// run that ends elsewhere reports the measured value without comparing it.
+  double measured_stroke = 0.0;
+  std::string source;  ///< where the measured value comes from
 };
 
 struct OutputConfig {

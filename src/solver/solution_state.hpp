@@ -28,9 +28,9 @@ struct ToolState {
 struct SolutionState {
   double time = 0.0;  ///< s
   long cycle = 0;
-  double dt = 0.0;             ///< s, the last step taken (may be cut short to land on a frame)
-  double stable_dt = 0.0;      ///< s, the last stable step (safety included, after mass scaling)
-  int dt_element = -1;         ///< the element limiting stable_dt
+  double dt = 0.0;         ///< s, the last step taken (may be cut short to land on the end time)
+  double stable_dt = 0.0;  ///< s, the last stable step (safety included, after mass scaling)
+  int dt_element = -1;     ///< the element limiting stable_dt
   double min_stable_dt = 0.0;  ///< s, smallest stable_dt of the run so far (0 before any step)
   double max_stable_dt = 0.0;  ///< s, largest stable_dt of the run so far
   int min_dt_element = -1;     ///< the element limiting min_stable_dt
