@@ -365,7 +365,7 @@ void read_boundaries(const TomlSection& top, std::vector<BoundaryConfig>& bounda
 
 void read_draw_ins(const TomlSection& top, std::vector<DrawInConfig>& draw_ins) {
   for (const TomlSection& s : top.table_array("draw_in")) {
-    s.check_keys({"name", "group", "direction", "measured", "source"});
+    s.check_keys({"name", "group", "direction", "measured", "measured_stroke", "source"});
     DrawInConfig draw_in;
     s.read_string("name", draw_in.name, Presence::required);
     for (const auto& other : draw_ins) {
@@ -376,6 +376,11 @@ void read_draw_ins(const TomlSection& top, std::vector<DrawInConfig>& draw_ins) 
     s.read_string("group", draw_in.group, Presence::required);
     s.read_direction("direction", draw_in.direction);
     s.read_number("measured", draw_in.measured, at_least(0.0, "mm"));
+    s.read_number("measured_stroke", draw_in.measured_stroke, at_least(0.0, "mm"));
+    if (s.has("measured_stroke") && !s.has("measured")) {
+      s.fail_forbidden("measured_stroke",
+                       "it is the stroke of the `measured` value, which is absent");
+    }
     s.read_string("source", draw_in.source, Presence::optional, true);
     draw_ins.push_back(std::move(draw_in));
   }

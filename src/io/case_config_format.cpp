@@ -223,6 +223,7 @@ void write_draw_in(TomlWriter& w, const DrawInConfig& draw_in) {
   w.vector("direction", draw_in.direction);
   if (draw_in.measured >= 0.0) {
     w.number("measured", draw_in.measured, "mm");
+    w.number("measured_stroke", draw_in.measured_stroke, "mm of stroke; 0 = at the end of the run");
   } else {
     w.comment("measured: none");
   }

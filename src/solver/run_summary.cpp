@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -53,8 +54,21 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
     }
     r.tools.push_back(ts);
   }
+  const double end_stroke =
+      model.stroke_tool >= 0 ? s.tools[static_cast<std::size_t>(model.stroke_tool)].travel : 0.0;
   for (const DrawInConfig& dc : model.config.draw_ins) {
-    r.draw_ins.push_back({dc.name, measure_draw_in(model, dc, s.x), dc.measured, dc.source});
+    DrawInResult d;
+    d.name = dc.name;
+    d.computed = measure_draw_in(model, dc, s.x);
+    d.measured = dc.measured;
+    d.measured_stroke = dc.measured_stroke;
+    d.end_stroke = end_stroke;
+    d.source = dc.source;
+    // Same stroke within 1e-6 of it: the run's end condition lands on the stroke to round-off.
+    d.comparable = dc.measured >= 0.0 &&
+                   (dc.measured_stroke == 0.0 ||
+                    std::abs(end_stroke - dc.measured_stroke) <= 1e-6 * dc.measured_stroke);
+    r.draw_ins.push_back(d);
   }
   return r;
 }
@@ -100,7 +114,13 @@ std::string format_run_summary(const RunSummary& r) {
                         : std::string()));
   }
   for (const DrawInResult& d : r.draw_ins) {
-    if (d.measured >= 0.0) {
+    if (d.measured >= 0.0 && !d.comparable) {
+      add(
+          fmt::format("  draw-in {:<11} {:7.3f} mm   (measured {:.3f} mm at {:g} mm of stroke; "
+                      "this run ended at "
+                      "{:.3f} mm: not compared)",
+                      d.name, d.computed, d.measured, d.measured_stroke, d.end_stroke));
+    } else if (d.measured >= 0.0) {
       add(fmt::format(
           "  draw-in {:<11} {:7.3f} mm   measured {:7.3f} mm   deviation {:+.1f} %  ({})", d.name,
           d.computed, d.measured, 100.0 * (d.computed - d.measured) / d.measured, d.source));
@@ -181,6 +201,8 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
     if (d.measured >= 0.0) {
       entry["measured_mm"] = d.measured;
       entry["source"] = d.source;
+      entry["measured_stroke_mm"] = d.measured_stroke;
+      entry["compared"] = d.comparable;
     }
     j["draw_in"][d.name] = entry;
   }

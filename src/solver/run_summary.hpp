@@ -14,8 +14,12 @@ namespace sf {
 
 struct DrawInResult {
   std::string name;
-  double computed = 0.0;   ///< mm
-  double measured = -1.0;  ///< mm, < 0 when none was given
+  double computed = 0.0;         ///< mm
+  double measured = -1.0;        ///< mm, < 0 when none was given
+  double measured_stroke = 0.0;  ///< mm of stroke of the measured value; 0 = at the end
+  double end_stroke = 0.0;       ///< mm, the stroke tool's travel at the end of the run
+  /// The measured value applies to this run's end (no measured_stroke, or the run ended there).
+  bool comparable = false;
   std::string source;
 };
 

@@ -153,6 +153,7 @@ name = "DX"
 group = "dx_node"
 direction = [-2, 0, 0]
 measured = 5.5
+measured_stroke = 40.0
 source = "Makinouchi et al. 1993"
 
 [[draw_in]]

@@ -185,8 +185,10 @@ TEST_F(ReadCase, FullCaseReadsEveryValue) {
   EXPECT_EQ(c.draw_ins[0].group, "dx_node");
   EXPECT_EQ(c.draw_ins[0].direction, (std::array<double, 3>{-1.0, 0.0, 0.0}));
   EXPECT_EQ(c.draw_ins[0].measured, 5.5);
+  EXPECT_EQ(c.draw_ins[0].measured_stroke, 40.0);
   EXPECT_EQ(c.draw_ins[0].source, "Makinouchi et al. 1993");
   EXPECT_EQ(c.draw_ins[1].measured, -1.0);
+  EXPECT_EQ(c.draw_ins[1].measured_stroke, 0.0);
   EXPECT_NEAR(c.draw_ins[1].direction[0], -std::sqrt(0.5), 1e-15);
   EXPECT_NEAR(c.draw_ins[1].direction[1], -std::sqrt(0.5), 1e-15);
   EXPECT_EQ(c.draw_ins[1].direction[2], 0.0);
@@ -268,6 +270,16 @@ TEST_F(ReadCase, WrongTypesAreErrors) {
 
   text = replaced(kFull, "curve = [[0, 0]]", "curve = [[0, 0, 1]]");
   expect_error(text, line_of(text, "curve = [[0, 0, 1]]"), {"tools[2].motion.curve[0]"});
+}
+
+TEST_F(ReadCase, DrawInMeasuredStrokeNeedsAMeasuredValueAndIsNotNegative) {
+  std::string text = replaced(kFull, "measured_stroke = 40.0", "measured_stroke = -1.0");
+  expect_error(text, line_of(text, "measured_stroke"),
+               {"draw_in[0].measured_stroke", ">= 0", "got -1"});
+  text =
+      replaced(kFull, "direction = [-1, -1, 0]", "direction = [-1, -1, 0]\nmeasured_stroke = 30");
+  expect_error(text, line_of(text, "measured_stroke = 30"),
+               {"draw_in[1].measured_stroke", "measured"});
 }
 
 TEST_F(ReadCase, OutOfRangeValuesAreErrors) {
@@ -497,6 +509,7 @@ void expect_same_case(const sf::CaseConfig& a, const sf::CaseConfig& b) {
     EXPECT_EQ(a.draw_ins[i].group, b.draw_ins[i].group);
     EXPECT_EQ(a.draw_ins[i].direction, b.draw_ins[i].direction);
     EXPECT_EQ(a.draw_ins[i].measured, b.draw_ins[i].measured);
+    EXPECT_EQ(a.draw_ins[i].measured_stroke, b.draw_ins[i].measured_stroke);
     EXPECT_EQ(a.draw_ins[i].source, b.draw_ins[i].source);
   }
   EXPECT_EQ(a.control.end_time, b.control.end_time);
