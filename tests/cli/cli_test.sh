@@ -20,7 +20,7 @@ expect() {  # expect NAME CODE PATTERN -- command...
 }
 
 # Work on a copy of the demo case folder (geometry files are found relative to the case file).
-cp -r "$src/cases/square_cup" "$work/case"; rm -rf "$work/case/results"
+cp -r "$src/cases/square_cup_aluminium" "$work/case"; rm -rf "$work/case/results"
 demo="$work/case/case.toml"
 expect "check demo" 0 "Case is valid" -- "$sheetform" check "$demo"
 expect "check prints cycles" 0 "Cycles +about [0-9]+" -- "$sheetform" check "$demo"
@@ -40,7 +40,7 @@ expect "missing group" 2 "no_such_group" -- "$sheetform" check "$work/case/cli_t
 # Mass-proportional damping too strong for the time step (c dt = 4 > 2: the explicit damping update
 # amplifies) makes the run unstable: it stops (exit 3) with a diagnosis naming the key, and the
 # frames so far stay readable. (A coarse 5 mm blank keeps it quick: dt = 8.3e-7 s.)
-sed -e 's/^output_frames = 30/output_frames = 30\ndamping = 5.0e6/' \
+sed -e 's/^output_frames = 40/output_frames = 40\ndamping = 5.0e6/' \
     -e 's/^element_size = 2.5 .*/element_size = 5.0/' "$demo" > "$work/case/cli_test_unstable.toml"
 "$sheetform" run "$work/case/cli_test_unstable.toml" -o "$work/unstable" --stroke 12 > "$work/unstable.log" 2>&1
 unstable_rc=$?
@@ -79,9 +79,9 @@ print('draw-in ok' if not bad else 'mismatch: ' + ', '.join(bad))
 # ParaView opens what the run wrote: every part, all frames, all arrays (scripts/run_tests.sh
 # installs ParaView, so a missing pvpython is a failure, not a skip).
 if command -v pvpython >/dev/null; then
-  # The times ParaView must show: the frames' time attributes in results.h5 (31 frames).
+  # The times ParaView must show: the frames' time attributes in results.h5 (41 frames: output_frames = 40 and the initial one).
   times=$(/usr/bin/python3 -c "import h5py,sys; g=h5py.File(sys.argv[1],'r')['parts/blank/frames']; print(' '.join(repr(float(g[k].attrs['time'])) for k in sorted(g)))" "$work/run/results.h5")
-  [ "$(wc -w <<<"$times")" -eq 31 ] && passed=$((passed+1)) || { echo "FAIL run: expected 31 frames, got: $times"; failures=$((failures+1)); }
+  [ "$(wc -w <<<"$times")" -eq 41 ] && passed=$((passed+1)) || { echo "FAIL run: expected 41 frames, got: $times"; failures=$((failures+1)); }
   expect "ParaView reads blank.xdmf" 0 "" -- pvpython "$src/scripts/check_xdmf.py" "$work/run/blank.xdmf" --times $times \
     --points 961 --cells 900 --point-arrays displacement:3 velocity:3 contact_force:3 \
     --cell-arrays thickness:1 plastic_strain:1 stress_mid:6 stress_top:6 stress_bottom:6

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The NUMISHEET'93 U-channel case (cases/u_channel) formed and sprung back from the command line.
+# The NUMISHEET'93 U-channel case (cases/u_channel_bhf_2450N) formed and sprung back from the command line.
 #   u_channel_springback_test.sh SHEETFORM SOURCE_DIR WORK_DIR STROKE
 # STROKE 20 (CI): the 20 mm-stroke release, whose flange buckles under the released holder
 # friction (docs/static-analysis.md, "Stabilisation"), converges with the default stabilising
@@ -8,7 +8,7 @@
 set -u
 sheetform="$1"; src="$2"; work="$3"; stroke="$4"
 rm -rf "$work"; mkdir -p "$work"
-cp -r "$src/cases/u_channel" "$work/case"; rm -rf "$work/case/results"
+cp -r "$src/cases/u_channel_bhf_2450N" "$work/case"; rm -rf "$work/case/results"
 case_file="$work/case/case.toml"
 failures=0
 

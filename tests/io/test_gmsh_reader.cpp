@@ -21,7 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 
 const fs::path data_dir = SF_TEST_DATA_DIR;
-const fs::path cup_dir = fs::path(SF_SOURCE_DIR) / "cases" / "square_cup";
+const fs::path cup_dir = fs::path(SF_SOURCE_DIR) / "cases" / "square_cup_aluminium";
 constexpr double t_half = 0.81 / 2;  // mm, half the blank thickness (REFERENCES.md, grade A)
 
 /// A fresh, empty folder for files a test writes.

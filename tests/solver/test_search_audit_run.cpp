@@ -96,7 +96,7 @@ TEST(SearchAuditRun, RecorderCountsTheStandardSearchMissesLikeTheOracle) {
 }
 
 TEST(SearchAuditRun, ShortDemoWritesFieldsHistoryAndSummary) {
-  CaseConfig config = read_case(fs::path(SF_SOURCE_DIR) / "cases/square_cup/case.toml");
+  CaseConfig config = read_case(fs::path(SF_SOURCE_DIR) / "cases/square_cup_aluminium/case.toml");
   config.control.stroke = 0.5;
   config.control.output_frames = 2;
   for (ContactConfig& c : config.contacts) {
