@@ -84,15 +84,62 @@ void read_hardening(const TomlSection& s, const fs::path& folder, HardeningConfi
   }
 }
 
+/// The optional forming limit curve: an array of at least 2 [minor, major] true-strain points,
+/// finite, minor strictly increasing, major > 0. Only read back and written out (the solver does
+/// not use it; scripts/plot_forming_limit.py does).
+void read_forming_limit_curve(const TomlSection& s,
+                              std::vector<std::array<double, 2>>& forming_limit_curve) {
+  constexpr std::string_view key = "forming_limit_curve";
+  const toml::node* node = s.find(key);
+  if (!node) {
+    return;
+  }
+  const auto* points = node->as_array();
+  if (!points || points->size() < 2) {
+    s.fail_value(key, "an array of at least 2 [minor, major] true-strain points");
+  }
+  const std::string path = s.key_path(key);
+  std::vector<std::array<double, 2>> curve;
+  for (std::size_t i = 0; i < points->size(); ++i) {
+    const toml::node& point_node = *points->get(i);
+    const std::string point_path = fmt::format("{}[{}]", path, i);
+    const auto* point = point_node.as_array();
+    std::optional<double> minor, major;
+    if (point && point->size() == 2) {
+      minor = number_of(*point->get(0));
+      major = number_of(*point->get(1));
+    }
+    if (!minor || !major || !std::isfinite(*minor) || !std::isfinite(*major)) {
+      s.fail_at(point_node, point_path,
+                fmt::format("expected a point [minor, major] of 2 finite numbers (true strains), "
+                            "got {}",
+                            describe_value(point_node)));
+    }
+    if (!(*major > 0.0)) {
+      s.fail_at(point_node, point_path,
+                fmt::format("expected a major strain > 0, got {}", format_toml_number(*major)));
+    }
+    if (!curve.empty() && !(*minor > curve.back()[0])) {
+      s.fail_at(point_node, point_path,
+                fmt::format("expected minor strains strictly increasing, got {} after {}",
+                            format_toml_number(*minor), format_toml_number(curve.back()[0])));
+    }
+    curve.push_back({*minor, *major});
+  }
+  forming_limit_curve = std::move(curve);
+}
+
 void read_material(const TomlSection& s, const fs::path& folder, MaterialConfig& material) {
   using Type = MaterialConfig::Type;
-  s.check_keys({"type", "density", "young", "poisson", "hardening", "r0", "r45", "r90"});
+  s.check_keys({"type", "density", "young", "poisson", "hardening", "r0", "r45", "r90",
+                "forming_limit_curve"});
   s.read_choice(
       "type", material.type,
       {{"von_mises", Type::von_mises}, {"elastic", Type::elastic}, {"hill48", Type::hill48}});
   s.read_number("density", material.density, greater_than(0.0, "tonne/mm^3"), Presence::required);
   s.read_number("young", material.young, greater_than(0.0, "MPa"), Presence::required);
   s.read_number("poisson", material.poisson, interval(-1.0, true, 0.5, true), Presence::required);
+  read_forming_limit_curve(s, material.forming_limit_curve);
   if (material.type == Type::hill48) {
     s.read_number("r0", material.r0, greater_than(0.0), Presence::required);
     s.read_number("r45", material.r45, greater_than(0.0), Presence::required);

@@ -50,6 +50,10 @@ struct MaterialConfig {
   double r0 = 1.0;   ///< -
   double r45 = 1.0;  ///< -
   double r90 = 1.0;  ///< -
+  /// Optional forming limit curve: [minor, major] true (logarithmic) strain points, minor
+  /// strictly increasing, major > 0; empty = none. Not used by the solver: read back from
+  /// case.resolved.toml by scripts/plot_forming_limit.py.
+  std::vector<std::array<double, 2>> forming_limit_curve;
 };
 
 /// A mesh source: a .geo file meshed by gmsh, or a ready .msh file.

@@ -2,7 +2,9 @@
 // Every key is written (defaults included, paths absolute); the units go in comments.
 #include <fmt/core.h>
 
+#include <array>
 #include <string>
+#include <vector>
 
 #include "io/case_config.hpp"
 #include "io/toml_reader.hpp"
@@ -43,6 +45,16 @@ class TomlWriter {
                             format_toml_number(curve.values[i]));
     }
     entry(key, fmt::format("[{}]", points), unit);
+  }
+
+  void points(std::string_view key, const std::vector<std::array<double, 2>>& points,
+              std::string_view unit) {
+    std::string text;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      text += fmt::format("{}[{}, {}]", i == 0 ? "" : ", ", format_toml_number(points[i][0]),
+                          format_toml_number(points[i][1]));
+    }
+    entry(key, fmt::format("[{}]", text), unit);
   }
 
   std::string take() { return std::move(text_); }
@@ -142,6 +154,10 @@ void write_material(TomlWriter& w, const MaterialConfig& material) {
     w.number("r0", material.r0, "Lankford coefficient at 0 deg to the rolling direction");
     w.number("r45", material.r45);
     w.number("r90", material.r90);
+  }
+  if (!material.forming_limit_curve.empty()) {
+    w.points("forming_limit_curve", material.forming_limit_curve,
+             "[[minor, major], ...] true strains; used by scripts/plot_forming_limit.py only");
   }
   if (material.type == MaterialConfig::Type::elastic) {
     return;

@@ -62,6 +62,7 @@ type = "von_mises"
 density = 2.7e-9
 young = 71000.0
 poisson = 0.33
+forming_limit_curve = [[-0.3, 0.5], [0, 0.22], [0.25, 0.35]]
 [materials.aluminium.hardening]
 law = "linear"
 yield_stress = 150.0

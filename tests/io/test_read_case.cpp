@@ -46,6 +46,7 @@ TEST_F(ReadCase, MinimalCaseGetsEveryDocumentedDefault) {
   EXPECT_EQ(m.hardening.swift_k, 565.3);
   EXPECT_EQ(m.hardening.swift_eps0, 0.007117);
   EXPECT_EQ(m.hardening.swift_n, 0.2589);
+  EXPECT_TRUE(m.forming_limit_curve.empty());  // none
   EXPECT_EQ(&c.blank_material(), &c.materials[0]);
 
   EXPECT_TRUE(c.tools.empty());
@@ -98,6 +99,8 @@ TEST_F(ReadCase, FullCaseReadsEveryValue) {
   EXPECT_EQ(al.hardening.law, sf::HardeningConfig::Law::linear);
   EXPECT_EQ(al.hardening.yield_stress, 150.0);
   EXPECT_EQ(al.hardening.modulus, 300.0);
+  EXPECT_EQ(al.forming_limit_curve,
+            (std::vector<std::array<double, 2>>{{-0.3, 0.5}, {0.0, 0.22}, {0.25, 0.35}}));
   const auto find = [&](const std::string& name) -> const sf::MaterialConfig* {
     for (const auto& m : c.materials) {
       if (m.name == name) {
@@ -471,6 +474,7 @@ void expect_same_case(const sf::CaseConfig& a, const sf::CaseConfig& b) {
     EXPECT_EQ(x.r0, y.r0);
     EXPECT_EQ(x.r45, y.r45);
     EXPECT_EQ(x.r90, y.r90);
+    EXPECT_EQ(x.forming_limit_curve, y.forming_limit_curve);  // bit for bit
   }
   ASSERT_EQ(a.tools.size(), b.tools.size());
   for (std::size_t i = 0; i < a.tools.size(); ++i) {
@@ -540,6 +544,11 @@ TEST_F(ReadCase, ResolvedCaseReadsBackToTheSameCase) {
     expect_contains(resolved, "\nintegration_rule = \"");  // the new keys are written too
     expect_contains(resolved, "\nhourglass_form = \"");
     expect_contains(resolved, "\nrolling_direction = [");
+    if (text == kFull) {  // written only when given
+      expect_contains(resolved, "\nforming_limit_curve = [[-0.3, 0.5], [0.0, 0.22], [0.25, 0.35]]");
+    } else {
+      EXPECT_EQ(resolved.find("forming_limit_curve"), std::string::npos);
+    }
     // Written in another folder: every path in it must already be absolute.
     const sf::CaseConfig again = sf::read_case(write_case(resolved, "results/resolved.toml"));
     expect_same_case(original, again);

@@ -3,10 +3,12 @@
 // error naming the case file, the line and the dotted key. The values themselves are in
 // test_read_case.cpp (FullCaseReadsEveryValue) and its round trip; the rolling direction against
 // the mesh is checked by build_model (tests/solver/test_hill48_run.cpp).
+#include <fmt/core.h>
 #include <gtest/gtest.h>
 
 #include <array>
 #include <string>
+#include <vector>
 
 #include "io/case_config.hpp"
 #include "io/read_case_fixture.hpp"
@@ -159,6 +161,66 @@ TEST_F(ReadCase, SectionHourglassAndRollingDirectionErrors) {
   text = with("rolling_direction = [1, 0]\n");
   expect_error(text, line_of(text, "rolling_direction"),
                {"blank.rolling_direction", "an array of 3 numbers"});
+}
+
+/// kMinimal with `forming_limit_curve = <value>` in its material.
+std::string flc_case(std::string_view value) {
+  return replaced(kMinimal, "poisson = 0.3\n",
+                  fmt::format("poisson = 0.3\nforming_limit_curve = {}\n", value));
+}
+
+TEST_F(ReadCase, FormingLimitCurveReadsItsPoints) {
+  // True strains [minor, major]; integers accepted as numbers; only read and written back (the
+  // round trip is in test_read_case.cpp), the solver does not use it.
+  const sf::MaterialConfig m =
+      sf::read_case(write_case(flc_case("[[-0.4, 0.6], [0, 0.25], [0.3, 0.4], [1, 1]]")))
+          .blank_material();
+  EXPECT_EQ(m.forming_limit_curve,
+            (std::vector<std::array<double, 2>>{{-0.4, 0.6}, {0.0, 0.25}, {0.3, 0.4}, {1.0, 1.0}}));
+}
+
+TEST_F(ReadCase, FormingLimitCurveErrorsNameTheKeyAndThePoint) {
+  constexpr std::string_view key = "materials.steel.forming_limit_curve";
+  // Not an array, and fewer than 2 points.
+  std::string text = flc_case("0.25");
+  expect_error(
+      text, line_of(text, "forming_limit_curve"),
+      {key, "expected an array of at least 2 [minor, major] true-strain points", "got 0.25"});
+  text = flc_case("[[0.0, 0.25]]");
+  expect_error(text, line_of(text, "forming_limit_curve"),
+               {key, "at least 2 [minor, major] true-strain points", "got [[0.0, 0.25]]"});
+  text = flc_case("[]");
+  expect_error(text, line_of(text, "forming_limit_curve"), {key, "at least 2", "got []"});
+  // A point that is not 2 numbers.
+  text = flc_case("[[-0.2, 0.3], [0.0, 0.25, 1.0]]");
+  expect_error(text, line_of(text, "forming_limit_curve"),
+               {"materials.steel.forming_limit_curve[1]",
+                "expected a point [minor, major] of 2 finite numbers", "got [0.0, 0.25, 1.0]"});
+  text = flc_case(R"([[-0.2, 0.3], [0.0, "0.25"]])");
+  expect_error(text, line_of(text, "forming_limit_curve"),
+               {"forming_limit_curve[1]", "2 finite numbers", R"(got [0.0, "0.25"])"});
+  // Not finite.
+  text = flc_case("[[-0.2, 0.3], [nan, 0.25]]");
+  expect_error(text, line_of(text, "forming_limit_curve"),
+               {"forming_limit_curve[1]", "2 finite numbers", "got [nan, 0.25]"});
+  text = flc_case("[[-0.2, inf], [0.0, 0.25]]");
+  expect_error(text, line_of(text, "forming_limit_curve"),
+               {"forming_limit_curve[0]", "2 finite numbers", "got [-0.2, inf]"});
+  // Major strain must be > 0.
+  text = flc_case("[[-0.2, 0.3], [0.0, 0.0]]");
+  expect_error(text, line_of(text, "forming_limit_curve"),
+               {"forming_limit_curve[1]", "expected a major strain > 0, got 0.0"});
+  text = flc_case("[[-0.2, -0.1], [0.0, 0.2]]");
+  expect_error(text, line_of(text, "forming_limit_curve"),
+               {"forming_limit_curve[0]", "expected a major strain > 0, got -0.1"});
+  // Minor strains strictly increasing.
+  text = flc_case("[[-0.2, 0.3], [0.1, 0.25], [0.1, 0.3]]");
+  expect_error(
+      text, line_of(text, "forming_limit_curve"),
+      {"forming_limit_curve[2]", "minor strains strictly increasing", "got 0.1 after 0.1"});
+  text = flc_case("[[0.1, 0.3], [-0.2, 0.25]]");
+  expect_error(text, line_of(text, "forming_limit_curve"),
+               {"forming_limit_curve[1]", "strictly increasing", "got -0.2 after 0.1"});
 }
 
 }  // namespace
