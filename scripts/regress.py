@@ -54,7 +54,7 @@ LENGTHS = ("short", "full")
 KINDS = ("regression", "exact", "published")
 
 
-class ReferenceError(Exception):
+class ReferenceFileError(Exception):
     """A reference.toml that cannot be used: names the file and the key."""
 
 
@@ -66,21 +66,21 @@ class MetricError(Exception):
 def load_reference(case_dir):
     path = case_dir / "reference.toml"
     if not path.is_file():
-        raise ReferenceError(f"{path}: missing (a regression case needs a reference.toml)")
+        raise ReferenceFileError(f"{path}: missing (a regression case needs a reference.toml)")
     try:
         doc = tomlkit.parse(path.read_text())
     except Exception as error:  # tomlkit raises several types
-        raise ReferenceError(f"{path}: {error}") from error
+        raise ReferenceFileError(f"{path}: {error}") from error
     allowed = {"searches", *LENGTHS}
     for key in doc:
         if key not in allowed:
-            raise ReferenceError(f"{path}: unknown key '{key}' (expected {sorted(allowed)})")
+            raise ReferenceFileError(f"{path}: unknown key '{key}' (expected {sorted(allowed)})")
     searches = list(doc.get("searches", []))
     for s in searches:
         if s not in ("standard", "modified", "cached"):
-            raise ReferenceError(f"{path}: searches: unknown search '{s}'")
+            raise ReferenceFileError(f"{path}: searches: unknown search '{s}'")
     if "short" not in doc:
-        raise ReferenceError(f"{path}: missing table [short] (the CI version)")
+        raise ReferenceFileError(f"{path}: missing table [short] (the CI version)")
     for length in LENGTHS:
         if length in doc:  # [full] is absent when the case is short as it is
             check_length_table(path, length, doc[length])
@@ -91,28 +91,28 @@ def check_length_table(path, length, table):
     allowed = {"stroke", "end_time", "blessed", "metrics", "note"}
     for key in table:
         if key not in allowed:
-            raise ReferenceError(f"{path}: unknown key '{length}.{key}' (expected {sorted(allowed)})")
+            raise ReferenceFileError(f"{path}: unknown key '{length}.{key}' (expected {sorted(allowed)})")
     if "stroke" in table and "end_time" in table:
-        raise ReferenceError(f"{path}: {length}: give stroke or end_time, not both")
+        raise ReferenceFileError(f"{path}: {length}: give stroke or end_time, not both")
     metrics = table.get("metrics", {})
     if not metrics:
-        raise ReferenceError(f"{path}: [{length}.metrics] has no metric")
+        raise ReferenceFileError(f"{path}: [{length}.metrics] has no metric")
     for name, m in metrics.items():
         where = f"{path}: {length}.metrics.{name}"
         for key in m:
             if key not in {"from", "value", "rel", "abs", "unit", "kind", "gate", "source"}:
-                raise ReferenceError(f"{where}: unknown key '{key}'")
+                raise ReferenceFileError(f"{where}: unknown key '{key}'")
         for key in ("from", "value", "source"):
             if key not in m:
-                raise ReferenceError(f"{where}: missing '{key}'")
+                raise ReferenceFileError(f"{where}: missing '{key}'")
         kind = m.get("kind", "regression")
         if kind not in KINDS:
-            raise ReferenceError(f"{where}.kind: '{kind}', expected one of {KINDS}")
+            raise ReferenceFileError(f"{where}.kind: '{kind}', expected one of {KINDS}")
         if m.get("gate", True) and "rel" not in m and "abs" not in m:
-            raise ReferenceError(f"{where}: a gated metric needs a tolerance (rel and/or abs)")
+            raise ReferenceFileError(f"{where}: a gated metric needs a tolerance (rel and/or abs)")
         for key in ("rel", "abs"):
             if key in m and not float(m[key]) >= 0.0:
-                raise ReferenceError(f"{where}.{key}: expected a number >= 0")
+                raise ReferenceFileError(f"{where}.{key}: expected a number >= 0")
 
 
 # ---------------------------------------------------------------------------- metric extraction
@@ -325,7 +325,7 @@ def find_cases(paths):
         elif p.is_dir() and any(p.glob("*/reference.toml")):
             cases += sorted(q.parent for q in p.glob("*/reference.toml"))
         else:
-            raise ReferenceError(f"{p}: not a case folder with a reference.toml")
+            raise ReferenceFileError(f"{p}: not a case folder with a reference.toml")
     return cases
 
 
@@ -399,7 +399,7 @@ def main():
     args = parser.parse_args()
     try:
         return command_run(args) if args.command == "run" else command_list(args)
-    except ReferenceError as error:
+    except ReferenceFileError as error:
         print(f"regress.py: {error}", file=sys.stderr)
         return 2
 

@@ -115,11 +115,10 @@ std::string format_run_summary(const RunSummary& r) {
   }
   for (const DrawInResult& d : r.draw_ins) {
     if (d.measured >= 0.0 && !d.comparable) {
-      add(
-          fmt::format("  draw-in {:<11} {:7.3f} mm   (measured {:.3f} mm at {:g} mm of stroke; "
-                      "this run ended at "
-                      "{:.3f} mm: not compared)",
-                      d.name, d.computed, d.measured, d.measured_stroke, d.end_stroke));
+      add(fmt::format(
+          "  draw-in {:<11} {:7.3f} mm   (measured {:.3f} mm at {:g} mm of stroke; this run "
+          "ended at {:.3f} mm: not compared)",
+          d.name, d.computed, d.measured, d.measured_stroke, d.end_stroke));
     } else if (d.measured >= 0.0) {
       add(fmt::format(
           "  draw-in {:<11} {:7.3f} mm   measured {:7.3f} mm   deviation {:+.1f} %  ({})", d.name,

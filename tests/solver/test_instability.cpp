@@ -20,7 +20,8 @@ namespace {
 class Instability : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    sf::CaseConfig config = sf::read_case(fs::path(SF_SOURCE_DIR) / "cases/square_cup_aluminium/case.toml");
+    sf::CaseConfig config =
+        sf::read_case(fs::path(SF_SOURCE_DIR) / "cases/square_cup_aluminium/case.toml");
     config.control.stroke = 1.0;
     model_ = new sf::Model(sf::build_model(config));
   }
