@@ -450,8 +450,11 @@ void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previ
       e.external_work -= reaction_work;
       tool.speed = model.tools[t].motion.speed(s.time);
     }
+    // A moving tool's peak is its largest push against its motion; a fixed tool's direction is
+    // only the default axis, so its peak is the largest force along that axis either way.
     const double pushing = -tool.force.dot(model.tools[t].direction());
-    tool.peak_force = std::max(tool.peak_force, pushing);
+    const bool fixed = !model.tools[t].force_control && !model.tools[t].motion.moves();
+    tool.peak_force = std::max(tool.peak_force, fixed ? std::abs(pushing) : pushing);
   }
   e.kinetic = whole_step_kinetic_energy(model, s, dt) + tool_kinetic;
 }
