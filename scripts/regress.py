@@ -29,6 +29,13 @@ Metric sources (`from`):
   history:<column>:duration_above=<y>   time from the first to the last row with |<column>| > y
   field:<name>[<component>]:<reduction> a blank field of the last frame: min, max, mean,
                                         absmax, spread (max - min); [<component>] optional (0)
+  <source> - <source>                   the difference of two of the above, e.g.
+                                        summary:draw_in.D45.computed_mm - summary:draw_in.D0.computed_mm
+
+Gates: a metric passes when |x - value| <= max(abs, rel |value|); a metric of kind "exact" or
+"published" may instead (or also) give bounds, `min` and/or `max` (x >= min, x <= max), for a
+result whose published form is an inequality (an ear at 0 degrees: D45 - D0 > 0); its `value`
+is then optional.
 """
 import argparse
 import datetime
@@ -100,16 +107,24 @@ def check_length_table(path, length, table):
     for name, m in metrics.items():
         where = f"{path}: {length}.metrics.{name}"
         for key in m:
-            if key not in {"from", "value", "rel", "abs", "unit", "kind", "gate", "source"}:
+            if key not in {"from", "value", "rel", "abs", "min", "max", "unit", "kind", "gate", "source"}:
                 raise ReferenceFileError(f"{where}: unknown key '{key}'")
-        for key in ("from", "value", "source"):
+        bounded = "min" in m or "max" in m
+        for key in ("from", "source") if bounded else ("from", "value", "source"):
             if key not in m:
                 raise ReferenceFileError(f"{where}: missing '{key}'")
         kind = m.get("kind", "regression")
         if kind not in KINDS:
             raise ReferenceFileError(f"{where}.kind: '{kind}', expected one of {KINDS}")
-        if m.get("gate", True) and "rel" not in m and "abs" not in m:
-            raise ReferenceFileError(f"{where}: a gated metric needs a tolerance (rel and/or abs)")
+        if bounded and kind == "regression":
+            raise ReferenceFileError(f"{where}: min/max bound an exact or published result; a regression "
+                                     "value is blessed, not bounded (give kind = \"exact\" or \"published\")")
+        if "min" in m and "max" in m and not float(m["min"]) <= float(m["max"]):
+            raise ReferenceFileError(f"{where}: min {m['min']} is above max {m['max']}")
+        if ("rel" in m or "abs" in m) and "value" not in m:
+            raise ReferenceFileError(f"{where}: a tolerance (rel/abs) needs the 'value' it is around")
+        if m.get("gate", True) and "rel" not in m and "abs" not in m and not bounded:
+            raise ReferenceFileError(f"{where}: a gated metric needs a tolerance (rel and/or abs) or bounds (min/max)")
         for key in ("rel", "abs"):
             if key in m and not float(m[key]) >= 0.0:
                 raise ReferenceFileError(f"{where}.{key}: expected a number >= 0")
@@ -187,6 +202,9 @@ def value_where(y, x, target, source):
 
 
 def extract(run, source):
+    if " - " in source:  # the difference of two sources
+        first, _, second = source.partition(" - ")
+        return extract(run, first.strip()) - extract(run, second.strip())
     kind, _, rest = source.partition(":")
     if kind == "summary":
         node = run.summary()
@@ -251,30 +269,50 @@ def within(value, reference, rel, abs_tol):
     return abs(value - reference) <= max(abs_tol, rel * abs(reference))
 
 
+def passes(value, m):
+    """Whether a gated metric's value meets its tolerance and its bounds (either may be absent)."""
+    if not math.isfinite(value):
+        return False
+    if ("rel" in m or "abs" in m) and not within(value, float(m["value"]), float(m.get("rel", 0.0)),
+                                                   float(m.get("abs", 0.0))):
+        return False
+    if "min" in m and value < float(m["min"]):
+        return False
+    return not ("max" in m and value > float(m["max"]))
+
+
+def tolerance_text(m):
+    rel, abs_tol = float(m.get("rel", 0.0)), float(m.get("abs", 0.0))
+    parts = [f"{rel:g} rel" if rel else "", f"{abs_tol:g} abs" if abs_tol else ""]
+    if "min" in m:
+        parts.append(f">= {float(m['min']):g}")
+    if "max" in m:
+        parts.append(f"<= {float(m['max']):g}")
+    return " ".join(p for p in parts if p)
+
+
 def compare(run, metrics):
-    """Rows (name, value, reference, tolerance text, status, metric) for every metric."""
+    """Rows (name, value, reference or None, tolerance text, status, metric) for every metric."""
     rows = []
     for name, m in metrics.items():
+        reference = float(m["value"]) if "value" in m else None
         try:
             value = extract(run, str(m["from"]))
         except (MetricError, OSError, KeyError, ValueError) as error:
-            rows.append((name, None, float(m["value"]), "", f"ERROR {error}", m))
+            rows.append((name, None, reference, "", f"ERROR {error}", m))
             continue
-        reference = float(m["value"])
-        rel, abs_tol = float(m.get("rel", 0.0)), float(m.get("abs", 0.0))
-        tolerance = " ".join(t for t in (f"{rel:g} rel" if rel else "", f"{abs_tol:g} abs" if abs_tol else "") if t)
         if not m.get("gate", True):
             status = "info"
         elif not math.isfinite(value):
             status = "FAIL (not finite)"
         else:
-            status = "ok" if within(value, reference, rel, abs_tol) else "FAIL"
-        rows.append((name, value, reference, tolerance, status, m))
+            status = "ok" if passes(value, m) else "FAIL"
+        rows.append((name, value, reference, tolerance_text(m), status, m))
     return rows
 
 
 def deviation(value, reference):
-    if value is None or reference == 0.0:
+    if value is None or reference is None or reference == 0.0:
         return ""
     return f"{100.0 * (value - reference) / abs(reference):+.2f} %"
 
@@ -286,7 +324,8 @@ def print_table(results):
         for name, value, reference, tolerance, status, m in rows:
             unit = f" {m['unit']}" if "unit" in m else ""
             shown = "-" if value is None else f"{value:.6g}{unit}"
-            lines.append((case, search, length, name, shown, f"{reference:.6g}{unit}", deviation(value, reference),
+            shown_reference = "-" if reference is None else f"{reference:.6g}{unit}"
+            lines.append((case, search, length, name, shown, shown_reference, deviation(value, reference),
                           tolerance, str(m.get("kind", "regression")), status))
     widths = [max(len(str(line[i])) for line in lines) for i in range(len(header))]
     for k, line in enumerate(lines):
