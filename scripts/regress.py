@@ -334,12 +334,11 @@ def print_table(results):
             print("  ".join("-" * w for w in widths))
 
 
-def git_hash():
-    try:
-        return subprocess.run(["git", "-C", str(ROOT), "rev-parse", "--short=12", "HEAD"], capture_output=True,
-                              text=True, check=True).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        return "unknown"
+def program_hash(run):
+    """The commit of the sheetform that made the run (its summary.json), not the tree's HEAD:
+    --sheetform may name another build."""
+    value = run.summary().get("git_hash", "unknown")
+    return value if isinstance(value, str) and value else "unknown"
 
 
 def bless(path, doc, length, run, search):
@@ -351,7 +350,7 @@ def bless(path, doc, length, run, search):
             m["value"] = extract(run, str(m["from"]))
         except (MetricError, OSError, KeyError, ValueError) as error:
             raise MetricError(f"{path}: {length}.metrics.{name}: {error}") from error
-    table["blessed"] = f"{datetime.date.today().isoformat()}, sheetform {git_hash()}, search {search}"
+    table["blessed"] = f"{datetime.date.today().isoformat()}, sheetform {program_hash(run)}, search {search}"
     path.write_text(tomlkit.dumps(doc))
 
 

@@ -21,7 +21,8 @@ class RunFolder(unittest.TestCase):
     def setUp(self):
         self.tmp = tempfile.TemporaryDirectory()
         self.dir = pathlib.Path(self.tmp.name)
-        summary = {"draw_in": {"D0": {"computed_mm": 17.5}, "D45": {"computed_mm": 21.25}}, "flag": True}
+        summary = {"draw_in": {"D0": {"computed_mm": 17.5}, "D45": {"computed_mm": 21.25}}, "flag": True,
+                   "git_hash": "0123456789ab"}
         (self.dir / "summary.json").write_text(json.dumps(summary))
         with h5py.File(self.dir / "results.h5", "w") as f:
             f["history/time"] = np.array([0.0, 1.0, 2.0])
@@ -70,6 +71,30 @@ class RunFolder(unittest.TestCase):
                            "min": 4.0, "kind": "published", "source": "s"}}
         (name, value, reference, tolerance, status, _), = regress.compare(self.run, metrics)
         self.assertEqual((name, value, reference, tolerance, status), ("ear", 3.75, None, ">= 4", "FAIL"))
+
+    def test_bless_rewrites_only_regression_values(self):
+        path = self.dir / "reference.toml"
+        path.write_text("""[short]
+[short.metrics.d0]
+from = "summary:draw_in.D0.computed_mm"   # kept comment
+value = 1.0
+rel = 0.005
+source = "s"
+[short.metrics.exact]
+from = "summary:draw_in.D45.computed_mm"
+value = 20.0
+abs = 0.1
+kind = "exact"
+source = "s"
+""")
+        _, doc, _ = regress.load_reference(self.dir)
+        regress.bless(path, doc, "short", self.run, "modified")
+        text = path.read_text()
+        _, doc, _ = regress.load_reference(self.dir)
+        self.assertEqual(doc["short"]["metrics"]["d0"]["value"], 17.5)
+        self.assertEqual(doc["short"]["metrics"]["exact"]["value"], 20.0)  # never rewritten
+        self.assertIn("# kept comment", text)
+        self.assertRegex(doc["short"]["blessed"], r"sheetform 0123456789ab, search modified$")
 
 
 class ReferenceFile(unittest.TestCase):
