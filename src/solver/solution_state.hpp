@@ -14,8 +14,8 @@ struct ToolState {
   Vec3 displacement = Vec3::Zero();  ///< mm
   Vec3 force = Vec3::Zero();         ///< N, force of the blank on the tool
   int nodes_in_contact = 0;
-  double peak_force =
-      0.0;  ///< N, largest push against the motion so far (a fixed tool: along -z, either sign)
+  /// N, the largest push against the motion so far (a fixed tool: along -z, either sign)
+  double peak_force = 0.0;
   Vec3 previous_displacement = Vec3::Zero();  ///< mm, a step ago (for the work increment)
   Vec3 previous_force = Vec3::Zero();         ///< N, a step ago
   /// mm/s along the direction at the state's time: a prescribed motion's speed; for a
