@@ -11,6 +11,7 @@
 #include "core/errors.hpp"
 #include "element/shell_geometry.hpp"
 #include "element/shell_nodal_access.hpp"
+#include "element/shell_quad_assumed_strain.hpp"
 #include "element/shell_section_update.hpp"
 #include "element/shell_triangle.hpp"
 
@@ -186,7 +187,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
       fl.row(2) += res[2] * g.gamma + (res[0] * gz) * gx + (res[1] * gz) * gy;
       ml.row(0) += res[3] * g.gamma;
       ml.row(1) += res[4] * g.gamma;
-      result.hourglass_power += power;
+      result.hourglass_work += dt * power;
     }
 
     const Quad3 fg = g.frame * fl;
@@ -216,7 +217,9 @@ ShellForceResult compute_shell_internal_forces(const ShellPart& part, const Matr
     throw std::invalid_argument("compute_shell_internal_forces: inconsistent array sizes");
   }
   ShellForceResult result;
-  if (part.quads.cols() > 0) {
+  if (part.quads.cols() > 0 && part.formulation == ShellFormulation::assumed_strain) {
+    result = compute_assumed_strain_quad_forces(part, x, v, omega, dt, state, f_int, m_int);
+  } else if (part.quads.cols() > 0) {
     result = std::visit(
         [&](const auto& law) {
           return compute_forces(part, law, x, v, omega, dt, state, f_int, m_int);
@@ -227,7 +230,7 @@ ShellForceResult compute_shell_internal_forces(const ShellPart& part, const Matr
       compute_triangle_internal_forces(part, x, v, omega, dt, state, f_int, m_int);
   result.internal_work += tri.internal_work;
   result.plastic_work += tri.plastic_work;
-  result.hourglass_power += tri.hourglass_power;
+  result.hourglass_work += tri.hourglass_work;
   return result;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
-// Internal forces of the Belytschko-Lin-Tsay shell (Belytschko, Lin & Tsay 1984; Hallquist,
-// LS-DYNA Theory Manual), with viscous or stiffness hourglass control (Flanagan & Belytschko
-// 1981).
+// Internal forces of the shell part: quadrilaterals of either formulation (ShellFormulation) and
+// triangles. The Belytschko-Lin-Tsay quad (Belytschko, Lin & Tsay 1984; Hallquist, LS-DYNA Theory
+// Manual) with viscous or stiffness hourglass control (Flanagan & Belytschko 1981) is here; the
+// assumed-strain quad in shell_quad_assumed_strain.hpp, the triangle in shell_triangle.hpp.
 #include "core/types.hpp"
 #include "element/shell_part.hpp"
 
@@ -9,12 +10,14 @@ namespace sf {
 
 /// What one internal-force pass reports besides the forces.
 struct ShellForceResult {
-  double hourglass_power = 0.0;  ///< N mm/s, sum over elements of the hourglass forces' power
-                                 ///< (>= 0, dissipated); hourglass energy += dt * this
-  double internal_work = 0.0;    ///< N mm, increment of the stress work of this step (trapezoidal
-                                 ///< rule on stress, mid-step volume; excludes hourglass)
-  double plastic_work = 0.0;     ///< N mm, the plastic part of internal_work (>= 0, dissipated):
-                                 ///< the points' d_plastic_work on the same quadrature
+  /// N mm, work of the hourglass (stabilisation) forces in this step: the viscous form's
+  /// dissipation (>= 0), or the change of the energy stored by the stiffness form and the
+  /// assumed-strain stabilisation (trapezoidal rule on the resultants).
+  double hourglass_work = 0.0;
+  double internal_work = 0.0;  ///< N mm, increment of the stress work of this step (trapezoidal
+                               ///< rule on stress, mid-step volume; excludes hourglass)
+  double plastic_work = 0.0;   ///< N mm, the plastic part of internal_work (>= 0, dissipated):
+                               ///< the points' d_plastic_work on the same quadrature
 };
 
 /// Adds every element's (quads, then triangles: see shell_triangle.hpp) internal nodal forces (N)

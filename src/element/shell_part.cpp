@@ -127,6 +127,7 @@ ShellState make_shell_state(int n_elements, int n_points, double thickness) {
   st.syz.assign(n_elements, 0.0);
   st.thickness.assign(n_elements, thickness);
   st.hourglass.assign(static_cast<std::size_t>(n_elements) * kHourglassModes, 0.0);
+  st.director.assign(static_cast<std::size_t>(n_elements) * 3 * kDirectorNodes, 0.0);
   return st;
 }
 

@@ -45,14 +45,25 @@ struct ShellState {
   std::vector<double> sxz, syz;       ///< MPa, per element: transverse shear stress averaged over
                                       ///< the thickness (Q / t, shear-corrected)
   std::vector<double> thickness;      ///< mm, per element, current
-  /// Stiffness-form hourglass resultants per element, 5 per element (index 5 e + j), in the
-  /// element's corotational frame: j = 0, 1 in-plane (N), 2 out-of-plane (N), 3, 4 rotational
-  /// (N mm). Unused (stays 0) with the viscous form and for triangles (no hourglass modes).
+  /// Hourglass (stabilisation) resultants per element, kHourglassModes per element (index
+  /// kHourglassModes e + j). Belytschko-Tsay, stiffness form, in the element's corotational
+  /// frame: j = 0, 1 in-plane (N), 2 out-of-plane (N), 3, 4 rotational (N mm), 5 unused. Assumed
+  /// strain: j = 0, 1 membrane (N, frame), 2, 3 bending (N mm, frame), 4, 5 transverse shear (N,
+  /// of the edge differences) (shell_quad_stabilization.hpp). Unused (stays 0) with the viscous
+  /// form and for triangles.
   std::vector<double> hourglass;
+  /// -, per element and node, the unit director (the shell's fibre) in global components: index
+  /// 3 (kDirectorNodes e + I) + c, node I of the element, component c. Used by the
+  /// assumed-strain quads (their curvature and transverse shear are functions of the nodes'
+  /// positions and directors, shell_quad_directors.hpp); set by initialize_directors and rotated
+  /// with the nodes.
+  std::vector<double> director;
 };
 
 /// Number of hourglass resultants stored per element in ShellState::hourglass.
-inline constexpr int kHourglassModes = 5;
+inline constexpr int kHourglassModes = 6;
+/// Directors stored per element in ShellState::director (4: a quad's nodes).
+inline constexpr int kDirectorNodes = 4;
 
 /// A stress-free state with uniform thickness (mm).
 ShellState make_shell_state(int n_elements, int n_points, double thickness);
@@ -61,6 +72,17 @@ ShellState make_shell_state(int n_elements, int n_points, double thickness);
 enum class HourglassForm {
   viscous,    ///< forces proportional to the hourglass velocity (LS-DYNA type 1 style)
   stiffness,  ///< forces from the accumulated hourglass displacement, stored per element
+};
+
+/// The quadrilateral's formulation (docs/element-and-material.md, "Formulations").
+enum class ShellFormulation {
+  /// Belytschko-Lin-Tsay: one point, Flanagan-Belytschko hourglass control of the form and
+  /// coefficient ShellPart::hourglass_form / hourglass_coefficient.
+  belytschko_tsay,
+  /// One point with physical stabilisation from assumed strains: the quintessential-bending
+  /// membrane (Belytschko & Bindeman 1993), fully integrated curvature and the MITC4 transverse
+  /// shear (Dvorkin & Bathe 1984), all at the material's elastic moduli; no user coefficient.
+  assumed_strain,
 };
 
 /// A shell part: connectivity (node indices, counter-clockwise seen from the +normal side) of its
@@ -73,7 +95,8 @@ struct ShellPart {
   TriConn triangles;  ///< 3-node C0 shell triangles (DSG3 transverse shear)
   ShellSection section = make_gauss_section(5);
   Material material = ElasticPlaneStress{};
-  double density = 0.0;  ///< tonne/mm^3
+  double density = 0.0;                                              ///< tonne/mm^3
+  ShellFormulation formulation = ShellFormulation::belytschko_tsay;  ///< of the quads
   /// -, viscous: fraction (x 4) of critical damping; stiffness: hourglass mode stiffness as a
   /// fraction of the element's membrane / bending stiffness. See docs/element-and-material.md.
   double hourglass_coefficient = 0.1;

@@ -12,7 +12,7 @@ namespace sf {
 /// and m_int (3 x n_nodes, global components), updating their integration-point state: triangle
 /// k is state element part.quads.cols() + k. Same conventions as compute_shell_internal_forces
 /// (strains on the mid-step configuration x - dt/2 v, forces on x, f_int resists the motion,
-/// f_int . v + m_int . omega is the stress power). No hourglass modes: hourglass_power is 0.
+/// f_int . v + m_int . omega is the stress power). No hourglass modes: hourglass_work is 0.
 /// Throws InstabilityError naming the element on collapse, a normal that flips within the step
 /// (inversion) or a non-finite value. Array sizes are checked by compute_shell_internal_forces.
 ShellForceResult compute_triangle_internal_forces(const ShellPart& part, const Matrix3X& x,

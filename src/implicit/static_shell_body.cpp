@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <variant>
 
+#include "element/shell_directors.hpp"
+
 namespace sf {
 
 StaticShellBody::StaticShellBody(const ShellPart& part, const Matrix3X& x, const ShellState& state)
@@ -72,6 +74,9 @@ ShellForceResult StaticShellBody::compute_forces(const Matrix3X& du, const Matri
                                                  Matrix3X& f, Matrix3X& m, ShellState& trial,
                                                  bool small_strain) const {
   trial = state_;  // same sizes after the first call: no allocation
+  if (small_strain) {
+    centre_directors(dtheta, trial);
+  }
   // The element takes its strain increments on x_end - du / 2.
   x_trial_ = x_ + (small_strain ? 0.5 : 1.0) * du;  // into the sized buffer: no allocation
   f.setZero(3, x_.cols());
@@ -84,6 +89,21 @@ ShellForceResult StaticShellBody::compute_forces(const Matrix3X& du, const Matri
     m.col(i) += (drilling_stiffness_ * n.dot(dtheta.col(i))) * n;
   }
   return r;
+}
+
+void StaticShellBody::centre_directors(const Matrix3X& dtheta, ShellState& trial) const {
+  // A linear analysis evaluates the increment about the committed state (x - du/2 to x + du/2),
+  // so that second-order terms cancel: the directors start turned back by half the rotation.
+  for (Eigen::Index e = 0; e < part_.quads.cols(); ++e) {
+    for (int a = 0; a < 4; ++a) {
+      double* d = trial.director.data() + 3 * (kDirectorNodes * e + a);
+      const Vec3 turned =
+          rotate_director(Vec3(d[0], d[1], d[2]), -0.5 * dtheta.col(part_.quads(a, e)));
+      d[0] = turned(0);
+      d[1] = turned(1);
+      d[2] = turned(2);
+    }
+  }
 }
 
 void StaticShellBody::commit(const Matrix3X& du, const ShellState& trial) {

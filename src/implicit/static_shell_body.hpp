@@ -49,6 +49,7 @@ class StaticShellBody {
 
  private:
   void update_normals();
+  void centre_directors(const Matrix3X& dtheta, ShellState& trial) const;
 
   ShellPart part_;
   Matrix3X x_;

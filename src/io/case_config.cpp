@@ -188,8 +188,9 @@ void read_blank(const TomlSection& top, const fs::path& folder, const CaseConfig
   const TomlSection s = *top.sub_table("blank", Presence::required);
   using Rule = BlankConfig::IntegrationRule;
   using Form = BlankConfig::HourglassForm;
+  using Formulation = BlankConfig::Formulation;
   s.check_keys({"mesh", "group", "element_size", "element", "thickness", "integration_points",
-                "integration_rule", "material", "hourglass", "hourglass_form",
+                "integration_rule", "material", "formulation", "hourglass", "hourglass_form",
                 "rolling_direction"});
   read_mesh_source(s, folder, blank.mesh);
   s.read_choice<std::string>("element", blank.element,
@@ -204,6 +205,18 @@ void read_blank(const TomlSection& top, const fs::path& folder, const CaseConfig
     s.read_integer("integration_points", blank.integration_points, IntegerRange{.lo = 1, .hi = 9});
   }
   s.read_string("material", blank.material, Presence::required);
+  s.read_choice("formulation", blank.formulation,
+                {{"belytschko_tsay", Formulation::belytschko_tsay},
+                 {"assumed_strain", Formulation::assumed_strain}});
+  if (blank.formulation == Formulation::assumed_strain) {
+    for (const char* key : {"hourglass", "hourglass_form"}) {
+      if (s.find(key)) {
+        s.fail_at(*s.find(key), s.key_path(key),
+                  "applies to formulation = \"belytschko_tsay\" only: the assumed-strain "
+                  "formulation's stabilisation is physical and has no coefficient");
+      }
+    }
+  }
   s.read_number("hourglass", blank.hourglass_coefficient, interval(0.0, false, 0.5, false));
   s.read_choice("hourglass_form", blank.hourglass_form,
                 {{"viscous", Form::viscous}, {"stiffness", Form::stiffness}});

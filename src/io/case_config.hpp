@@ -66,6 +66,7 @@ struct MeshSourceConfig {
 struct BlankConfig {
   enum class IntegrationRule { gauss, lobatto };
   enum class HourglassForm { viscous, stiffness };
+  enum class Formulation { belytschko_tsay, assumed_strain };
   MeshSourceConfig mesh{.file = {}, .group = "blank"};  ///< group defaults to "blank"
   /// "quad": a .geo is meshed with every surface recombined into quads (Belytschko-Lin-Tsay);
   /// "as_meshed": the .geo's own Recombine commands decide. Triangles left in the mesh are C0
@@ -75,8 +76,13 @@ struct BlankConfig {
   int integration_points = 5;  ///< through the thickness: gauss 1..9, lobatto 2..9
   IntegrationRule integration_rule = IntegrationRule::gauss;  ///< through-thickness rule
   std::string material;                                       ///< name of a [materials.NAME] table
-  double hourglass_coefficient = 0.1;  ///< -, hourglass coefficient (Flanagan-Belytschko), (0, 0.5]
-  HourglassForm hourglass_form = HourglassForm::viscous;  ///< hourglass control form
+  /// The quadrilaterals' formulation: "belytschko_tsay" (one point, Flanagan-Belytschko hourglass
+  /// control, the two keys below) or "assumed_strain" (one point, directors, MITC4 transverse
+  /// shear, physical stabilisation: no hourglass keys). docs/element-and-material.md
+  Formulation formulation = Formulation::belytschko_tsay;
+  /// -, hourglass coefficient (Flanagan-Belytschko), (0, 0.5]; belytschko_tsay only
+  double hourglass_coefficient = 0.1;
+  HourglassForm hourglass_form = HourglassForm::viscous;  ///< belytschko_tsay only
   /// Rolling direction (unit vector, global axes; normalised on read), projected on each element
   /// at the start to fix its material axes. Used by hill48 only; must not be (near) normal to an
   /// element (build_model checks).

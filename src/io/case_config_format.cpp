@@ -99,9 +99,14 @@ void write_blank(TomlWriter& w, const BlankConfig& blank) {
   const bool lobatto = blank.integration_rule == BlankConfig::IntegrationRule::lobatto;
   w.string("integration_rule", lobatto ? "lobatto" : "gauss");
   w.string("material", blank.material);
-  w.number("hourglass", blank.hourglass_coefficient, "hourglass coefficient");
-  const bool stiffness = blank.hourglass_form == BlankConfig::HourglassForm::stiffness;
-  w.string("hourglass_form", stiffness ? "stiffness" : "viscous");
+  if (blank.formulation == BlankConfig::Formulation::assumed_strain) {
+    w.string("formulation", "assumed_strain");
+  } else {
+    w.string("formulation", "belytschko_tsay");
+    w.number("hourglass", blank.hourglass_coefficient, "hourglass coefficient");
+    const bool stiffness = blank.hourglass_form == BlankConfig::HourglassForm::stiffness;
+    w.string("hourglass_form", stiffness ? "stiffness" : "viscous");
+  }
   w.vector("rolling_direction", blank.rolling_direction, "unit vector; used by hill48 only");
 }
 

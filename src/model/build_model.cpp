@@ -138,6 +138,9 @@ void read_blank(const CaseConfig& config, Model& model) {
   blank.part.hourglass_form = bc.hourglass_form == BlankConfig::HourglassForm::stiffness
                                   ? HourglassForm::stiffness
                                   : HourglassForm::viscous;
+  blank.part.formulation = bc.formulation == BlankConfig::Formulation::assumed_strain
+                               ? ShellFormulation::assumed_strain
+                               : ShellFormulation::belytschko_tsay;
   const bool material_axes =
       std::visit([](const auto& law) { return kUsesMaterialAxes<std::decay_t<decltype(law)>>; },
                  blank.part.material);

@@ -8,6 +8,7 @@
 
 #include "core/errors.hpp"
 #include "core/log.hpp"
+#include "element/shell_directors.hpp"
 #include "model/external_loads.hpp"
 #include "solver/central_difference.hpp"
 #include "solver/frame_output.hpp"
@@ -242,6 +243,7 @@ SolutionState make_initial_state(const Model& model) {
   }
   s.shell = make_shell_state(element_count(model.blank.part), model.config.blank.integration_points,
                              model.config.blank.thickness);
+  initialize_directors(model.blank.part, model.blank.mesh.nodes, s.shell);
   s.tools.resize(model.tools.size());
   for (const InitialVelocityConfig& iv : model.config.initial_velocities) {
     const Vec3 velocity(iv.velocity[0], iv.velocity[1], iv.velocity[2]);
@@ -421,7 +423,7 @@ void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previ
   }
   e.external_work += load_work + prescribed_work;
   e.damping += model.loads.damping * damping_power * dt;
-  const double hourglass_work = element_result.hourglass_power * dt;
+  const double hourglass_work = element_result.hourglass_work;
   e.plastic_work += element_result.plastic_work;
   e.hourglass += hourglass_work;
   e.internal += element_work - hourglass_work;

@@ -112,7 +112,7 @@ TEST(TriangleRigidBody, TranslationGivesNoStrainAndNoForce) {
   auto o = run_step(part, x0 + dt * v, v, w, dt, st);
   EXPECT_LT(o.f.cwiseAbs().maxCoeff(), 1e-9);
   EXPECT_LT(o.m.cwiseAbs().maxCoeff(), 1e-9);
-  EXPECT_EQ(o.r.hourglass_power, 0.0);
+  EXPECT_EQ(o.r.hourglass_work, 0.0);
   for (int k = 0; k < 5; ++k) {
     st.eps_p[k] = 0.2;  // yield stress 376 MPa: the prestress stays elastic
     st.sxx[k] = 100.0 + 10 * k;

@@ -1,0 +1,46 @@
+#pragma once
+// Directors of the shell: the unit fibre at each node of each element, rotated with the node. The
+// assumed-strain quads take their curvature and transverse shear from the nodes' positions and
+// directors (shell_quad_directors.hpp), so a node's rotation about its own director, the drilling
+// rotation that no shell element resists, moves nothing: flat elements on a curved mesh are then
+// not hinged to each other through it, as they are when each element takes the nodal rotation
+// about its own normal (docs/element-and-material.md, "Directors").
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "core/types.hpp"
+#include "element/shell_part.hpp"
+
+namespace sf {
+
+/// rad: at a fold of the initial mesh each element keeps its own normal as the node's director; a
+/// node is at a fold when some element's normal is more than this from the node's averaged
+/// normal (30 deg: elements up to about 60 deg apart are facets of one smooth surface).
+inline constexpr double kFoldAngle = std::numbers::pi / 6.0;
+
+/// Per node of x (mm): the unit area-weighted mean of the normals of the elements around it, or
+/// zero for a node without elements or whose elements' normals cancel.
+Matrix3X compute_nodal_normals(const ShellPart& part, const Matrix3X& x);
+
+/// Sets every element-node director of `state` (sized by make_shell_state) at the initial
+/// coordinates x (mm): the node's averaged normal where the surface is smooth, the element's own
+/// normal at a fold (kFoldAngle). Throws InputError naming the element on a degenerate one.
+void initialize_directors(const ShellPart& part, const Matrix3X& x, ShellState& state);
+
+/// The unit vector d turned by the rotation vector phi (rad; Rodrigues' formula, exact for any
+/// angle), renormalised against round-off.
+inline Vec3 rotate_director(const Vec3& d, const Vec3& phi) {
+  const double angle2 = phi.squaredNorm();
+  if (angle2 == 0.0) {
+    return d;
+  }
+  const double angle = std::sqrt(angle2);
+  const Vec3 axis = phi / angle;
+  const double c = std::cos(angle);
+  const double s = std::sin(angle);
+  const Vec3 r = c * d + s * axis.cross(d) + ((1.0 - c) * axis.dot(d)) * axis;
+  return r / r.norm();
+}
+
+}  // namespace sf

@@ -1,0 +1,220 @@
+#include "element/shell_quad_assumed_strain.hpp"
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <variant>
+
+#include "core/errors.hpp"
+#include "element/shell_directors.hpp"
+#include "element/shell_geometry.hpp"
+#include "element/shell_nodal_access.hpp"
+#include "element/shell_quad_directors.hpp"
+#include "element/shell_quad_hourglass.hpp"
+#include "element/shell_quad_stabilization.hpp"
+#include "element/shell_section_update.hpp"
+
+namespace sf {
+
+namespace {
+
+// Per-part constants of the loop.
+struct Constants {
+  double young = 0.0;    ///< MPa
+  double poisson = 0.0;  ///< -
+  double ks_g = 0.0;     ///< MPa, shear-corrected shear modulus (factor 5/6)
+};
+
+// The element's directors: gathered from the state, turned by the step's nodal rotations.
+struct StepDirectors {
+  Quad3 old_d;
+  Quad3 new_d;
+};
+
+StepDirectors advance_directors(double* director, const Quad3& we, double dt, int e) {
+  StepDirectors d;
+  for (int i = 0; i < 4; ++i) {
+    double* c = director + 3 * i;
+    d.old_d.col(i) = Vec3(c[0], c[1], c[2]);
+    if (!(d.old_d.col(i).squaredNorm() > 0.5)) {
+      throw std::logic_error("shell element " + std::to_string(e) +
+                             ": directors not initialised (initialize_directors)");
+    }
+    d.new_d.col(i) = rotate_director(d.old_d.col(i), dt * we.col(i));
+    c[0] = d.new_d(0, i);
+    c[1] = d.new_d(1, i);
+    c[2] = d.new_d(2, i);
+  }
+  return d;
+}
+
+// The increments of the step (end minus start) of the director measures, in the mid-step frame.
+struct BendingShearIncrements {
+  Vec3 curvature;     ///< -, dt x curvature rate (1/mm), Cartesian: xx, yy, xy (engineering)
+  Vec2 shear;         ///< -, transverse shear strain increment at the centre (xz, yz)
+  Vec2 shear_linear;  ///< mm, of (e_A - e_C, e_B - e_D)
+  Vec2 hourglass;     ///< rad, of the director hourglass amplitudes (frame components)
+};
+
+BendingShearIncrements compute_increments(const Quad3& x_start, const Quad3& x_end,
+                                          const StepDirectors& d, const QuadBasis& mid,
+                                          const CartesianMap& map) {
+  const DirectorMeasures start = compute_director_measures(x_start, d.old_d, mid);
+  const DirectorMeasures end = compute_director_measures(x_end, d.new_d, mid);
+  double de[4];
+  for (int k = 0; k < 4; ++k) {
+    de[k] = end.edge[k] - start.edge[k];
+  }
+  BendingShearIncrements inc;
+  inc.curvature = to_cartesian_curvature(map, end.curvature - start.curvature);
+  inc.shear = map.p * (0.5 * (de[0] + de[1])) + map.r * (0.5 * (de[2] + de[3]));
+  inc.shear_linear = Vec2(de[1] - de[0], de[3] - de[2]);
+  const Vec2 dq = end.hourglass - start.hourglass;
+  inc.hourglass = map.p * dq(0) + map.r * dq(1);
+  return inc;
+}
+
+// Advances the stabilisation resultants hs (membrane 0, 1; bending 2, 3; shear 4, 5) by their
+// stiffnesses times the step's increments; returns the work of the step (trapezoidal, N mm).
+double update_stabilization(const StabilizationStiffness& k, const Vec2& membrane,
+                            const Vec2& bending, const Vec2& shear, double* hs) {
+  const Vec2 d_m = k.membrane * membrane;
+  const Vec2 d_b = k.bending * bending;
+  const Vec2 d_s = k.shear.cwiseProduct(shear);
+  const double increment[kHourglassModes] = {d_m(0), d_m(1), d_b(0), d_b(1), d_s(0), d_s(1)};
+  const double strain[kHourglassModes] = {membrane(0), membrane(1), bending(0),
+                                          bending(1),  shear(0),    shear(1)};
+  double work = 0.0;
+  for (int j = 0; j < kHourglassModes; ++j) {
+    const double old_res = hs[j];
+    hs[j] = old_res + increment[j];
+    work += 0.5 * (old_res + hs[j]) * strain[j];
+  }
+  return work;
+}
+
+// The generalised resultants of the director measures on the end-of-step geometry: the bending
+// moment and transverse shear resultants of the section and the stabilisation's.
+DirectorResultants make_director_resultants(const CartesianMap& map, double area,
+                                            const Vec3& moment, const Vec2& shear_force,
+                                            const double* hs) {
+  DirectorResultants r;
+  r.curvature = to_covariant_moment(map, moment, area);
+  const double along_xi = 0.5 * area * shear_force.dot(map.p);
+  const double along_eta = 0.5 * area * shear_force.dot(map.r);
+  r.edge[0] = along_xi - hs[4];
+  r.edge[1] = along_xi + hs[4];
+  r.edge[2] = along_eta - hs[5];
+  r.edge[3] = along_eta + hs[5];
+  const Vec2 q(hs[2], hs[3]);
+  r.hourglass = Vec2(q.dot(map.p), q.dot(map.r));
+  return r;
+}
+
+template <class Law>
+ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Matrix3X& x,
+                                const Matrix3X& v, const Matrix3X& omega, double dt, ShellState& st,
+                                Matrix3X& f_int, Matrix3X& m_int) {
+  const int n_el = static_cast<int>(part.quads.cols());
+  const Constants c{law.E, law.nu, 5.0 / 6.0 * 0.5 * law.E / (1.0 + law.nu)};
+  const SectionConstants section = make_section_constants(part.section);
+  const int* conn = part.quads.data();
+  const double* material_angle = part.material_angle.empty() ? nullptr : part.material_angle.data();
+  ShellForceResult result;
+
+  for (int e = 0; e < n_el; ++e) {
+    const int* nodes = conn + 4 * static_cast<std::ptrdiff_t>(e);
+    Quad3 xe;
+    Quad3 ve;
+    Quad3 we;
+    gather_nodes(x.data(), nodes, xe);
+    gather_nodes(v.data(), nodes, ve);
+    gather_nodes(omega.data(), nodes, we);
+    if (!ve.allFinite() || !we.allFinite()) {
+      throw InstabilityError("shell element " + std::to_string(e) +
+                             ": non-finite nodal velocity or angular velocity");
+    }
+
+    // 1. Strain increments. Membrane: the one-point velocity strain on the mid-step geometry
+    //    (exact zero for a rigid rotation step); curvature and transverse shear: the change of the
+    //    director measures from the start to the end of the step, in the mid-step frame.
+    ShellGeometry gm;
+    const Quad3 xm = xe - (0.5 * dt) * ve;
+    const Quad3 xs = xe - dt * ve;
+    compute_shell_geometry_or_throw(xm, e, "mid-step", gm);
+    const Quad3 vl = gm.frame.transpose() * ve;
+    const Vec3 d_membrane(gm.b.row(0).dot(vl.row(0)), gm.b.row(1).dot(vl.row(1)),
+                          gm.b.row(1).dot(vl.row(0)) + gm.b.row(0).dot(vl.row(1)));
+    const StepDirectors d = advance_directors(
+        st.director.data() + 3 * kDirectorNodes * static_cast<std::ptrdiff_t>(e), we, dt, e);
+    const QuadBasis basis_mid = compute_quad_basis(xm);
+    const CartesianMap map_mid = make_cartesian_map(basis_mid, gm.frame);
+    const BendingShearIncrements inc = compute_increments(xs, xe, d, basis_mid, map_mid);
+
+    // 2. Material update through the thickness; transverse shear elastic, shear-corrected,
+    //    constant through the thickness.
+    const double t = st.thickness[e];
+    const SectionResult sr =
+        update_section(law, section, e, t, dt * d_membrane, inc.curvature, material_angle, st);
+    const Vec2 s_old(st.sxz[e], st.syz[e]);
+    const Vec2 s_new = s_old + c.ks_g * inc.shear;
+    st.sxz[e] = s_new(0);
+    st.syz[e] = s_new(1);
+    const double work = sr.work + t * 0.5 * (s_old + s_new).dot(inc.shear);
+    result.internal_work += gm.area * work;
+    result.plastic_work += gm.area * sr.plastic_work;
+    if (!sr.n.allFinite() || !sr.m.allFinite() || !s_new.allFinite()) {
+      throw InstabilityError("shell element " + std::to_string(e) + ": non-finite stress");
+    }
+    st.thickness[e] = t * (1.0 + sr.d_ezz_mean);
+
+    // 3. Stabilisation (shell_quad_stabilization.hpp): membrane from the warping-corrected
+    //    hourglass rates on the mid-step geometry, bending and shear from the director measures.
+    const double gz_mid = compute_warp(gm, xm);
+    const Vec2 membrane_hg = dt * compute_membrane_hourglass_rates(gm, gz_mid, vl);
+    const StabilizationStiffness k = compute_stabilization_stiffness(basis_mid, map_mid, gm.frame,
+                                                                     c.young, c.poisson, t, c.ks_g);
+    double* hs = st.hourglass.data() + kHourglassModes * static_cast<std::ptrdiff_t>(e);
+    result.hourglass_work +=
+        update_stabilization(k, membrane_hg, inc.hourglass, inc.shear_linear, hs);
+
+    // 4. Nodal forces and moments on the end-of-step configuration (conjugate to step 1).
+    ShellGeometry g;
+    compute_shell_geometry_or_throw(xe, e, "end of step", g);
+    const double a = g.area;
+    Quad3 fl;
+    fl.row(0) = a * (sr.n(0) * g.b.row(0) + sr.n(2) * g.b.row(1));
+    fl.row(1) = a * (sr.n(1) * g.b.row(1) + sr.n(2) * g.b.row(0));
+    fl.row(2).setZero();
+    add_membrane_hourglass_forces(g, compute_warp(g, xe), Vec2(hs[0], hs[1]), fl);
+    Quad3 fg = g.frame * fl;
+    Quad3 mg = Quad3::Zero();
+    const QuadBasis basis_end = compute_quad_basis(xe);
+    const CartesianMap map_end = make_cartesian_map(basis_end, g.frame);
+    const DirectorResultants r = make_director_resultants(map_end, a, sr.m, t * s_new, hs);
+    add_director_forces(xe, d.new_d, basis_mid, r, fg, mg);
+    scatter_add_nodes(fg, mg, nodes, f_int.data(), m_int.data());
+  }
+  return result;
+}
+
+}  // namespace
+
+ShellForceResult compute_assumed_strain_quad_forces(const ShellPart& part, const Matrix3X& x,
+                                                    const Matrix3X& v, const Matrix3X& omega,
+                                                    double dt, ShellState& state, Matrix3X& f_int,
+                                                    Matrix3X& m_int) {
+  if (state.director.size() != static_cast<std::size_t>(3 * kDirectorNodes) *
+                                   static_cast<std::size_t>(state.n_elements) ||
+      state.hourglass.size() !=
+          static_cast<std::size_t>(kHourglassModes) * static_cast<std::size_t>(state.n_elements)) {
+    throw std::invalid_argument("compute_assumed_strain_quad_forces: inconsistent array sizes");
+  }
+  return std::visit(
+      [&](const auto& law) {
+        return compute_forces(part, law, x, v, omega, dt, state, f_int, m_int);
+      },
+      part.material);
+}
+
+}  // namespace sf
