@@ -19,6 +19,10 @@ namespace sf {
 
 namespace {
 
+// Hourglass modes of the Belytschko-Lin-Tsay quad: in-plane x, y, out-of-plane, rotational x, y
+// (stored in the first kBtModes of the element's kHourglassModes resultants).
+constexpr int kBtModes = 5;
+
 // The element loop, instantiated once per material type (the variant is visited outside it).
 template <class Law>
 ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Matrix3X& x,
@@ -136,7 +140,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
       const Vec3 centre = 0.25 * xr.rowwise().sum();
       const Row4 z = e3.transpose() * (xr.colwise() - centre);
       const double gz_r = gr.gamma.dot(z);
-      const double q[kHourglassModes] = {
+      const double q[kBtModes] = {
           gr.gamma.dot(vr.row(0)) + gz_r * gr.b.row(0).dot(vr.row(2)),
           gr.gamma.dot(vr.row(1)) + gz_r * gr.b.row(1).dot(vr.row(2)), gr.gamma.dot(vr.row(2)),
           gr.gamma.dot(wr.row(0)), gr.gamma.dot(wr.row(1))};
@@ -145,8 +149,8 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
           stiffness_form
               ? g.gamma.dot(g.frame.col(2).transpose() * (xe.colwise() - 0.25 * xe.rowwise().sum()))
               : gz_r;
-      double coef[kHourglassModes];
-      double res[kHourglassModes];
+      double coef[kBtModes];
+      double res[kBtModes];
       double power = 0.0;
       if (!stiffness_form) {
         // Viscous: Q = a q, a = kappa/2 m w (m the nodal mass or inertia, w the highest
@@ -158,7 +162,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
         coef[2] = 0.5 * kappa * m_node * 4.0 * c * t / (std::sqrt(12.0) * a);
         coef[3] = 0.5 * kappa * std::sqrt(2.0 * plate * t * t * t * i_node);
         coef[4] = coef[3];
-        for (int mode = 0; mode < kHourglassModes; ++mode) {
+        for (int mode = 0; mode < kBtModes; ++mode) {
           res[mode] = coef[mode] * q[mode];
           power += res[mode] * q[mode];
         }
@@ -175,7 +179,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
         coef[3] = 0.25 * kappa * d_plate * ab2;
         coef[4] = coef[3];
         double* hs = hg_state + kHourglassModes * static_cast<std::ptrdiff_t>(e);
-        for (int mode = 0; mode < kHourglassModes; ++mode) {
+        for (int mode = 0; mode < kBtModes; ++mode) {
           const double old_res = hs[mode];
           res[mode] = old_res + coef[mode] * dt * q[mode];
           hs[mode] = res[mode];
