@@ -140,10 +140,10 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
       const Vec3 centre = 0.25 * xr.rowwise().sum();
       const Row4 z = e3.transpose() * (xr.colwise() - centre);
       const double gz_r = gr.gamma.dot(z);
-      const double q[kBtModes] = {
-          gr.gamma.dot(vr.row(0)) + gz_r * gr.b.row(0).dot(vr.row(2)),
-          gr.gamma.dot(vr.row(1)) + gz_r * gr.b.row(1).dot(vr.row(2)), gr.gamma.dot(vr.row(2)),
-          gr.gamma.dot(wr.row(0)), gr.gamma.dot(wr.row(1))};
+      const double q[kBtModes] = {gr.gamma.dot(vr.row(0)) + gz_r * gr.b.row(0).dot(vr.row(2)),
+                                  gr.gamma.dot(vr.row(1)) + gz_r * gr.b.row(1).dot(vr.row(2)),
+                                  gr.gamma.dot(vr.row(2)), gr.gamma.dot(wr.row(0)),
+                                  gr.gamma.dot(wr.row(1))};
       // Forces on the end-of-step geometry, the transpose of the (corrected) rate operator there.
       const double gz =
           stiffness_form
@@ -231,7 +231,9 @@ ShellForceResult compute_shell_internal_forces(const ShellPart& part, const Matr
         part.material);
   }
   const ShellForceResult tri =
-      compute_triangle_internal_forces(part, x, v, omega, dt, state, f_int, m_int);
+      part.formulation == ShellFormulation::assumed_strain
+          ? compute_assumed_strain_triangle_forces(part, x, v, omega, dt, state, f_int, m_int)
+          : compute_triangle_internal_forces(part, x, v, omega, dt, state, f_int, m_int);
   result.internal_work += tri.internal_work;
   result.plastic_work += tri.plastic_work;
   result.hourglass_work += tri.hourglass_work;

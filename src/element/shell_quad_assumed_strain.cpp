@@ -25,28 +25,11 @@ struct Constants {
   double ks_g = 0.0;     ///< MPa, shear-corrected shear modulus (factor 5/6)
 };
 
-// The element's directors: gathered from the state, turned by the step's nodal rotations.
+// The element's directors at the start and end of the step.
 struct StepDirectors {
   Quad3 old_d;
   Quad3 new_d;
 };
-
-StepDirectors advance_directors(double* director, const Quad3& we, double dt, int e) {
-  StepDirectors d;
-  for (int i = 0; i < 4; ++i) {
-    double* c = director + 3 * i;
-    d.old_d.col(i) = Vec3(c[0], c[1], c[2]);
-    if (!(d.old_d.col(i).squaredNorm() > 0.5)) {
-      throw std::logic_error("shell element " + std::to_string(e) +
-                             ": directors not initialised (initialize_directors)");
-    }
-    d.new_d.col(i) = rotate_director(d.old_d.col(i), dt * we.col(i));
-    c[0] = d.new_d(0, i);
-    c[1] = d.new_d(1, i);
-    c[2] = d.new_d(2, i);
-  }
-  return d;
-}
 
 // The increments of the step (end minus start) of the director measures, in the mid-step frame.
 struct BendingShearIncrements {
@@ -145,8 +128,10 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     const Quad3 vl = gm.frame.transpose() * ve;
     const Vec3 d_membrane(gm.b.row(0).dot(vl.row(0)), gm.b.row(1).dot(vl.row(1)),
                           gm.b.row(1).dot(vl.row(0)) + gm.b.row(0).dot(vl.row(1)));
-    const StepDirectors d = advance_directors(
-        st.director.data() + 3 * kDirectorNodes * static_cast<std::ptrdiff_t>(e), we, dt, e);
+    StepDirectors d;
+    advance_element_directors(
+        st.director.data() + 3 * kDirectorNodes * static_cast<std::ptrdiff_t>(e), we, dt, e,
+        d.old_d, d.new_d);
     const QuadBasis basis_mid = compute_quad_basis(xm);
     const CartesianMap map_mid = make_cartesian_map(basis_mid, gm.frame);
     const BendingShearIncrements inc = compute_increments(xs, xe, d, basis_mid, map_mid);

@@ -20,4 +20,13 @@ ShellForceResult compute_triangle_internal_forces(const ShellPart& part, const M
                                                   double dt, ShellState& state, Matrix3X& f_int,
                                                   Matrix3X& m_int);
 
+/// The same for the assumed-strain formulation (ShellFormulation::assumed_strain): membrane as
+/// above, curvature and DSG3 shear from the nodes' positions and directors
+/// (shell_triangle_directors.hpp), the directors turned by dt omega. The directors must have been
+/// set (initialize_directors).
+ShellForceResult compute_assumed_strain_triangle_forces(const ShellPart& part, const Matrix3X& x,
+                                                        const Matrix3X& v, const Matrix3X& omega,
+                                                        double dt, ShellState& state,
+                                                        Matrix3X& f_int, Matrix3X& m_int);
+
 }  // namespace sf
