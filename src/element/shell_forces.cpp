@@ -152,9 +152,14 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
       double coef[kBtModes];
       double res[kBtModes];
       double power = 0.0;
+      double* hs = hg_state + kHourglassModes * static_cast<std::ptrdiff_t>(e);
       if (!stiffness_form) {
         // Viscous: Q = a q, a = kappa/2 m w (m the nodal mass or inertia, w the highest
-        // frequency of that kind); power a q^2 >= 0.
+        // frequency of that kind). Its work over the step is taken as the driver takes the work
+        // of every force, on the trapezoidal rule with the previous step's resultants (stored):
+        // 1/2 (Q_n + Q_n+1) q; with a q^2 instead, a mode that alternates sign every step (the
+        // highest ones) would be counted as dissipating what the trapezoidal element work does
+        // not see, and the internal energy, the rest of that work, would go negative.
         const double m_node = 0.25 * part.density * t * a;
         const double i_node = rotational_inertia_factor(a, t) * m_node;
         coef[0] = 0.5 * kappa * m_node * 2.0 * c / std::sqrt(a);
@@ -164,7 +169,8 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
         coef[4] = coef[3];
         for (int mode = 0; mode < kBtModes; ++mode) {
           res[mode] = coef[mode] * q[mode];
-          power += res[mode] * q[mode];
+          power += 0.5 * (hs[mode] + res[mode]) * q[mode];
+          hs[mode] = res[mode];
         }
       } else {
         // Stiffness: Q += k dt q (the hourglass displacement increment), stored in the
@@ -178,7 +184,6 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
         coef[2] = 0.25 * kappa * d_plate * ab2 * ab2 / a;
         coef[3] = 0.25 * kappa * d_plate * ab2;
         coef[4] = coef[3];
-        double* hs = hg_state + kHourglassModes * static_cast<std::ptrdiff_t>(e);
         for (int mode = 0; mode < kBtModes; ++mode) {
           const double old_res = hs[mode];
           res[mode] = old_res + coef[mode] * dt * q[mode];
@@ -214,8 +219,7 @@ ShellForceResult compute_shell_internal_forces(const ShellPart& part, const Matr
       state.n_elements != n_el ||
       state.sxx.size() != static_cast<std::size_t>(n_el * part.section.n_points) ||
       state.thickness.size() != static_cast<std::size_t>(n_el) ||
-      (part.hourglass_form == HourglassForm::stiffness &&
-       state.hourglass.size() != static_cast<std::size_t>(n_el * kHourglassModes)) ||
+      state.hourglass.size() != static_cast<std::size_t>(n_el * kHourglassModes) ||
       (!part.material_angle.empty() &&
        part.material_angle.size() != static_cast<std::size_t>(n_el))) {
     throw std::invalid_argument("compute_shell_internal_forces: inconsistent array sizes");

@@ -61,6 +61,12 @@ void half_kick_rate(const Model& model, const SolutionState& s, Eigen::Index i, 
   }
 }
 
+// The kinetic energy at the step end and the half-kick energy D (N mm).
+struct KineticEnergy {
+  double kinetic = 0.0;
+  double half_kick = 0.0;
+};
+
 // Kinetic energy (N mm) at the end of the step just taken, t(n+1), from the whole-step velocity
 //   v(n+1) = v(n+1/2) + dt(n+1/2) / 2 (a(n+1) - c v(n+1/2)),
 // a(n+1) from the forces just computed, without storing v(n+1). The half step used is the one
@@ -73,18 +79,22 @@ void half_kick_rate(const Model& model, const SolutionState& s, Eigen::Index i, 
 //   D(n+1) = 1/2 sum m |dt/2 u(n+1)|^2 = dt^2 / 8 F.M^-1.F (undamped),
 // which is second order in dt: total - supplied = D(n+1) - D(0) at a constant step, for any
 // forces (docs/time-integration.md).
-double whole_step_kinetic_energy(const Model& model, const SolutionState& s, double dt) {
+KineticEnergy whole_step_kinetic_energy(const Model& model, const SolutionState& s, double dt) {
   const double h = 0.5 * dt;
-  double e = 0.0;
+  KineticEnergy e;
   const Eigen::Index n = s.v.cols();
   Vec3 u, u_omega;
   for (Eigen::Index i = 0; i < n; ++i) {
     const double m = model.blank.mass[i];
     const double j = model.blank.rotational_inertia[i];
     half_kick_rate(model, s, i, m, j, u, u_omega);
-    e += m * (s.v.col(i) + h * u).squaredNorm() + j * (s.omega.col(i) + h * u_omega).squaredNorm();
+    e.kinetic +=
+        m * (s.v.col(i) + h * u).squaredNorm() + j * (s.omega.col(i) + h * u_omega).squaredNorm();
+    e.half_kick += h * h * (m * u.squaredNorm() + j * u_omega.squaredNorm());
   }
-  return 0.5 * e;
+  e.kinetic *= 0.5;
+  e.half_kick *= 0.5;
+  return e;
 }
 
 // Accelerations from the nodal force balance, straight into the half-step velocity update.
@@ -368,6 +378,15 @@ ShellForceResult compute_forces(Model& model, SolutionState& s, double dt) {
 
 void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previous) {
   const double time_before = s.time;  // t(n)
+  // The half-kick energy's reference (docs/time-integration.md): D(0) from the forces at time 0;
+  // where the step changes, the kick about to be taken differs from the reported D by the ratio
+  // of the squared steps, and that jump is taken out of the reference.
+  if (s.cycle == 0) {
+    s.energies.half_kick_reference = whole_step_kinetic_energy(model, s, dt).half_kick;
+  } else if (dt != dt_previous && dt_previous > 0.0) {
+    const double ratio = dt / dt_previous;
+    s.energies.half_kick_reference -= s.energies.half_kick * (1.0 - ratio * ratio);
+  }
   const double weight = velocity_update_weight(dt, dt_previous);
   if (!update_velocities(model, s, weight)) {
     throw_non_finite(model, s);
@@ -458,7 +477,9 @@ void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previ
     const bool fixed = !model.tools[t].force_control && !model.tools[t].motion.moves();
     tool.peak_force = std::max(tool.peak_force, fixed ? std::abs(pushing) : pushing);
   }
-  e.kinetic = whole_step_kinetic_energy(model, s, dt) + tool_kinetic;
+  const KineticEnergy kinetic = whole_step_kinetic_energy(model, s, dt);
+  e.kinetic = kinetic.kinetic + tool_kinetic;
+  e.half_kick = kinetic.half_kick;
 }
 
 RunSummary run_explicit(Model& model, const RunOptions& options, SolutionState* final_state) {
