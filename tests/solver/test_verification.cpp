@@ -304,11 +304,11 @@ end_time = 0.02
 // Elastic strain energy of the stresses in `s` (N mm): 1/2 sigma . C^-1 sigma over the
 // thickness points (plane stress) and 1/2 Q^2 / (k G t) of the transverse shear, times each
 // element's area at the current coordinates.
-double stress_energy(const sf::Model& model, const sf::SolutionState& s, double young,
-                     double poisson) {
+double stress_energy(const sf::Model& model, const sf::SolutionState& s, double e_modulus,
+                     double nu) {
   const sf::ShellPart& part = model.blank.part;
-  const sf::Mat3 compliance = sf::plane_stress_stiffness(young, poisson).inverse();
-  const double ks_g = 5.0 / 6.0 * 0.5 * young / (1.0 + poisson);
+  const sf::Mat3 compliance = sf::plane_stress_stiffness(e_modulus, nu).inverse();
+  const double ks_g = 5.0 / 6.0 * 0.5 * e_modulus / (1.0 + nu);
   const int np = part.section.n_points;
   double energy = 0.0;
   for (Eigen::Index e = 0; e < part.quads.cols(); ++e) {
