@@ -316,15 +316,15 @@ double stress_energy(const sf::Model& model, const sf::SolutionState& s, double 
     const double area = 0.5 * (xe.col(2) - xe.col(0)).cross(xe.col(3) - xe.col(1)).norm();
     const std::size_t el = static_cast<std::size_t>(e);
     const double t = s.shell.thickness[el];
-    double density = 0.0;  // per unit area
+    double per_area = 0.0;
     for (int k = 0; k < np; ++k) {
       const std::size_t i = el * static_cast<std::size_t>(np) + static_cast<std::size_t>(k);
       const sf::Vec3 sigma(s.shell.sxx[i], s.shell.syy[i], s.shell.sxy[i]);
-      density += 0.5 * part.section.weight[k] * 0.5 * t * sigma.dot(compliance * sigma);
+      per_area += 0.5 * part.section.weight[k] * 0.5 * t * sigma.dot(compliance * sigma);
     }
-    density +=
+    per_area +=
         0.5 * t * (s.shell.sxz[el] * s.shell.sxz[el] + s.shell.syz[el] * s.shell.syz[el]) / ks_g;
-    energy += area * density;
+    energy += area * per_area;
   }
   return energy;
 }
