@@ -201,8 +201,8 @@ const std::vector<int>& group_nodes(const Context& context, const Owner& owner) 
         std::acos(std::min(1.0, cosine)) * 180.0 / std::numbers::pi, context.describe(o),
         held ? "holds" : "prescribes");
   }
-  throw InputError(fmt::format("{}: {}.dof: {} prescribes {} of {}, {}", context.where(p), p.name,
-                               p.name, p.dof, context.node_name(node), why));
+  throw InputError(fmt::format("{}: {}: prescribes {} of {}, {}", context.where(p), p.name, p.dof,
+                               context.node_name(node), why));
 }
 
 /// Checks that every prescribed direction is perpendicular to the held ones and to the other
@@ -253,10 +253,32 @@ std::vector<Vec3> check_directions(const Context& context, int node,
   return basis;
 }
 
-/// Whether every direction lies along an axis of `axes`; if so, `out` says which.
-bool fits_frame(const Mat3& axes, const std::vector<NodeDirection>& directions, SpaceFrame& out) {
+/// Whether `axes` fits the directions: each axis lies in the held directions' span or
+/// perpendicular to it (so the span is that of some axes), and each prescribed direction lies
+/// along an axis outside it; if so, `out` says which axes are held and which prescribed.
+bool fits_frame(const Mat3& axes, const std::vector<Vec3>& held_basis,
+                const std::vector<NodeDirection>& directions, SpaceFrame& out) {
   out = SpaceFrame{.axes = axes, .global = false, .held = 0, .prescribed = {}};
+  int held_count = 0;
+  for (int k = 0; k < 3; ++k) {
+    double in_span = 0.0;
+    for (const Vec3& q : held_basis) {
+      in_span += q.dot(axes.col(k)) * q.dot(axes.col(k));
+    }
+    if (in_span > 1.0 - kAlongAxis) {
+      out.held |= 1u << k;
+      ++held_count;
+    } else if (in_span > kAlongAxis) {
+      return false;  // neither in the span nor perpendicular to it
+    }
+  }
+  if (held_count != static_cast<int>(held_basis.size())) {
+    return false;
+  }
   for (const NodeDirection& d : directions) {
+    if (d.prescription < 0) {
+      continue;
+    }
     int along = -1;
     double cosine = 0.0;
     for (int k = 0; k < 3 && along < 0; ++k) {
@@ -268,11 +290,7 @@ bool fits_frame(const Mat3& axes, const std::vector<NodeDirection>& directions, 
     if (along < 0) {
       return false;
     }
-    if (d.prescription < 0) {
-      out.held |= 1u << along;
-    } else {
-      out.prescribed.push_back({d.prescription, d.position, along, cosine > 0.0 ? 1.0 : -1.0});
-    }
+    out.prescribed.push_back({d.prescription, d.position, along, cosine > 0.0 ? 1.0 : -1.0});
   }
   return true;
 }
@@ -330,12 +348,13 @@ SpaceFrame resolve_space(const Context& context, int node,
                          const std::vector<int>& owners_here) {
   const std::vector<Vec3> held_basis = check_directions(context, node, directions);
   SpaceFrame out;
-  if (fits_frame(Mat3::Identity(), directions, out)) {
+  if (fits_frame(Mat3::Identity(), held_basis, directions, out)) {
     out.global = true;
     return out;
   }
   for (const int o : owners_here) {
-    if (fits_frame(context.owners[static_cast<std::size_t>(o)].frame, directions, out)) {
+    if (fits_frame(context.owners[static_cast<std::size_t>(o)].frame, held_basis, directions,
+                   out)) {
       return out;
     }
   }
