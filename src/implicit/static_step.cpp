@@ -99,6 +99,7 @@ class NewtonSolver {
     const int max_iterations = options_.linear ? 1 : c.max_iterations;
     // A divergence is measured against the larger of the initial residual and the force the
     // prescribed increment causes (a step driven by prescriptions alone starts in equilibrium).
+    pending_start_ = pending_;
     const double initial_norm =
         std::max({current_.residual_norm, pending_ * predictor_norm_, 1e-300});
     for (int it = 0; it < max_iterations && !converged; ++it) {
@@ -165,17 +166,28 @@ class NewtonSolver {
       external += 0.5 * ((f_ext_start_.col(i) + current_.f_ext.col(i)).dot(current_.du.col(i)) +
                          (m_ext_start_.col(i) + current_.m_ext.col(i)).dot(current_.dtheta.col(i)));
     }
+    if (options_.linear) {
+      compute_linear_reactions();
+    }
     const double prescribed = prescribed_increment_work();
     report_.external_work += external + prescribed;
     report_.prescribed_work += prescribed;
+    report_.force_scale =
+        std::max({report_.force_scale, current_.reference, pending_start_ * predictor_norm_});
     body_.commit(current_.du, current_.state);
     return true;
   }
 
   const StiffnessSolver& solver() const { return solver_; }
 
-  /// The last converged state's f_int - f_ext and m_int - m_ext into the report.
+  /// The last converged state's f_int - f_ext and m_int - m_ext into the report (a linear
+  /// analysis's, linear, from run_increment).
   void store_reactions(StaticStepReport& report) const {
+    if (options_.linear) {
+      report.reaction_force = linear_force_;
+      report.reaction_moment = linear_moment_;
+      return;
+    }
     report.reaction_force = current_.f_int - current_.f_ext;
     report.reaction_moment = current_.m_int - current_.m_ext;
   }
@@ -285,18 +297,55 @@ class NewtonSolver {
     predictor_norm_ = std::sqrt(norm);
   }
 
+  // A linear analysis's reactions, linear in the increment: f_int(0) + K du - f_ext(x), K du
+  // by a central difference along du (the forces of a linear analysis lie on x + du / 2, which
+  // adds terms of second order: stress times rotation), the loads on the initial geometry. Before
+  // the increment is committed.
+  void compute_linear_reactions() {
+    const double largest_translation = current_.du.cwiseAbs().maxCoeff();
+    const double largest_rotation = current_.dtheta.cwiseAbs().maxCoeff();
+    double eps = 1.0;
+    if (largest_translation > 0.0) {
+      eps = std::min(eps, 1e-6 * length_ / largest_translation);
+    }
+    if (largest_rotation > 0.0) {
+      eps = std::min(eps, 1e-6 / largest_rotation);
+    }
+    const Eigen::Index n = body_.node_count();
+    candidate_.du = eps * current_.du;
+    candidate_.dtheta = eps * current_.dtheta;
+    body_.compute_forces(candidate_.du, candidate_.dtheta, f_plus_, m_plus_, candidate_.state,
+                         true);
+    candidate_.du = -eps * current_.du;
+    candidate_.dtheta = -eps * current_.dtheta;
+    body_.compute_forces(candidate_.du, candidate_.dtheta, linear_force_, linear_moment_,
+                         candidate_.state, true);
+    linear_force_ = (0.5 / eps) * (f_plus_ - linear_force_);
+    linear_moment_ = (0.5 / eps) * (m_plus_ - linear_moment_);
+    candidate_.du.setZero(3, n);
+    candidate_.dtheta.setZero(3, n);
+    body_.compute_forces(candidate_.du, candidate_.dtheta, f_plus_, m_plus_, candidate_.state,
+                         true);
+    load_.at(lambda_end_, body_.x(), candidate_.f_ext, candidate_.m_ext);
+    linear_force_ += f_plus_ - candidate_.f_ext;
+    linear_moment_ += m_plus_ - candidate_.m_ext;
+  }
+
   // N mm, the work of the reactions on the prescribed increment, by the trapezoidal rule: the
-  // reaction is f_int - f_ext (what the support adds to the loads), at the start and the end.
+  // reaction is f_int - f_ext (what the support adds to the loads), at the start and the end (a
+  // linear analysis's end reactions from compute_linear_reactions).
   double prescribed_increment_work() const {
     if (!load_.prescribed || (prescribed_du_.isZero(0.0) && prescribed_dtheta_.isZero(0.0))) {
       return 0.0;
     }
     double work = 0.0;
     for (Eigen::Index i = 0; i < prescribed_du_.cols(); ++i) {
-      const Vec3 r_force = (f_int_start_.col(i) - f_ext_start_.col(i)) +
-                           (current_.f_int.col(i) - current_.f_ext.col(i));
-      const Vec3 r_moment = (m_int_start_.col(i) - m_ext_start_.col(i)) +
-                            (current_.m_int.col(i) - current_.m_ext.col(i));
+      const Vec3 end_force = options_.linear ? Vec3(linear_force_.col(i))
+                                             : Vec3(current_.f_int.col(i) - current_.f_ext.col(i));
+      const Vec3 end_moment = options_.linear ? Vec3(linear_moment_.col(i))
+                                              : Vec3(current_.m_int.col(i) - current_.m_ext.col(i));
+      const Vec3 r_force = (f_int_start_.col(i) - f_ext_start_.col(i)) + end_force;
+      const Vec3 r_moment = (m_int_start_.col(i) - m_ext_start_.col(i)) + end_moment;
       work += 0.5 * (r_force.dot(prescribed_du_.col(i)) + r_moment.dot(prescribed_dtheta_.col(i)));
     }
     return work;
@@ -473,6 +522,8 @@ class NewtonSolver {
   VectorX predictor_force_;
   double predictor_norm_ = 0.0;
   double pending_ = 0.0;
+  double pending_start_ = 0.0;  // pending_ at the increment's start (1 with a prescription)
+  Matrix3X linear_force_, linear_moment_;  // a linear analysis's reactions (N, N mm)
   std::vector<int> diagonal_;  // positions of the translations' diagonal entries in stiffness_
   double spring_ = 0.0;        // N/mm, stabilising springs (StaticStepOptions::stabilization)
   double lambda_end_ = 0.0;    // the load factor the increment being solved ends at

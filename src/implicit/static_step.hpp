@@ -83,8 +83,12 @@ struct StaticStepReport {
   /// factor 1 (the last one is taken without springs: increments.back().stabilization == 0).
   int settling_increments = 0;
   /// Per node, f_int - f_ext (N) and m_int - m_ext (N mm) at the last converged state: the
-  /// reactions where a degree of freedom is held or prescribed, the residual elsewhere.
+  /// reactions where a degree of freedom is held or prescribed, the residual elsewhere. A linear
+  /// analysis gives them linear: f_int(0) + K du - f_ext with the loads on the initial geometry.
   Matrix3X reaction_force, reaction_moment;
+  /// N, the largest force the step measured against: the reference forces of its increments and
+  /// the forces its prescribed increments cause (K_fp dp).
+  double force_scale = 0.0;
 };
 
 /// A static step as the run summary reports it.
