@@ -39,6 +39,10 @@ struct NodalConstraints {
     }
     zero_framed_components(node, bits, v, omega);
   }
+  /// One node's held and prescribed bits together (prescribed may be empty: none).
+  unsigned constrained_bits(std::size_t node) const {
+    return static_cast<unsigned>(mask[node]) | (prescribed.empty() ? 0u : prescribed[node]);
+  }
   /// Per node, the held and the prescribed bits together: the degrees of freedom an implicit
   /// step does not solve for.
   std::vector<unsigned char> held_or_prescribed() const;

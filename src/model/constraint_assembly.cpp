@@ -363,6 +363,35 @@ SpaceFrame resolve_space(const Context& context, int node,
 
 }  // namespace
 
+std::string describe_boundary(const BoundaryConfig& b) {
+  using Type = BoundaryConfig::Type;
+  const auto vector = [](const std::array<double, 3>& v) {
+    return fmt::format("({:.3g}, {:.3g}, {:.3g})", v[0], v[1], v[2]);
+  };
+  const std::string axes =
+      b.axes ? fmt::format(" (axes x {}, y {})", vector(b.axes->x), vector(b.axes->y)) : "";
+  const std::string normal =
+      b.normal ? vector(*b.normal) : fmt::format("{}{}", "xyz"[b.axis], axes);
+  switch (b.type) {
+    case Type::fixed:
+      return "fixed (all six degrees of freedom held)";
+    case Type::symmetry:
+      return fmt::format("symmetry plane normal to {}", normal);
+    case Type::diaphragm:
+      return fmt::format("diaphragm normal to {}: the two in-plane translations held", normal);
+    case Type::hold: {
+      std::string names;
+      for (int k = 0; k < 6; ++k) {
+        if (b.hold[static_cast<std::size_t>(k)]) {
+          names += fmt::format("{}{}", names.empty() ? "" : ", ", kDofNames[k]);
+        }
+      }
+      return fmt::format("{} held{}", names, axes);
+    }
+  }
+  return "";
+}
+
 Mat3 make_plane_frame(const Vec3& normal) {
   const Vec3 n = normal.normalized();
   int least = 0;

@@ -6,6 +6,7 @@
 // global axes, it keeps the global axes (no frame); else it takes the frame of an entry whose
 // axes contain them all, or one built from them (held directions first, then the prescribed
 // ones). docs/case-file.md, "[[boundary]]".
+#include <string>
 #include <vector>
 
 #include "io/case_config.hpp"
@@ -20,6 +21,10 @@ Mat3 make_plane_frame(const Vec3& normal);
 
 /// The frame of AxesConfig: columns x, y (as read: unit, perpendicular) and x cross y.
 Mat3 make_frame(const AxesConfig& axes);
+
+/// A [[boundary]] entry in words, e.g. "diaphragm normal to (0.866, 0.5, 0): the two in-plane
+/// translations held", for `sheetform check`.
+std::string describe_boundary(const BoundaryConfig& boundary);
 
 /// Sets model.constraints (masks and node frames) and model.prescribed_motions from the case.
 /// A prescribed displacement without a curve ramps from 0 at time 0 to its value at `end_time`

@@ -77,7 +77,8 @@ double reset_velocities(const Model& model, SolutionState& s) {
   const NodalConstraints& constraints = model.constraints;
   double after = 0.0;
   for (Eigen::Index i = 0; i < s.v.cols(); ++i) {
-    const unsigned prescribed = constraints.prescribed[static_cast<std::size_t>(i)];
+    const unsigned prescribed =
+        constraints.prescribed.empty() ? 0u : constraints.prescribed[static_cast<std::size_t>(i)];
     if (prescribed == 0) {
       s.v.col(i).setZero();
       s.omega.col(i).setZero();

@@ -44,8 +44,7 @@ void half_kick_rate(const Model& model, const SolutionState& s, Eigen::Index i, 
   u = (1.0 / mass) * (s.f_ext.col(i) + s.f_contact.col(i) - s.f_int.col(i)) - c * s.v.col(i);
   u_omega = (1.0 / inertia) * (s.m_ext.col(i) - s.m_int.col(i)) - c * s.omega.col(i);
   const NodalConstraints& constraints = model.constraints;
-  const unsigned held = static_cast<unsigned>(constraints.mask[static_cast<std::size_t>(i)]) |
-                        constraints.prescribed[static_cast<std::size_t>(i)];
+  const unsigned held = constraints.constrained_bits(static_cast<std::size_t>(i));
   if (held != 0) {
     constraints.zero_components(static_cast<int>(i), held, u, u_omega);
   }

@@ -36,8 +36,7 @@ void compute_reactions(const Model& model, const SolutionState& s, Matrix3X& for
   const NodalConstraints& c = model.constraints;
   const double damping = s.dt > 0.0 ? model.loads.damping : 0.0;
   for (Eigen::Index i = 0; i < n; ++i) {
-    const unsigned bits = static_cast<unsigned>(c.mask[static_cast<std::size_t>(i)]) |
-                          c.prescribed[static_cast<std::size_t>(i)];
+    const unsigned bits = c.constrained_bits(static_cast<std::size_t>(i));
     if (bits == 0) {
       continue;
     }

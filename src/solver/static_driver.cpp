@@ -114,6 +114,15 @@ RunSummary run_static(Model& model, const RunOptions& options, SolutionState* fi
   load.at = [&](double lambda, const Matrix3X& x, Matrix3X& f, Matrix3X& m) {
     compute_external_forces(model, lambda * end_time, x, f, m);
   };
+  for (const PrescribedMotion& p : model.prescribed_motions) {
+    if (p.kind != PrescribedMotion::Kind::displacement) {
+      // read_case refuses it; a configuration made in code may not have been read.
+      throw InputError(
+          fmt::format("{}: {}: a static analysis prescribes displacements and "
+                      "rotations, not velocities",
+                      model.config.file.string(), p.entry));
+    }
+  }
   if (!model.prescribed_motions.empty()) {
     // A prescribed displacement without a curve ramps from 0 over 0..end_time (build_model).
     load.prescribed = [&](double lambda, Matrix3X& du, Matrix3X& dtheta) {
