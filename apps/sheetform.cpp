@@ -19,6 +19,7 @@
 #include "io/case_config.hpp"
 #include "io/gmsh_reader.hpp"
 #include "model/build_model.hpp"
+#include "model/constraint_assembly.hpp"
 #include "solver/explicit_driver.hpp"
 #include "solver/frame_output.hpp"
 #include "solver/static_driver.hpp"
@@ -125,9 +126,18 @@ void print_model(const sf::Model& model) {
   }
   for (const sf::BoundaryConfig& b : model.config.boundaries) {
     sf::log_info("Boundary    '{}': {} nodes, {}\n", b.group, blank.group(b.group).nodes.size(),
-                 b.type == sf::BoundaryConfig::Type::fixed
-                     ? std::string("fixed")
-                     : fmt::format("symmetry plane normal to {}", "xyz"[b.axis]));
+                 sf::describe_boundary(b));
+  }
+  for (const sf::PrescribedMotion& p : model.prescribed_motions) {
+    sf::log_info("Prescribed  '{}': {} nodes, {} {} along ({:.3g}, {:.3g}, {:.3g}) ({})\n", p.group,
+                 p.nodes.size(), p.rotation ? "rotation" : "translation",
+                 p.kind == sf::PrescribedMotion::Kind::displacement ? "displacement" : "velocity",
+                 p.direction.x(), p.direction.y(), p.direction.z(), p.entry);
+  }
+  if (model.constraints.frames.count() > 0) {
+    const int framed = model.constraints.frames.count();
+    sf::log_info("Node axes   {} node{} in axes of {} own (from the constraints there)\n", framed,
+                 framed == 1 ? "" : "s", framed == 1 ? "its" : "their");
   }
   for (std::size_t i = 0; i < model.tools.size(); ++i) {
     const sf::Tool& t = model.tools[i];

@@ -2,8 +2,8 @@
 
 namespace sf {
 
-DofMap::DofMap(const std::vector<unsigned char>& held)
-    : held_(held), equation_(6 * held.size(), -1) {
+DofMap::DofMap(const std::vector<unsigned char>& held, NodeFrames frames)
+    : held_(held), frames_(std::move(frames)), equation_(6 * held.size(), -1) {
   for (std::size_t node = 0; node < held.size(); ++node) {
     for (int dof = 0; dof < 6; ++dof) {
       if ((held[node] & (1u << dof)) == 0) {
@@ -13,6 +13,10 @@ DofMap::DofMap(const std::vector<unsigned char>& held)
       }
     }
   }
+}
+
+std::string DofMap::dof_name(int node, int dof) const {
+  return frames_.has(node) ? std::string(kDofNames[dof]) + " (node axes)" : kDofNames[dof];
 }
 
 }  // namespace sf

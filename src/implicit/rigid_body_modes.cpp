@@ -42,6 +42,21 @@ Row6 mode_row(const Vec3& r, int dof, double length) {
   return row;
 }
 
+/// The row of R for degree of freedom `dof` of node `node` at offset r: along the node's own axis
+/// where it has a frame (rows are linear in the direction).
+Row6 node_row(const NodeFrames& frames, int node, const Vec3& r, int dof, double length) {
+  if (!frames.has(node)) {
+    return mode_row(r, dof, length);
+  }
+  const Vec3 axis = frames.axis(node, dof);
+  const int first = dof < 3 ? 0 : 3;
+  Row6 row = Row6::Zero();
+  for (int c = 0; c < 3; ++c) {
+    row += axis[c] * mode_row(r, first + c, length);
+  }
+  return row;
+}
+
 /// v with entries below `tiny` (absolute) set to 0, -0 included.
 double clean(double v, double tiny) {
   return std::abs(v) <= tiny ? 0.0 : v;
@@ -126,8 +141,8 @@ Eigen::MatrixXd reduced_row_echelon(Eigen::MatrixXd m) {
 
 }  // namespace
 
-RigidBodyModes find_free_rigid_body_modes(const Matrix3X& x,
-                                          const std::vector<unsigned char>& held) {
+RigidBodyModes find_free_rigid_body_modes(const Matrix3X& x, const std::vector<unsigned char>& held,
+                                          const NodeFrames& frames) {
   const Eigen::Index nodes = x.cols();
   if (nodes == 0) {
     throw std::invalid_argument("find_free_rigid_body_modes: no nodes");
@@ -135,6 +150,10 @@ RigidBodyModes find_free_rigid_body_modes(const Matrix3X& x,
   if (held.size() != static_cast<std::size_t>(nodes)) {
     throw std::invalid_argument(
         fmt::format("find_free_rigid_body_modes: {} masks for {} nodes", held.size(), nodes));
+  }
+  if (frames.node_count() != 0 && frames.node_count() != nodes) {
+    throw std::invalid_argument(fmt::format(
+        "find_free_rigid_body_modes: frames for {} nodes, {} nodes", frames.node_count(), nodes));
   }
   if (!x.allFinite()) {
     throw std::invalid_argument("find_free_rigid_body_modes: a coordinate is not finite");
@@ -150,7 +169,7 @@ RigidBodyModes find_free_rigid_body_modes(const Matrix3X& x,
     const unsigned mask = held[static_cast<std::size_t>(i)];
     for (int dof = 0; dof < 6; ++dof) {
       if (mask & (1u << dof)) {
-        const Row6 row = mode_row(x.col(i) - centroid, dof, length);
+        const Row6 row = node_row(frames, static_cast<int>(i), x.col(i) - centroid, dof, length);
         g.noalias() += row.transpose() * row;
       }
     }
@@ -205,7 +224,7 @@ RigidBodyModes find_free_rigid_body_modes(const Matrix3X& x,
   for (std::size_t c = 0; c < candidates.size(); ++c) {
     const auto [node, dof] = candidates[c];
     components.row(static_cast<Eigen::Index>(c)) =
-        mode_row(x.col(node) - centroid, dof, length) * free_basis;
+        node_row(frames, node, x.col(node) - centroid, dof, length) * free_basis;
   }
   // At least hold_norm2_tolerance, and far above the free test of the support with the holds
   // added, whose largest eigenvalue is at most largest + 12 (6 rows of squared norm <= 2).

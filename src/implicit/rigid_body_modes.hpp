@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "model/node_frames.hpp"
 
 namespace sf {
 
@@ -33,7 +34,10 @@ struct RigidBodyModes {
 /// when the held degrees of freedom hold it with an eigenvalue of R_h^T R_h below 1e-12 of the
 /// largest (or of 1), i.e. when its support has a lever arm below about 1e-6 L.
 /// docs/static-linear-algebra.md describes the algorithm.
-RigidBodyModes find_free_rigid_body_modes(const Matrix3X& x,
-                                          const std::vector<unsigned char>& held);
+/// frames: the nodes whose masks refer to their own axes (a held bit k of such a node holds the
+/// component along its axis k); default: every node in the global axes. The added holds are then
+/// in each node's axes too.
+RigidBodyModes find_free_rigid_body_modes(const Matrix3X& x, const std::vector<unsigned char>& held,
+                                          const NodeFrames& frames = {});
 
 }  // namespace sf

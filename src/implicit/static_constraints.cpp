@@ -10,9 +10,10 @@ namespace sf {
 
 StaticConstraints make_static_constraints(const Matrix3X& x, std::vector<unsigned char> held,
                                           ImplicitConfig::RigidBodyModes mode,
-                                          const std::function<std::string(int)>& node_name) {
+                                          const std::function<std::string(int)>& node_name,
+                                          const NodeFrames& frames) {
   StaticConstraints c;
-  const RigidBodyModes modes = find_free_rigid_body_modes(x, held);
+  const RigidBodyModes modes = find_free_rigid_body_modes(x, held, frames);
   c.free_modes = modes.free_modes;
   std::string listed;
   for (const std::string& m : modes.free_modes) {
@@ -27,8 +28,10 @@ StaticConstraints make_static_constraints(const Matrix3X& x, std::vector<unsigne
   }
   for (const auto& [node, dof] : modes.added) {
     held[static_cast<std::size_t>(node)] |= static_cast<unsigned char>(1u << dof);
-    c.added.push_back(fmt::format("{} {}", node_name(node), kDofNames[dof]));
+    c.added.push_back(fmt::format("{} {}{}", node_name(node), kDofNames[dof],
+                                  frames.has(node) ? " (node axes)" : ""));
   }
+  c.added_holds = modes.added;
   if (!c.added.empty()) {
     std::string holds;
     for (const std::string& h : c.added) {
@@ -36,7 +39,7 @@ StaticConstraints make_static_constraints(const Matrix3X& x, std::vector<unsigne
     }
     log_info("  rigid-body modes left free by the constraints: {}; held: {}\n", listed, holds);
   }
-  c.dofs = DofMap(held);
+  c.dofs = DofMap(held, frames);
   return c;
 }
 

@@ -60,6 +60,9 @@ class NewtonSolver {
       p->residual.setZero(dofs.equation_count());
     }
     delta_.setZero(dofs.equation_count());
+    predictor_force_.setZero(dofs.equation_count());
+    prescribed_du_.setZero(3, n);
+    prescribed_dtheta_.setZero(3, n);
     report_.colours = tangent_.colour_count();
     report_.equations = dofs.equation_count();
   }
@@ -74,8 +77,14 @@ class NewtonSolver {
     const ImplicitConfig& c = options_.controls;
     current_.du.setZero();
     current_.dtheta.setZero();
+    set_prescribed_increment(lambda_start, lambda_end);
     try {
       evaluate(current_, lambda_end);
+      if (pending_ > 0.0) {
+        f_int_start_ = current_.f_int;
+        m_int_start_ = current_.m_int;
+        compute_predictor_force();
+      }
     } catch (const InstabilityError& e) {
       record.failure = e.what();
       return false;
@@ -85,10 +94,14 @@ class NewtonSolver {
     m_ext_start_.resize(3, body_.node_count());
     load_.at(lambda_start, body_.x(), f_ext_start_, m_ext_start_);
     record.initial_residual = current_.residual_norm / current_.reference;
-    bool converged =
-        !options_.linear && current_.residual_norm <= c.force_tolerance * current_.reference;
+    bool converged = !options_.linear && pending_ == 0.0 &&
+                     current_.residual_norm <= c.force_tolerance * current_.reference;
     const int max_iterations = options_.linear ? 1 : c.max_iterations;
-    const double initial_norm = std::max(current_.residual_norm, 1e-300);
+    // A divergence is measured against the larger of the initial residual and the force the
+    // prescribed increment causes (a step driven by prescriptions alone starts in equilibrium).
+    pending_start_ = pending_;
+    const double initial_norm =
+        std::max({current_.residual_norm, pending_ * predictor_norm_, 1e-300});
     for (int it = 0; it < max_iterations && !converged; ++it) {
       const auto tangent_start = Clock::now();
       tangent_.compute(body_, current_.du, current_.dtheta, stiffness_);
@@ -96,8 +109,11 @@ class NewtonSolver {
       report_.tangent_seconds += seconds_since(tangent_start);
       report_.tangent_evaluations += tangent_.evaluations_per_tangent();
       factorize_or_throw();
-      solved_for_ = current_.residual;
-      solver_.solve(std::span<const double>(current_.residual.data(), current_.residual.size()),
+      // K_ff delta = r - K_fp dp for the part dp of the prescribed increment not yet imposed: the
+      // free degrees of freedom follow the prescribed ones in the same solve (a consistent
+      // predictor), instead of one element taking the whole prescribed step alone.
+      solved_for_ = current_.residual - pending_ * predictor_force_;
+      solver_.solve(std::span<const double>(solved_for_.data(), solved_for_.size()),
                     std::span<double>(delta_.data(), delta_.size()));
       NewtonIteration iteration;
       double step = 1.0;
@@ -112,6 +128,7 @@ class NewtonSolver {
         return false;
       }
       std::swap(current_, candidate_);
+      pending_ = step >= 1.0 ? 0.0 : pending_ * (1.0 - step);  // the prescribed part taken
       iteration.step = step;
       iteration.residual = current_.residual_norm / current_.reference;
       const double increment_norm = displacement_norm(current_.du, current_.dtheta);
@@ -124,7 +141,7 @@ class NewtonSolver {
                                      it + 1, iteration.residual);
         return false;
       }
-      converged = options_.linear || (iteration.residual <= c.force_tolerance &&
+      converged = options_.linear || (pending_ == 0.0 && iteration.residual <= c.force_tolerance &&
                                       iteration.correction <= c.displacement_tolerance);
     }
     if (!converged) {
@@ -149,12 +166,31 @@ class NewtonSolver {
       external += 0.5 * ((f_ext_start_.col(i) + current_.f_ext.col(i)).dot(current_.du.col(i)) +
                          (m_ext_start_.col(i) + current_.m_ext.col(i)).dot(current_.dtheta.col(i)));
     }
-    report_.external_work += external;
+    if (options_.linear) {
+      compute_linear_reactions();
+    }
+    const double prescribed = prescribed_increment_work();
+    report_.external_work += external + prescribed;
+    report_.prescribed_work += prescribed;
+    report_.force_scale =
+        std::max({report_.force_scale, current_.reference, pending_start_ * predictor_norm_});
     body_.commit(current_.du, current_.state);
     return true;
   }
 
   const StiffnessSolver& solver() const { return solver_; }
+
+  /// The last converged state's f_int - f_ext and m_int - m_ext into the report (a linear
+  /// analysis's, linear, from run_increment).
+  void store_reactions(StaticStepReport& report) const {
+    if (options_.linear) {
+      report.reaction_force = linear_force_;
+      report.reaction_moment = linear_moment_;
+      return;
+    }
+    report.reaction_force = current_.f_int - current_.f_ext;
+    report.reaction_moment = current_.m_int - current_.m_ext;
+  }
 
   /// N/mm, the stabilising springs on every free translation, anchored at the increment's start.
   void set_stabilization(double k) { spring_ = k; }
@@ -178,24 +214,141 @@ class NewtonSolver {
     for (int eq = 0; eq < dofs_.equation_count(); ++eq) {
       const int node = dofs_.node_of(eq);
       const int dof = dofs_.dof_of(eq);
-      const double r = dof < 3 ? p.f_ext(dof, node) - p.f_int(dof, node)
-                               : p.m_ext(dof - 3, node) - p.m_int(dof - 3, node);
-      p.residual[eq] = dof < 3 ? r - spring_ * p.du(dof, node) : r;
+      // Components along the node's axes (its own where it has a frame).
+      const double r = dofs_.component(node, dof, p.f_ext, p.m_ext) -
+                       dofs_.component(node, dof, p.f_int, p.m_int);
+      p.residual[eq] = dof < 3 ? r - spring_ * dofs_.component(node, dof, p.du, p.dtheta) : r;
       norm += dof < 3 ? p.residual[eq] * p.residual[eq] : r * r / (length_ * length_);
     }
     p.residual_norm = std::sqrt(norm);
   }
 
-  // candidate_ = current_ + s delta, evaluated at the increment's end load.
+  // candidate_ = current_ + s (delta + the prescribed increment not yet imposed), evaluated at the
+  // increment's end load.
   void take_step(double s) {
     candidate_.du = current_.du;
     candidate_.dtheta = current_.dtheta;
     for (int eq = 0; eq < dofs_.equation_count(); ++eq) {
-      const int node = dofs_.node_of(eq);
-      const int dof = dofs_.dof_of(eq);
-      (dof < 3 ? candidate_.du(dof, node) : candidate_.dtheta(dof - 3, node)) += s * delta_[eq];
+      dofs_.add(dofs_.node_of(eq), dofs_.dof_of(eq), s * delta_[eq], candidate_.du,
+                candidate_.dtheta);
+    }
+    if (pending_ > 0.0) {
+      candidate_.du += (s * pending_) * prescribed_du_;
+      candidate_.dtheta += (s * pending_) * prescribed_dtheta_;
     }
     evaluate(candidate_, lambda_end_);
+  }
+
+  // The prescribed displacements' change over the increment (prescribed_du_, prescribed_dtheta_);
+  // pending_ = 1 when there is one (it is imposed with the first Newton step), else 0.
+  void set_prescribed_increment(double lambda_start, double lambda_end) {
+    pending_ = 0.0;
+    if (!load_.prescribed) {
+      return;
+    }
+    prescribed_du_.setZero();
+    prescribed_dtheta_.setZero();
+    load_.prescribed(lambda_end, prescribed_du_, prescribed_dtheta_);
+    start_du_.setZero(3, body_.node_count());
+    start_dtheta_.setZero(3, body_.node_count());
+    load_.prescribed(lambda_start, start_du_, start_dtheta_);
+    prescribed_du_ -= start_du_;
+    prescribed_dtheta_ -= start_dtheta_;
+    if (prescribed_du_.cwiseAbs().maxCoeff() > 0.0 ||
+        prescribed_dtheta_.cwiseAbs().maxCoeff() > 0.0) {
+      pending_ = 1.0;
+    }
+  }
+
+  // K_fp dp over the free equations: the derivative of the internal forces along the prescribed
+  // increment dp, by a central difference at the increment's start (a step of 1e-6 x the length
+  // scale for the largest translation, 1e-6 rad for the largest rotation), into predictor_force_.
+  void compute_predictor_force() {
+    const double largest_translation = prescribed_du_.cwiseAbs().maxCoeff();
+    const double largest_rotation = prescribed_dtheta_.cwiseAbs().maxCoeff();
+    double eps = std::numeric_limits<double>::infinity();
+    if (largest_translation > 0.0) {
+      eps = std::min(eps, 1e-6 * length_ / largest_translation);
+    }
+    if (largest_rotation > 0.0) {
+      eps = std::min(eps, 1e-6 / largest_rotation);
+    }
+    const bool small_strain = options_.linear;
+    candidate_.du = current_.du + eps * prescribed_du_;
+    candidate_.dtheta = current_.dtheta + eps * prescribed_dtheta_;
+    body_.compute_forces(candidate_.du, candidate_.dtheta, candidate_.f_int, candidate_.m_int,
+                         candidate_.state, small_strain);
+    f_plus_ = candidate_.f_int;
+    m_plus_ = candidate_.m_int;
+    candidate_.du = current_.du - eps * prescribed_du_;
+    candidate_.dtheta = current_.dtheta - eps * prescribed_dtheta_;
+    body_.compute_forces(candidate_.du, candidate_.dtheta, candidate_.f_int, candidate_.m_int,
+                         candidate_.state, small_strain);
+    double norm = 0.0;
+    for (int eq = 0; eq < dofs_.equation_count(); ++eq) {
+      const int node = dofs_.node_of(eq);
+      const int dof = dofs_.dof_of(eq);
+      const double k = (dofs_.component(node, dof, f_plus_, m_plus_) -
+                        dofs_.component(node, dof, candidate_.f_int, candidate_.m_int)) /
+                       (2.0 * eps);
+      predictor_force_[eq] = k;
+      norm += dof < 3 ? k * k : k * k / (length_ * length_);
+    }
+    predictor_norm_ = std::sqrt(norm);
+  }
+
+  // A linear analysis's reactions, linear in the increment: f_int(0) + K du - f_ext(x), K du
+  // by a central difference along du (the forces of a linear analysis lie on x + du / 2, which
+  // adds terms of second order: stress times rotation), the loads on the initial geometry. Before
+  // the increment is committed.
+  void compute_linear_reactions() {
+    const double largest_translation = current_.du.cwiseAbs().maxCoeff();
+    const double largest_rotation = current_.dtheta.cwiseAbs().maxCoeff();
+    double eps = 1.0;
+    if (largest_translation > 0.0) {
+      eps = std::min(eps, 1e-6 * length_ / largest_translation);
+    }
+    if (largest_rotation > 0.0) {
+      eps = std::min(eps, 1e-6 / largest_rotation);
+    }
+    const Eigen::Index n = body_.node_count();
+    candidate_.du = eps * current_.du;
+    candidate_.dtheta = eps * current_.dtheta;
+    body_.compute_forces(candidate_.du, candidate_.dtheta, f_plus_, m_plus_, candidate_.state,
+                         true);
+    candidate_.du = -eps * current_.du;
+    candidate_.dtheta = -eps * current_.dtheta;
+    body_.compute_forces(candidate_.du, candidate_.dtheta, linear_force_, linear_moment_,
+                         candidate_.state, true);
+    linear_force_ = (0.5 / eps) * (f_plus_ - linear_force_);
+    linear_moment_ = (0.5 / eps) * (m_plus_ - linear_moment_);
+    candidate_.du.setZero(3, n);
+    candidate_.dtheta.setZero(3, n);
+    body_.compute_forces(candidate_.du, candidate_.dtheta, f_plus_, m_plus_, candidate_.state,
+                         true);
+    load_.at(lambda_end_, body_.x(), candidate_.f_ext, candidate_.m_ext);
+    linear_force_ += f_plus_ - candidate_.f_ext;
+    linear_moment_ += m_plus_ - candidate_.m_ext;
+  }
+
+  // N mm, the work of the reactions on the prescribed increment, by the trapezoidal rule: the
+  // reaction is f_int - f_ext (what the support adds to the loads), at the start and the end (a
+  // linear analysis's end reactions from compute_linear_reactions).
+  double prescribed_increment_work() const {
+    if (!load_.prescribed || (prescribed_du_.isZero(0.0) && prescribed_dtheta_.isZero(0.0))) {
+      return 0.0;
+    }
+    double work = 0.0;
+    for (Eigen::Index i = 0; i < prescribed_du_.cols(); ++i) {
+      const Vec3 end_force = options_.linear ? Vec3(linear_force_.col(i))
+                                             : Vec3(current_.f_int.col(i) - current_.f_ext.col(i));
+      const Vec3 end_moment = options_.linear ? Vec3(linear_moment_.col(i))
+                                              : Vec3(current_.m_int.col(i) - current_.m_ext.col(i));
+      const Vec3 r_force = (f_int_start_.col(i) - f_ext_start_.col(i)) + end_force;
+      const Vec3 r_moment = (m_int_start_.col(i) - m_ext_start_.col(i)) + end_moment;
+      work += 0.5 * (r_force.dot(prescribed_du_.col(i)) + r_moment.dot(prescribed_dtheta_.col(i)));
+    }
+    return work;
   }
 
   // The line search is a safeguard, not an energy minimisation: thin shells store bending
@@ -264,8 +417,8 @@ class NewtonSolver {
     } catch (const SingularSystemError& e) {
       std::string where = "an equation the solver does not name";
       if (e.equation() >= 0 && e.equation() < dofs_.equation_count()) {
-        where = fmt::format("{} {}", name(dofs_.node_of(e.equation())),
-                            kDofNames[dofs_.dof_of(e.equation())]);
+        const int node = dofs_.node_of(e.equation());
+        where = fmt::format("{} {}", name(node), dofs_.dof_name(node, dofs_.dof_of(e.equation())));
       }
       throw ConvergenceError(fmt::format(
           "the tangent stiffness is singular at {} ({}): the constraints leave a mechanism or a "
@@ -305,7 +458,8 @@ class NewtonSolver {
     for (int eq = 0; eq < dofs_.equation_count(); ++eq) {
       const int dof = dofs_.dof_of(eq);
       if (dof < 3) {
-        norm += du(dof, dofs_.node_of(eq)) * du(dof, dofs_.node_of(eq));
+        const double d = dofs_.component(dofs_.node_of(eq), dof, du, du);
+        norm += d * d;
       }
     }
     return std::sqrt(norm);
@@ -361,6 +515,15 @@ class NewtonSolver {
   VectorX delta_;
   VectorX solved_for_, product_;  // the right-hand side of the last solve, and K delta
   Matrix3X x_trial_, f_ext_start_, m_ext_start_;
+  // Prescribed displacements: the increment's change (along the nodes' axes), the share of it not
+  // yet imposed, K_fp dp over the free equations and its norm, the internal forces at the start.
+  Matrix3X prescribed_du_, prescribed_dtheta_, start_du_, start_dtheta_;
+  Matrix3X f_plus_, m_plus_, f_int_start_, m_int_start_;
+  VectorX predictor_force_;
+  double predictor_norm_ = 0.0;
+  double pending_ = 0.0;
+  double pending_start_ = 0.0;  // pending_ at the increment's start (1 with a prescription)
+  Matrix3X linear_force_, linear_moment_;  // a linear analysis's reactions (N, N mm)
   std::vector<int> diagonal_;  // positions of the translations' diagonal entries in stiffness_
   double spring_ = 0.0;        // N/mm, stabilising springs (StaticStepOptions::stabilization)
   double lambda_end_ = 0.0;    // the load factor the increment being solved ends at
@@ -492,9 +655,10 @@ StaticStepReport solve_static_step(StaticShellBody& body, const DofMap& dofs,
   }
   if (stabilized) {
     settle(newton, options, report);
-    if (on_converged) {
-      on_converged(1.0, body, report);
-    }
+  }
+  newton.store_reactions(report);
+  if (stabilized && on_converged) {
+    on_converged(1.0, body, report);
   }
   report.solver = newton.solver().totals();
   return report;

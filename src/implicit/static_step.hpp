@@ -22,6 +22,11 @@ struct StaticLoad {
   /// length scale); 0 = the larger of the internal force norm at each iteration and the largest
   /// external load norm met so far in the step.
   double reference_force = 0.0;
+  /// Prescribed displacements (mm) and rotations (rad) of held degrees of freedom at lambda, from
+  /// the state the step starts from: adds them to du, dtheta (sized and zeroed by the caller),
+  /// along the nodes' axes. Empty = none: held degrees of freedom stay where they are. Each
+  /// increment imposes the change over it (docs/static-analysis.md, "Prescribed displacements").
+  std::function<void(double lambda, Matrix3X& du, Matrix3X& dtheta)> prescribed;
 };
 
 /// One Newton iteration's record.
@@ -69,12 +74,21 @@ struct StaticStepReport {
   int equations = 0;
   FactorizationStats last_factorization;
   StiffnessSolverTotals solver;
-  double internal_work = 0.0;   ///< N mm, work of the internal forces over the step
-  double external_work = 0.0;   ///< N mm, work of the loads over the step
-  double final_residual = 0.0;  ///< -, relative, of the last converged increment
+  double internal_work = 0.0;  ///< N mm, work of the internal forces over the step
+  /// N mm, work of the loads over the step, and of the reactions on the prescribed displacements
+  double external_work = 0.0;
+  double prescribed_work = 0.0;  ///< N mm, the part of external_work done by those reactions
+  double final_residual = 0.0;   ///< -, relative, of the last converged increment
   /// Stabilisation (StaticStepOptions::stabilization > 0): the settling increments at load
   /// factor 1 (the last one is taken without springs: increments.back().stabilization == 0).
   int settling_increments = 0;
+  /// Per node, f_int - f_ext (N) and m_int - m_ext (N mm) at the last converged state: the
+  /// reactions where a degree of freedom is held or prescribed, the residual elsewhere. A linear
+  /// analysis gives them linear: f_int(0) + K du - f_ext with the loads on the initial geometry.
+  Matrix3X reaction_force, reaction_moment;
+  /// N, the largest force the step measured against: the reference forces of its increments and
+  /// the forces its prescribed increments cause (K_fp dp).
+  double force_scale = 0.0;
 };
 
 /// A static step as the run summary reports it.

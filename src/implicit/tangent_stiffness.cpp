@@ -35,13 +35,12 @@ void TangentStiffness::make_pattern(CscMatrix& k) const {
 
 void TangentStiffness::perturb(int colour, int dof, double step, Matrix3X& du,
                                Matrix3X& dtheta) const {
-  Matrix3X& target = dof < 3 ? du : dtheta;
-  const int c = dof % 3;
+  // Along the node's own axis where it has a frame (DofMap::add).
   for (int a = colouring_.member_start[static_cast<std::size_t>(colour)];
        a < colouring_.member_start[static_cast<std::size_t>(colour) + 1]; ++a) {
     const int node = colouring_.members[static_cast<std::size_t>(a)];
     if (dofs_.equation(node, dof) >= 0) {
-      target(c, node) += step;
+      dofs_.add(node, dof, step, du, dtheta);
     }
   }
 }
@@ -77,8 +76,9 @@ void TangentStiffness::compute(const StaticShellBody& body, const Matrix3X& du,
             if (dofs_.equation(j, r) < 0) {
               continue;
             }
-            const double plus = r < 3 ? f_plus_(r, j) : m_plus_(r - 3, j);
-            const double minus = r < 3 ? f_minus_(r, j) : m_minus_(r - 3, j);
+            // The force's component along node j's axis r (its own axes where it has a frame).
+            const double plus = dofs_.component(j, r, f_plus_, m_plus_);
+            const double minus = dofs_.component(j, r, f_minus_, m_minus_);
             k.values[static_cast<std::size_t>(at++)] = scale * (plus - minus);
           }
         }

@@ -4,7 +4,8 @@
 // colouring are perturbed in one degree of freedom at once: no node's force then depends on two
 // perturbed nodes, so each evaluation pair gives whole columns, and the result equals the
 // assembled element-level difference matrices (docs/static-analysis.md: why differences and not
-// the consistent tangent).
+// the consistent tangent). A node with a frame of its own is perturbed along its axes and its
+// forces are read as components along them (DofMap), so K = T^T K_global T.
 #include "implicit/csc_matrix.hpp"
 #include "implicit/dof_map.hpp"
 #include "implicit/node_graph.hpp"

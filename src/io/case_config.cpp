@@ -9,6 +9,8 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "io/case_config_common.hpp"
+#include "io/case_config_constraints.hpp"
 #include "io/case_config_implicit.hpp"
 #include "io/toml_reader.hpp"
 
@@ -233,43 +235,6 @@ void read_blank(const TomlSection& top, const fs::path& folder, const CaseConfig
   }
 }
 
-void read_curve(const TomlSection& s, std::string_view key, CurveConfig& curve) {
-  const std::string path = s.key_path(key);
-  const toml::node* node = s.find(key);
-  if (!node) {
-    s.fail_missing(key, "an array of [time, value] points");
-  }
-  const auto* points = node->as_array();
-  if (!points || points->empty()) {
-    s.fail_value(key, "a non-empty array of [time, value] points");
-  }
-  for (std::size_t i = 0; i < points->size(); ++i) {
-    const toml::node& point_node = *points->get(i);
-    const std::string point_path = fmt::format("{}[{}]", path, i);
-    const auto* point = point_node.as_array();
-    std::optional<double> t, v;
-    if (point && point->size() == 2) {
-      t = number_of(*point->get(0));
-      v = number_of(*point->get(1));
-    }
-    if (!t || !v || !std::isfinite(*t) || !std::isfinite(*v)) {
-      s.fail_at(point_node, point_path,
-                fmt::format("expected a point [time (s), value] of 2 numbers, got {}",
-                            describe_value(point_node)));
-    }
-    if (*t < 0.0) {
-      s.fail_at(point_node, point_path, fmt::format("expected a time >= 0 (s), got {}", *t));
-    }
-    if (!curve.times.empty() && !(*t > curve.times.back())) {
-      s.fail_at(point_node, point_path,
-                fmt::format("expected times strictly increasing, got {} after {}",
-                            format_toml_number(*t), format_toml_number(curve.times.back())));
-    }
-    curve.times.push_back(*t);
-    curve.values.push_back(*v);
-  }
-}
-
 void read_motion(const TomlSection& s, MotionConfig& motion) {
   using Type = MotionConfig::Type;
   s.check_keys({"type", "direction", "curve", "mass", "damping"});
@@ -407,22 +372,6 @@ void read_contacts(const TomlSection& top, const CaseConfig& config,
   }
 }
 
-void read_boundaries(const TomlSection& top, std::vector<BoundaryConfig>& boundaries) {
-  using Type = BoundaryConfig::Type;
-  for (const TomlSection& s : top.table_array("boundary")) {
-    s.check_keys({"group", "type", "axis"});
-    BoundaryConfig boundary;
-    s.read_string("group", boundary.group, Presence::required);
-    s.read_choice("type", boundary.type, {{"symmetry", Type::symmetry}, {"fixed", Type::fixed}});
-    if (boundary.type == Type::symmetry) {
-      s.read_choice("axis", boundary.axis, {{"x", 0}, {"y", 1}, {"z", 2}}, Presence::required);
-    } else if (s.has("axis")) {
-      s.fail_forbidden("axis", "a fixed boundary holds every direction (axis is for symmetry)");
-    }
-    boundaries.push_back(std::move(boundary));
-  }
-}
-
 void read_draw_ins(const TomlSection& top, std::vector<DrawInConfig>& draw_ins) {
   for (const TomlSection& s : top.table_array("draw_in")) {
     s.check_keys({"name", "group", "direction", "measured", "measured_stroke", "source"});
@@ -443,25 +392,6 @@ void read_draw_ins(const TomlSection& top, std::vector<DrawInConfig>& draw_ins) 
     }
     s.read_string("source", draw_in.source, Presence::optional, true);
     draw_ins.push_back(std::move(draw_in));
-  }
-}
-
-// A three-number array (any values, unlike read_direction); absent leaves the default.
-void read_vector(const TomlSection& s, std::string_view key, std::array<double, 3>& value) {
-  const toml::node* node = s.find(key);
-  if (!node) {
-    return;
-  }
-  const toml::array* array = node->as_array();
-  if (!array || array->size() != 3) {
-    s.fail_value(key, "an array of 3 numbers");
-  }
-  for (std::size_t i = 0; i < 3; ++i) {
-    const std::optional<double> v = number_of(*array->get(i));
-    if (!v || !std::isfinite(*v)) {
-      s.fail_value(key, "an array of 3 finite numbers");
-    }
-    value[i] = *v;
   }
 }
 
@@ -505,40 +435,6 @@ void read_initial_velocities(const TomlSection& top, std::vector<InitialVelocity
     }
     read_vector(s, "velocity", iv.velocity);
     out.push_back(std::move(iv));
-  }
-}
-
-void read_prescribed_velocities(const TomlSection& top,
-                                std::vector<PrescribedVelocityConfig>& out) {
-  for (const TomlSection& s : top.table_array("prescribed_velocity")) {
-    s.check_keys({"group", "velocity", "components", "curve"});
-    PrescribedVelocityConfig pv;
-    s.read_string("group", pv.group, Presence::required);
-    if (!s.has("velocity")) {
-      s.fail_missing("velocity", "an array of 3 numbers (mm/s)");
-    }
-    read_vector(s, "velocity", pv.velocity);
-    if (const toml::node* node = s.find("components")) {
-      const toml::array* array = node->as_array();
-      pv.components = {false, false, false};
-      bool any = false;
-      for (std::size_t i = 0; array && i < array->size(); ++i) {
-        const auto* name = array->get(i)->as_string();
-        const std::string text = name ? name->get() : "";
-        if (text != "x" && text != "y" && text != "z") {
-          s.fail_value("components", "an array of \"x\", \"y\", \"z\"");
-        }
-        pv.components[static_cast<std::size_t>(text[0] - 'x')] = true;
-        any = true;
-      }
-      if (!array || !any) {
-        s.fail_value("components", "a non-empty array of \"x\", \"y\", \"z\"");
-      }
-    }
-    if (s.has("curve")) {
-      read_curve(s, "curve", pv.curve);
-    }
-    out.push_back(std::move(pv));
   }
 }
 
@@ -669,22 +565,22 @@ CaseConfig read_case(const fs::path& case_file) {
 
   const TomlSection top(root, "", file);
   top.check_keys({"title", "units", "blank", "materials", "tools", "contact", "boundary", "draw_in",
-                  "load", "initial_velocity", "prescribed_velocity", "control", "output",
-                  "analysis", "implicit", "springback"});
+                  "load", "initial_velocity", "prescribed_velocity", "prescribed_motion", "control",
+                  "output", "analysis", "implicit", "springback"});
   top.read_string("title", config.title, Presence::optional, true);
   top.read_string("units", config.units);
   read_materials(top, folder, config.materials);
   read_blank(top, folder, config, config.blank);
   read_tools(top, folder, config.tools);
   read_contacts(top, config, config.contacts);
-  read_boundaries(top, config.boundaries);
   read_draw_ins(top, config.draw_ins);
   read_loads(top, config.loads);
   read_initial_velocities(top, config.initial_velocities);
-  read_prescribed_velocities(top, config.prescribed_velocities);
+  read_constraint_sections(top, config);
   read_control(top, config, config.control);
   read_output(top, folder, config.output);
   read_implicit_sections(top, config);
+  check_constraints_for_analysis(top, config);
   return config;
 }
 

@@ -131,13 +131,54 @@ struct ContactConfig {
   double search_margin = 0.0;      ///< mm, the cached search's candidate margin; 0 = its default
 };
 
+/// A local frame of axes given by two vectors (global components, unit length: normalised on
+/// reading): x as given; y the part of the second vector perpendicular to x (made so on reading);
+/// z = x cross y.
+struct AxesConfig {
+  std::array<double, 3> x{1.0, 0.0, 0.0};
+  std::array<double, 3> y{0.0, 1.0, 0.0};
+};
+
+/// Degrees of freedom of a group of blank nodes held at zero ([[boundary]]), in the global axes
+/// or in a local frame. Degrees of freedom are numbered 0..5: ux, uy, uz, rx, ry, rz
+/// (core/dof_names.hpp).
 struct BoundaryConfig {
-  enum class Type { symmetry, fixed };
+  /// fixed: all six held. symmetry: the translation along the plane's normal and the rotations
+  /// about the two in-plane axes. diaphragm: the two translations in the plane (rotations free).
+  /// hold: the degrees of freedom listed in `hold`.
+  enum class Type { symmetry, fixed, diaphragm, hold };
   std::string group;  ///< physical group name (curve or point set) of blank nodes
   Type type = Type::fixed;
-  /// symmetry: the plane's normal axis, 0 = x, 1 = y, 2 = z. The normal translation and the two
-  /// rotations about in-plane axes are held.
+  /// symmetry, diaphragm: the plane's normal axis, 0 = x, 1 = y, 2 = z (of `axes` when given);
+  /// unused when `normal` is given.
   int axis = 0;
+  /// symmetry, diaphragm: the plane's unit normal (global components), instead of `axis`.
+  std::optional<std::array<double, 3>> normal;
+  /// hold: which of ux, uy, uz, rx, ry, rz are held (components along `axes` when given).
+  std::array<bool, 6> hold{};
+  /// symmetry or diaphragm with `axis`, and hold: the local frame their components refer to;
+  /// none = the global axes.
+  std::optional<AxesConfig> axes;
+  /// The line of the [[boundary]] table in the case file (0 = not read from a file), for the
+  /// messages of build_model, which sees the mesh.
+  int line = 0;
+};
+
+/// One degree of freedom of a group of blank nodes driven along a curve ([[prescribed_motion]]).
+struct PrescribedMotionConfig {
+  enum class Type { displacement, velocity };
+  std::string group;  ///< physical group name of blank nodes
+  /// displacement: mm (translations) or rad (rotations) from the initial state against time;
+  /// velocity: mm/s or rad/s.
+  Type type = Type::displacement;
+  int dof = 0;  ///< 0..5: ux, uy, uz, rx, ry, rz (components along `axes` when given)
+  /// mm, rad, mm/s or rad/s, used when `curve` is empty: a velocity is held at it; a
+  /// displacement (static analyses only) ramps linearly from 0 at time 0 to it at end_time.
+  double value = 0.0;
+  /// [time (s), value] points; a displacement curve starts at 0. Empty = `value`.
+  CurveConfig curve;
+  std::optional<AxesConfig> axes;  ///< the local frame `dof` refers to; none = the global axes
+  int line = 0;                    ///< of the [[prescribed_motion]] table; 0 = not from a file
 };
 
 /// A load on blank nodes or elements, scaled over time by an optional curve (default 1).
@@ -162,6 +203,7 @@ struct PrescribedVelocityConfig {
   std::array<double, 3> velocity{0.0, 0.0, 0.0};     ///< mm/s
   std::array<bool, 3> components{true, true, true};  ///< which of x, y, z are prescribed
   CurveConfig curve;                                 ///< scale factor against time; empty = 1
+  int line = 0;  ///< of the [[prescribed_velocity]] table; 0 = not from a file
 };
 
 struct ControlConfig {
@@ -278,6 +320,7 @@ struct CaseConfig {
   std::vector<LoadConfig> loads;                                ///< [[load]] tables
   std::vector<InitialVelocityConfig> initial_velocities;        ///< [[initial_velocity]]
   std::vector<PrescribedVelocityConfig> prescribed_velocities;  ///< [[prescribed_velocity]]
+  std::vector<PrescribedMotionConfig> prescribed_motions;       ///< [[prescribed_motion]]
   AnalysisConfig analysis;                                      ///< [analysis]
   ImplicitConfig implicit;                                      ///< [implicit]
   std::optional<SpringbackConfig> springback;                   ///< [springback]

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/dof_names.hpp"
 #include "io/case_config.hpp"
 #include "io/toml_reader.hpp"
 
@@ -225,16 +226,67 @@ void write_contact(TomlWriter& w, const ContactConfig& contact) {
   }
 }
 
-void write_boundary(TomlWriter& w, const BoundaryConfig& boundary) {
-  w.array_header("boundary");
-  w.string("group", boundary.group);
-  if (boundary.type == BoundaryConfig::Type::fixed) {
-    w.string("type", "fixed");
+void write_axes(TomlWriter& w, const std::optional<AxesConfig>& axes) {
+  if (!axes) {
     return;
   }
-  w.string("type", "symmetry");
-  static constexpr std::array<std::string_view, 3> axes{"x", "y", "z"};
-  w.string("axis", axes.at(static_cast<std::size_t>(boundary.axis)));
+  const auto vector = [](const std::array<double, 3>& v) {
+    return fmt::format("[{}, {}, {}]", format_toml_number(v[0]), format_toml_number(v[1]),
+                       format_toml_number(v[2]));
+  };
+  w.raw("axes", fmt::format("[{}, {}]", vector(axes->x), vector(axes->y)));
+  w.comment("  local x and y axes (unit, perpendicular); z = x cross y");
+}
+
+void write_boundary(TomlWriter& w, const BoundaryConfig& boundary) {
+  using Type = BoundaryConfig::Type;
+  w.array_header("boundary");
+  w.string("group", boundary.group);
+  static constexpr std::array<std::string_view, 3> axis_names{"x", "y", "z"};
+  switch (boundary.type) {
+    case Type::fixed:
+      w.string("type", "fixed");
+      return;
+    case Type::symmetry:
+    case Type::diaphragm:
+      w.string("type", boundary.type == Type::symmetry ? "symmetry" : "diaphragm");
+      if (boundary.normal) {
+        w.vector("normal", *boundary.normal, "unit vector, the plane's normal");
+        return;
+      }
+      w.string("axis", axis_names.at(static_cast<std::size_t>(boundary.axis)));
+      write_axes(w, boundary.axes);
+      return;
+    case Type::hold: {
+      w.string("type", "hold");
+      std::string names;
+      for (int k = 0; k < 6; ++k) {
+        if (boundary.hold[static_cast<std::size_t>(k)]) {
+          names += fmt::format("{}\"{}\"", names.empty() ? "" : ", ", kDofNames[k]);
+        }
+      }
+      w.raw("hold", "[" + names + "]");
+      write_axes(w, boundary.axes);
+      return;
+    }
+  }
+}
+
+void write_prescribed_motion(TomlWriter& w, const PrescribedMotionConfig& pm) {
+  w.array_header("prescribed_motion");
+  w.string("group", pm.group);
+  const bool displacement = pm.type == PrescribedMotionConfig::Type::displacement;
+  w.string("type", displacement ? "displacement" : "velocity");
+  w.string("dof", kDofNames[pm.dof]);
+  const bool rotation = pm.dof >= 3;
+  const std::string_view unit =
+      displacement ? (rotation ? "rad" : "mm") : (rotation ? "rad/s" : "mm/s");
+  if (pm.curve.times.empty()) {
+    w.number("value", pm.value, unit);
+  } else {
+    w.curve("curve", pm.curve, fmt::format("[[time (s), value ({})], ...]", unit));
+  }
+  write_axes(w, pm.axes);
 }
 
 void write_draw_in(TomlWriter& w, const DrawInConfig& draw_in) {
@@ -398,6 +450,9 @@ std::string format_resolved_case(const CaseConfig& config) {
   }
   for (const auto& pv : config.prescribed_velocities) {
     write_prescribed_velocity(w, pv);
+  }
+  for (const auto& pm : config.prescribed_motions) {
+    write_prescribed_motion(w, pm);
   }
   write_control(w, config.control);
   write_implicit_sections(w, config);

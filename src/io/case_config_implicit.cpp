@@ -139,10 +139,14 @@ void read_implicit_sections(const TomlSection& top, CaseConfig& config) {
                   "[springback] follows an explicit forming run; a static analysis "
                   "(analysis.type = \"static\") has none");
     }
-    if (!config.prescribed_velocities.empty() || !config.initial_velocities.empty()) {
-      top.fail_at(top.table(), "prescribed_velocity",
-                  "[[prescribed_velocity]] and [[initial_velocity]] belong to explicit runs; a "
-                  "static analysis is loaded by [[load]] tables");
+    for (const std::string_view key : {"prescribed_velocity", "initial_velocity"}) {
+      const std::vector<TomlSection> tables = top.table_array(key);
+      if (!tables.empty()) {
+        top.fail_at(tables.front().table(), tables.front().path(),
+                    "[[prescribed_velocity]] and [[initial_velocity]] belong to explicit runs; a "
+                    "static analysis is loaded by [[load]] tables and driven by "
+                    "[[prescribed_motion]] displacements");
+      }
     }
   }
   if (config.springback && config.tools.empty()) {

@@ -11,6 +11,7 @@
 #include "core/errors.hpp"
 #include "core/log.hpp"
 #include "io/gmsh_reader.hpp"
+#include "model/constraint_assembly.hpp"
 
 namespace sf {
 namespace {
@@ -75,32 +76,52 @@ void read_blank(const CaseConfig& config, Model& model) {
     throw InputError(fmt::format("{}: group '{}' holds no quadrilaterals or triangles",
                                  bc.mesh.file.string(), bc.mesh.group));
   }
-  std::vector<std::string> names;
-  for (const BoundaryConfig& b : config.boundaries) {
-    names.push_back(b.group);
+  // Every node group the case names, read once, with the entry that first names it (a missing
+  // group's message names the case file, the entry's line where known, and its key).
+  std::vector<std::pair<std::string, std::string>> names;  // group, "file[:line]: key"
+  const std::string file = config.file.string();
+  const auto at_line = [&file](int line) {
+    return line > 0 ? fmt::format("{}:{}", file, line) : file;
+  };
+  for (std::size_t i = 0; i < config.boundaries.size(); ++i) {
+    names.emplace_back(
+        config.boundaries[i].group,
+        fmt::format("{}: boundary[{}].group", at_line(config.boundaries[i].line), i));
   }
-  for (const DrawInConfig& d : config.draw_ins) {
-    names.push_back(d.group);
+  for (std::size_t i = 0; i < config.draw_ins.size(); ++i) {
+    names.emplace_back(config.draw_ins[i].group, fmt::format("{}: draw_in[{}].group", file, i));
   }
-  for (const LoadConfig& l : config.loads) {
-    names.push_back(l.group);
+  for (std::size_t i = 0; i < config.loads.size(); ++i) {
+    names.emplace_back(config.loads[i].group, fmt::format("{}: load[{}].group", file, i));
   }
-  for (const InitialVelocityConfig& v : config.initial_velocities) {
-    if (!v.group.empty()) {
-      names.push_back(v.group);
+  for (std::size_t i = 0; i < config.initial_velocities.size(); ++i) {
+    if (!config.initial_velocities[i].group.empty()) {
+      names.emplace_back(config.initial_velocities[i].group,
+                         fmt::format("{}: initial_velocity[{}].group", file, i));
     }
   }
-  for (const PrescribedVelocityConfig& v : config.prescribed_velocities) {
-    names.push_back(v.group);
+  for (std::size_t i = 0; i < config.prescribed_velocities.size(); ++i) {
+    const PrescribedVelocityConfig& v = config.prescribed_velocities[i];
+    names.emplace_back(v.group,
+                       fmt::format("{}: prescribed_velocity[{}].group", at_line(v.line), i));
+  }
+  for (std::size_t i = 0; i < config.prescribed_motions.size(); ++i) {
+    const PrescribedMotionConfig& m = config.prescribed_motions[i];
+    names.emplace_back(m.group, fmt::format("{}: prescribed_motion[{}].group", at_line(m.line), i));
   }
   if (config.springback && config.springback->u_channel) {
-    names.push_back(config.springback->u_channel->section);
+    names.emplace_back(config.springback->u_channel->section,
+                       fmt::format("{}: springback.u_channel.section", file));
   }
-  for (const std::string& name : names) {
+  for (const auto& [name, key] : names) {
     const bool seen = std::any_of(blank.groups.begin(), blank.groups.end(),
                                   [&](const NodeGroup& g) { return g.name == name; });
     if (!seen) {
-      blank.groups.push_back(extract_node_group(gmsh_model, blank.mesh, name));
+      try {
+        blank.groups.push_back(extract_node_group(gmsh_model, blank.mesh, name));
+      } catch (const InputError& error) {
+        throw InputError(fmt::format("{}: {}", key, error.what()));
+      }
       blank.groups.back().name = name;
     }
   }
@@ -172,19 +193,6 @@ void read_tools(const CaseConfig& config, Model& model) {
   }
 }
 
-void apply_boundaries(const CaseConfig& config, Model& model) {
-  model.constraints.mask.assign(static_cast<std::size_t>(model.blank.mesh.nodes.cols()), 0);
-  for (const BoundaryConfig& b : config.boundaries) {
-    for (int node : model.blank.group(b.group).nodes) {
-      if (b.type == BoundaryConfig::Type::symmetry) {
-        model.constraints.add_symmetry(node, b.axis);
-      } else {
-        model.constraints.add_fixed(node);
-      }
-    }
-  }
-}
-
 LoadCurve make_scale_curve(const CurveConfig& curve) {
   return curve.times.empty() ? LoadCurve({0.0}, {1.0}) : LoadCurve(curve.times, curve.values);
 }
@@ -231,11 +239,6 @@ void set_up_loads(const CaseConfig& config, Model& model) {
       loads.nodal.push_back({group.nodes, Vec3(lc.value[0], lc.value[1], lc.value[2]),
                              lc.type == LoadConfig::Type::moment, make_scale_curve(lc.curve)});
     }
-  }
-  for (const PrescribedVelocityConfig& pc : config.prescribed_velocities) {
-    loads.prescribed_velocities.push_back({blank.group(pc.group).nodes,
-                                           Vec3(pc.velocity[0], pc.velocity[1], pc.velocity[2]),
-                                           pc.components, make_scale_curve(pc.curve)});
   }
   loads.gravity =
       Vec3(config.control.gravity[0], config.control.gravity[1], config.control.gravity[2]);
@@ -413,13 +416,13 @@ Model build_model(const CaseConfig& config) {
   model.config = config;
   read_blank(config, model);
   read_tools(config, model);
-  apply_boundaries(config, model);
   const ShellState state = make_shell_state(
       element_count(model.blank.part), config.blank.integration_points, config.blank.thickness);
   set_mass_and_time_step(config, model, state);
   set_up_contacts(config, model, state);
   set_up_force_controlled_tools(config, model);
   set_end_time(config, model);
+  assemble_constraints(config, model.blank, model.end_time, model);
   set_up_loads(config, model);
   // The contact pairs point at the tools' surfaces: the tools vector must not move again.
   for (ContactInterface& c : model.contacts) {

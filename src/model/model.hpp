@@ -49,25 +49,34 @@ struct PressureLoad {
   LoadCurve scale;
 };
 
-/// Velocity components held at prescribed values on a set of nodes.
-struct PrescribedVelocity {
+/// One degree of freedom of a set of nodes driven along a curve ([[prescribed_motion]], or one
+/// component of a [[prescribed_velocity]]): at node nodes[k] the component component[k] (0..5, in
+/// the node's axes: NodalConstraints) equals sign[k] x target(t).
+struct PrescribedMotion {
+  enum class Kind { displacement, velocity };
+  Kind kind = Kind::velocity;
+  std::string entry;               ///< the case entry, e.g. "prescribed_motion[0]", for messages
+  std::string group;               ///< its node group
+  bool rotation = false;           ///< a rotation (rad, rad/s) rather than a translation (mm, mm/s)
+  Vec3 direction = Vec3::UnitX();  ///< unit, global: the translation or the rotation axis driven
+  double value = 1.0;              ///< mm, rad, mm/s or rad/s per unit of `scale`
+  LoadCurve scale;                 ///< against time (s)
   std::vector<int> nodes;
-  Vec3 velocity = Vec3::Zero();  ///< mm/s
-  std::array<bool, 3> components{true, true, true};
-  LoadCurve scale;
+  std::vector<unsigned char> component;  ///< per node: 0..5 in the node's axes
+  std::vector<double> sign;              ///< per node: +1 or -1
+
+  /// The prescribed displacement (mm, rad) or velocity (mm/s, rad/s) at time t (s).
+  double target(double t) const { return value * scale.value(t); }
 };
 
 /// Everything that loads the blank besides the tools.
 struct ExternalLoads {
   std::vector<NodalLoad> nodal;
   std::vector<PressureLoad> pressures;
-  std::vector<PrescribedVelocity> prescribed_velocities;
   Vec3 gravity = Vec3::Zero();  ///< mm/s^2
   LoadCurve gravity_scale;      ///< scale factor against time; empty = 1 (explicit runs)
   double damping = 0.0;         ///< 1/s, mass-proportional
-  bool empty() const {
-    return nodal.empty() && pressures.empty() && gravity.isZero() && prescribed_velocities.empty();
-  }
+  bool empty() const { return nodal.empty() && pressures.empty() && gravity.isZero(); }
 };
 
 /// A rigid tool: its triangulated surface in the reference position and how it moves: a
@@ -97,7 +106,8 @@ struct Model {
   Blank blank;
   std::vector<Tool> tools;
   std::vector<ContactInterface> contacts;
-  NodalConstraints constraints;
+  NodalConstraints constraints;  ///< held and prescribed degrees of freedom, node frames
+  std::vector<PrescribedMotion> prescribed_motions;  ///< what drives the prescribed ones
   ExternalLoads loads;
   double end_time = 0.0;      ///< s, from control.end_time or the stroke
   int stroke_tool = -1;       ///< index of the tool whose travel is the stroke, or -1

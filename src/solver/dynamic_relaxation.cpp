@@ -74,24 +74,23 @@ namespace {
 /// prescribed components (0 without prescribed velocities).
 double reset_velocities(const Model& model, SolutionState& s) {
   const double before = s.energies.kinetic;
-  if (s.prescribed_mask.empty()) {
-    s.v.setZero();
-  } else {
-    for (Eigen::Index i = 0; i < s.v.cols(); ++i) {
-      const unsigned held = s.prescribed_mask[static_cast<std::size_t>(i)];
-      for (int a = 0; a < 3; ++a) {
-        if (!(held & (1u << a))) {
-          s.v(a, i) = 0.0;
-        }
-      }
-    }
-  }
-  s.omega.setZero();
+  const NodalConstraints& constraints = model.constraints;
   double after = 0.0;
-  if (!s.prescribed_mask.empty()) {
-    for (Eigen::Index i = 0; i < s.v.cols(); ++i) {
-      after += 0.5 * model.blank.mass[i] * s.v.col(i).squaredNorm();
+  for (Eigen::Index i = 0; i < s.v.cols(); ++i) {
+    const unsigned prescribed =
+        constraints.prescribed.empty() ? 0u : constraints.prescribed[static_cast<std::size_t>(i)];
+    if (prescribed == 0) {
+      s.v.col(i).setZero();
+      s.omega.col(i).setZero();
+      continue;
     }
+    Vec3 v = s.v.col(i);
+    Vec3 omega = s.omega.col(i);
+    constraints.zero_components(static_cast<int>(i), ~prescribed & 0x3fu, v, omega);
+    s.v.col(i) = v;
+    s.omega.col(i) = omega;
+    after += 0.5 * (model.blank.mass[i] * v.squaredNorm() +
+                    model.blank.rotational_inertia[i] * omega.squaredNorm());
   }
   const double removed = before - after;
   s.energies.kinetic = after;

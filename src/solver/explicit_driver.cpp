@@ -44,20 +44,10 @@ void half_kick_rate(const Model& model, const SolutionState& s, Eigen::Index i, 
   const double c = model.loads.damping;
   u = (1.0 / mass) * (s.f_ext.col(i) + s.f_contact.col(i) - s.f_int.col(i)) - c * s.v.col(i);
   u_omega = (1.0 / inertia) * (s.m_ext.col(i) - s.m_int.col(i)) - c * s.omega.col(i);
-  const unsigned held =
-      model.constraints.mask[static_cast<std::size_t>(i)] |
-      (s.prescribed_mask.empty()
-           ? 0u
-           : static_cast<unsigned>(s.prescribed_mask[static_cast<std::size_t>(i)]));
+  const NodalConstraints& constraints = model.constraints;
+  const unsigned held = constraints.constrained_bits(static_cast<std::size_t>(i));
   if (held != 0) {
-    for (int k = 0; k < 3; ++k) {
-      if (held & (1u << k)) {
-        u[k] = 0.0;
-      }
-      if (held & (1u << (3 + k))) {
-        u_omega[k] = 0.0;
-      }
-    }
+    constraints.zero_components(static_cast<int>(i), held, u, u_omega);
   }
 }
 
@@ -118,21 +108,37 @@ bool update_velocities(const Model& model, SolutionState& s, double weight) {
   return std::isfinite(check);
 }
 
-// Holds the prescribed velocity components; returns the work (N mm) of the reactions that do
-// so over the step dt: reaction = m (v_prescribed - v_free) / weight, times v_prescribed dt.
-double apply_prescribed_velocities(const Model& model, SolutionState& s, double weight, double dt) {
+// Holds the prescribed components (in each node's axes) at their velocities over the step [t, t +
+// dt]: a prescribed velocity at its value at mid-step, a prescribed displacement (or rotation) at
+// the velocity that reaches its value at the step end, (d(t + dt) - d(t)) / dt (central
+// difference). Returns the work (N mm) of the reactions that do so over the step: reaction = m
+// (v_prescribed - v_free) / weight (the rotational inertia for a rotation), times v_prescribed dt.
+double apply_prescribed_motions(const Model& model, SolutionState& s, double weight, double dt) {
   double work = 0.0;
-  const double t_mid = s.time + 0.5 * dt;
-  for (const PrescribedVelocity& p : model.loads.prescribed_velocities) {
-    const Vec3 target = p.scale.value(t_mid) * p.velocity;
-    for (int node : p.nodes) {
-      for (int c = 0; c < 3; ++c) {
-        if (p.components[static_cast<std::size_t>(c)]) {
-          const double reaction = model.blank.mass[node] * (target[c] - s.v(c, node)) / weight;
-          s.v(c, node) = target[c];
-          work += reaction * target[c] * dt;
-        }
+  const double t0 = s.time;
+  const NodeFrames& frames = model.constraints.frames;
+  for (const PrescribedMotion& p : model.prescribed_motions) {
+    const double target = p.kind == PrescribedMotion::Kind::velocity
+                              ? p.target(t0 + 0.5 * dt)
+                              : (p.target(t0 + dt) - p.target(t0)) / dt;
+    const VectorX& mass = p.rotation ? model.blank.rotational_inertia : model.blank.mass;
+    Matrix3X& field = p.rotation ? s.omega : s.v;
+    for (std::size_t k = 0; k < p.nodes.size(); ++k) {
+      const int node = p.nodes[k];
+      const int component = p.component[k];
+      const double value = p.sign[k] * target;
+      double free = 0.0;
+      if (!frames.has(node)) {
+        double& held = field(component % 3, node);
+        free = held;
+        held = value;
+      } else {
+        const Vec3 axis = frames.axis(node, component);
+        free = axis.dot(field.col(node));
+        field.col(node) += (value - free) * axis;
       }
+      const double reaction = mass[node] * (value - free) / weight;
+      work += reaction * value * dt;
     }
   }
   return work;
@@ -266,16 +272,6 @@ SolutionState make_initial_state(const Model& model) {
     }
   }
   model.constraints.apply(s.v, s.omega);
-  s.prescribed_mask.assign(static_cast<std::size_t>(n), 0);
-  for (const PrescribedVelocity& p : model.loads.prescribed_velocities) {
-    for (int node : p.nodes) {
-      for (int c = 0; c < 3; ++c) {
-        if (p.components[static_cast<std::size_t>(c)]) {
-          s.prescribed_mask[static_cast<std::size_t>(node)] |= static_cast<unsigned char>(1u << c);
-        }
-      }
-    }
-  }
   // The initial velocities are the whole-step velocities v(0) (constraints applied): the same
   // definition as the kinetic energy reported after every step. The forces at time 0 only enter
   // the first half kick, v(1/2) = v(0) + dt/2 a(0).
@@ -391,7 +387,7 @@ void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previ
   if (!update_velocities(model, s, weight)) {
     throw_non_finite(model, s);
   }
-  const double prescribed_work = apply_prescribed_velocities(model, s, weight, dt);
+  const double prescribed_work = apply_prescribed_motions(model, s, weight, dt);
   s.x += dt * s.v;
   s.time += dt;
   s.cycle += 1;

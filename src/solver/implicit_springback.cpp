@@ -15,8 +15,11 @@ ImplicitStepSummary run_implicit_springback(Model& model, SolutionState& s, Fram
   const auto node_name = blank_node_namer(model);
   StaticShellBody body(model.blank.part, s.x, s.shell);
   ImplicitStepSummary summary;
+  // The case's holds stay; prescribed degrees of freedom stay where forming left them (the tools
+  // are released, not the blank's grips).
   StaticConstraints constraints = make_static_constraints(
-      s.x, model.constraints.mask, model.config.implicit.rigid_body_modes, node_name);
+      s.x, model.constraints.held_or_prescribed(), model.config.implicit.rigid_body_modes,
+      node_name, model.constraints.frames);
   summary.free_modes = constraints.free_modes;
   summary.added_constraints = constraints.added;
 

@@ -66,6 +66,11 @@ std::string format_implicit_step(const ImplicitStepSummary& step) {
                   "analysis {:.3f} s, factorisation {:.3f} s, solves {:.3f} s; step {:.2f} s",
                   r.tangent_seconds, r.colours, r.tangent_evaluations, r.solver.analyse_seconds,
                   r.solver.factor_seconds, r.solver.solve_seconds, step.wall_seconds));
+  if (r.prescribed_work != 0.0) {
+    add(fmt::format(
+        "  prescribed motion   work {:.6g} N mm (part of the external work {:.6g} N mm)",
+        r.prescribed_work, r.external_work));
+  }
   for (const std::string& held : step.added_constraints) {
     add(fmt::format("  rigid-body hold     {}", held));
   }
@@ -146,6 +151,7 @@ nlohmann::json implicit_step_json(const ImplicitStepSummary& step) {
           {"wall_seconds", step.wall_seconds},
           {"internal_work_Nmm", r.internal_work},
           {"external_work_Nmm", r.external_work},
+          {"prescribed_work_Nmm", r.prescribed_work},
           {"free_rigid_body_modes", step.free_modes},
           {"added_constraints", step.added_constraints}};
 }

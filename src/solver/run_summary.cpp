@@ -14,6 +14,49 @@
 
 namespace sf {
 
+namespace {
+
+std::string format_vector(const Vec3& v) {
+  return fmt::format("({:.5g}, {:.5g}, {:.5g})", v.x(), v.y(), v.z());
+}
+
+/// "  reaction boundary[0] 'clamp': force (...) N, moment (...) N mm[; in its axes ...]"
+std::string format_reaction(const ConstraintReaction& c) {
+  std::string text = fmt::format("  reaction {:<22} force {} N, moment {} N mm",
+                                 fmt::format("{} '{}'", c.entry, c.group), format_vector(c.force),
+                                 format_vector(c.moment));
+  if (c.axes) {
+    text += fmt::format("; in its axes {} N, {} N mm", format_vector(c.axes->transpose() * c.force),
+                        format_vector(c.axes->transpose() * c.moment));
+  }
+  if (c.along) {
+    text += fmt::format("; along {} {:.6g} {}", c.dof, *c.along, c.dof[0] == 'r' ? "N mm" : "N");
+  }
+  return text;
+}
+
+nlohmann::json json_vector(const Vec3& v) {
+  return nlohmann::json::array({v.x(), v.y(), v.z()});
+}
+
+nlohmann::json reaction_json(const ConstraintReaction& c) {
+  nlohmann::json j = {
+      {"group", c.group}, {"force_N", json_vector(c.force)}, {"moment_Nmm", json_vector(c.moment)}};
+  if (c.axes) {
+    j["axes"] = nlohmann::json::array(
+        {json_vector(c.axes->col(0)), json_vector(c.axes->col(1)), json_vector(c.axes->col(2))});
+    j["force_in_axes_N"] = json_vector(c.axes->transpose() * c.force);
+    j["moment_in_axes_Nmm"] = json_vector(c.axes->transpose() * c.moment);
+  }
+  if (c.along) {
+    j["dof"] = c.dof;
+    j[c.dof[0] == 'r' ? "along_dof_Nmm" : "along_dof_N"] = *c.along;
+  }
+  return j;
+}
+
+}  // namespace
+
 RunSummary make_run_summary(const Model& model, const SolutionState& s, double wall_seconds) {
   RunSummary r;
   r.cycles = s.cycle;
@@ -69,6 +112,11 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
                    (dc.measured_stroke == 0.0 ||
                     std::abs(end_stroke - dc.measured_stroke) <= 1e-6 * dc.measured_stroke);
     r.draw_ins.push_back(d);
+  }
+  if (!model.config.boundaries.empty() || !model.prescribed_motions.empty()) {
+    Matrix3X force, moment;
+    compute_reactions(model, s, force, moment);
+    r.reactions = sum_reactions_by_entry(model, force, moment);
   }
   return r;
 }
@@ -140,6 +188,9 @@ std::string format_run_summary(const RunSummary& r) {
         "at most {} (t = {:.4e} s), {} over {} audits; largest gap error {:.3e} mm",
         a.tool, a.search, a.final_misses, a.final_nodes_checked, a.max_misses, a.max_misses_time,
         a.total_misses, a.audits, a.max_gap_error));
+  }
+  for (const ConstraintReaction& c : r.reactions) {
+    add(format_reaction(c));
   }
   if (r.static_step) {
     add("Static step");
@@ -214,6 +265,9 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
                                  {"max_misses_time_s", a.max_misses_time},
                                  {"total_misses", a.total_misses},
                                  {"max_gap_error_mm", a.max_gap_error}};
+  }
+  for (const ConstraintReaction& c : r.reactions) {
+    j["reactions"][c.entry] = reaction_json(c);
   }
   if (r.static_step) {
     j["static_step"] = implicit_step_json(*r.static_step);

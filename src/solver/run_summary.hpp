@@ -7,6 +7,7 @@
 
 #include "implicit/static_step.hpp"
 #include "model/model.hpp"
+#include "solver/reactions.hpp"
 #include "solver/solution_state.hpp"
 #include "solver/springback.hpp"
 
@@ -70,6 +71,9 @@ struct RunSummary {
   std::vector<ToolSummary> tools;
   std::vector<DrawInResult> draw_ins;
   std::vector<SearchAuditSummary> search_audits;  ///< filled by the driver when results are written
+  /// The constraints' reactions per case entry at the end of the run (forming, or the static
+  /// analysis's last increment), solver/reactions.hpp.
+  std::vector<ConstraintReaction> reactions;
   std::optional<ImplicitStepSummary> static_step;  ///< a static analysis
   std::optional<SpringbackSummary> springback;     ///< after an explicit forming run
 };

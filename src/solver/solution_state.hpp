@@ -55,9 +55,6 @@ struct SolutionState {
   /// N mm, sum of 1/2 k g^2 over the penalty springs at the current state: a diagnostic only
   /// (energies.contact is the work done against the contact forces, docs/time-integration.md).
   double contact_spring_energy = 0.0;
-  /// Per node, bits 0-2: the translation components a prescribed velocity holds (set by
-  /// make_initial_state; empty means none).
-  std::vector<unsigned char> prescribed_mask;
   ShellState shell;
   std::vector<ToolState> tools;
   Energies energies;

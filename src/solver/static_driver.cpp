@@ -1,9 +1,12 @@
 #include "solver/static_driver.hpp"
 
 #include <fmt/core.h>
+#include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 
+#include "core/errors.hpp"
 #include "core/log.hpp"
 #include "implicit/static_constraints.hpp"
 #include "implicit/static_step.hpp"
@@ -12,6 +15,62 @@
 #include "solver/frame_output.hpp"
 
 namespace sf {
+
+namespace {
+
+/// Adds the prescribed displacements (mm) and rotations (rad) at time t (s) to du and dtheta,
+/// along the nodes' axes.
+void add_prescribed_displacements(const Model& model, double t, Matrix3X& du, Matrix3X& dtheta) {
+  for (const PrescribedMotion& p : model.prescribed_motions) {
+    const double value = p.target(t);
+    Matrix3X& field = p.rotation ? dtheta : du;
+    for (std::size_t k = 0; k < p.nodes.size(); ++k) {
+      const int node = p.nodes[k];
+      field.col(node) += (p.sign[k] * value) * model.constraints.frames.axis(node, p.component[k]);
+    }
+  }
+}
+
+/// The automatic rigid-body holds must carry no load. They are a minimal support of the modes the
+/// case's constraints leave free (prescribed degrees of freedom count as held), so they carry
+/// exactly the loads' resultant over those modes: zero when the loads are balanced there, and a
+/// prescribed motion alone never loads them (the body moves rigidly to meet it). A reaction means
+/// there is no equilibrium without them and the answer depends on where they were put: an
+/// InputError naming them, when one carries more than 1e-6 of the largest load, reaction or
+/// force the step measured against (or 10 x the force tolerance, if larger).
+void check_automatic_holds(const Model& model, const StaticConstraints& constraints,
+                           const StaticStepReport& report, double length,
+                           const std::function<std::string(int)>& node_name) {
+  if (constraints.added_holds.empty()) {
+    return;
+  }
+  double scale = report.force_scale;
+  for (Eigen::Index i = 0; i < report.reaction_force.cols(); ++i) {
+    scale = std::max({scale, report.reaction_force.col(i).norm(),
+                      report.reaction_moment.col(i).norm() / length});
+  }
+  const double limit = std::max(1e-6, 10.0 * model.config.implicit.force_tolerance) * scale;
+  std::string loaded;
+  for (const auto& [node, dof] : constraints.added_holds) {
+    const double r =
+        constraints.dofs.component(node, dof, report.reaction_force, report.reaction_moment);
+    if (std::abs(dof < 3 ? r : r / length) > limit) {
+      loaded +=
+          fmt::format("{}{} {} carries {:.4g} {}", loaded.empty() ? "" : ", ", node_name(node),
+                      constraints.dofs.dof_name(node, dof), r, dof < 3 ? "N" : "N mm");
+    }
+  }
+  if (!loaded.empty()) {
+    throw InputError(fmt::format(
+        "{}: static analysis: the automatic rigid-body holds (implicit.rigid_body_modes = "
+        "\"auto\") carry load: {}. The loads are not balanced over the rigid-body modes the "
+        "constraints leave free ({}), so there is no equilibrium without those holds and the "
+        "answer would depend on where they were put: hold the model with [[boundary]] entries",
+        model.config.file.string(), loaded, fmt::join(constraints.free_modes, "; ")));
+  }
+}
+
+}  // namespace
 
 RunSummary run_static(Model& model, const RunOptions& options, SolutionState* final_state) {
   const auto start = std::chrono::steady_clock::now();
@@ -28,8 +87,11 @@ RunSummary run_static(Model& model, const RunOptions& options, SolutionState* fi
   const auto node_name = blank_node_namer(model);
   StaticShellBody body(model.blank.part, s.x, s.shell);
   ImplicitStepSummary step;
+  // Held and prescribed degrees of freedom are not solved for; the prescribed ones move by their
+  // curves (StaticLoad::prescribed).
   StaticConstraints constraints = make_static_constraints(
-      s.x, model.constraints.mask, model.config.implicit.rigid_body_modes, node_name);
+      s.x, model.constraints.held_or_prescribed(), model.config.implicit.rigid_body_modes,
+      node_name, model.constraints.frames);
   step.free_modes = constraints.free_modes;
   step.added_constraints = constraints.added;
 
@@ -52,6 +114,21 @@ RunSummary run_static(Model& model, const RunOptions& options, SolutionState* fi
   load.at = [&](double lambda, const Matrix3X& x, Matrix3X& f, Matrix3X& m) {
     compute_external_forces(model, lambda * end_time, x, f, m);
   };
+  for (const PrescribedMotion& p : model.prescribed_motions) {
+    if (p.kind != PrescribedMotion::Kind::displacement) {
+      // read_case refuses it; a configuration made in code may not have been read.
+      throw InputError(
+          fmt::format("{}: {}: a static analysis prescribes displacements and "
+                      "rotations, not velocities",
+                      model.config.file.string(), p.entry));
+    }
+  }
+  if (!model.prescribed_motions.empty()) {
+    // A prescribed displacement without a curve ramps from 0 over 0..end_time (build_model).
+    load.prescribed = [&](double lambda, Matrix3X& du, Matrix3X& dtheta) {
+      add_prescribed_displacements(model, lambda * end_time, du, dtheta);
+    };
+  }
   StaticStepOptions step_options;
   step_options.controls = model.config.implicit;
   step_options.linear = model.config.analysis.linear;
@@ -78,6 +155,11 @@ RunSummary run_static(Model& model, const RunOptions& options, SolutionState* fi
   if (output) {
     output->flush();
   }
+  // The state's internal forces: those of the last converged increment (f_int - f_ext is the
+  // reaction where a degree of freedom is held or prescribed), for the summary's reactions.
+  s.f_int = step.report.reaction_force + s.f_ext;
+  s.m_int = step.report.reaction_moment + s.m_ext;
+  check_automatic_holds(model, constraints, step.report, body.length_scale(), node_name);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   step.wall_seconds = wall;

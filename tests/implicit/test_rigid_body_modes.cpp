@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -98,6 +100,34 @@ TEST(RigidBodyModes, OneSymmetryPlaneLeavesThree) {
                           }));
   expect_added_removes_all(x, constraints.mask, m);
   EXPECT_EQ(count_rotations(m), 0);
+}
+
+TEST(RigidBodyModes, SymmetryPlaneInTurnedNodeAxesLeavesTheTurnedModes) {
+  // The plate of OneSymmetryPlaneLeavesThree turned 30 degrees about z, its symmetry plane (the
+  // turned x = 0 edge) held in node axes turned with it: ux, ry, rz of those axes. The free modes
+  // are the unturned ones turned: the translations along the turned y and along z, the rotation
+  // about the turned x; the added holds (in node axes where a node has them) remove them all.
+  const double c = std::cos(std::numbers::pi / 6.0), s = std::sin(std::numbers::pi / 6.0);
+  const Mat3 turn = (Mat3() << c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0).finished();
+  const Matrix3X x = turn * plate(11, 6);
+  std::vector<unsigned char> held(66, 0);
+  NodeFrames frames(66);
+  for (int j = 0; j < 6; ++j) {
+    held[static_cast<std::size_t>(j * 11)] = ux | ry | rz;
+    frames.set(j * 11, NodeFrame{turn, turn});
+  }
+  const RigidBodyModes m = find_free_rigid_body_modes(x, held, frames);
+  EXPECT_EQ(m.free_count, 3);
+  ASSERT_EQ(m.free_modes.size(), 3u);
+  EXPECT_EQ(m.free_modes[0], "translation along (-0.5, 0.866025, 0)");
+  EXPECT_EQ(m.free_modes[1], "translation along z");
+  EXPECT_EQ(m.free_modes[2].rfind("rotation about an axis along (0.866025, 0.5, 0) through", 0), 0u)
+      << m.free_modes[2];
+  // Without the frames the same masks would hold the global ux, ry, rz: other modes.
+  EXPECT_NE(find_free_rigid_body_modes(x, held).free_modes, m.free_modes);
+  EXPECT_EQ(static_cast<int>(m.added.size()), 3);
+  const RigidBodyModes after = find_free_rigid_body_modes(x, with_added(held, m), frames);
+  EXPECT_EQ(after.free_count, 0);
 }
 
 TEST(RigidBodyModes, TwoSymmetryPlanesLeaveTheNormalTranslation) {

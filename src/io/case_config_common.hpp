@@ -1,0 +1,19 @@
+#pragma once
+// Readers shared by the case-file sections (case_config*.cpp): not a public interface.
+#include <array>
+#include <string_view>
+
+#include "io/case_config.hpp"
+#include "io/toml_reader.hpp"
+
+namespace sf {
+
+/// Reads `key` (required) as a non-empty array of [time (s), value] points with finite numbers,
+/// times >= 0 and strictly increasing, into `curve`.
+void read_curve(const TomlSection& s, std::string_view key, CurveConfig& curve);
+
+/// Reads `key` as an array of 3 finite numbers (any values, unlike read_direction); absent leaves
+/// `value` as it is.
+void read_vector(const TomlSection& s, std::string_view key, std::array<double, 3>& value);
+
+}  // namespace sf
