@@ -3,7 +3,8 @@
 // K 565 MPa, eps0 0.007, n 0.26), under biaxial stretching plus bending. Prints ns per
 // element-cycle of compute_shell_internal_forces for: elastic material, J2 staying elastic, J2 with
 // every point yielding, and the same two for Hill48 (r 1.79/1.51/2.27, material axes at 0.5 rad
-// to e1); each with the viscous and the stiffness hourglass form.
+// to e1); each with the Belytschko-Tsay formulation (viscous and stiffness hourglass forms) and
+// the assumed-strain formulation.
 //
 // Usage: bench_shell_forces [cycles = 200]
 //        [case: elastic | j2-elastic | j2-yield | hill48-elastic | hill48-yield | all]
@@ -17,6 +18,7 @@
 #include <variant>
 #include <vector>
 
+#include "element/shell_directors.hpp"
 #include "element/shell_forces.hpp"
 #include "element/shell_part.hpp"
 
@@ -88,7 +90,14 @@ struct Figures {
   double fraction_yielding;  // points whose eps_p grew in the last cycle
 };
 
-Figures run_case(const Material& material, HourglassForm form, bool prestrain, int cycles) {
+// A quad formulation and, for Belytschko-Tsay, its hourglass form.
+struct Variant {
+  ShellFormulation formulation;
+  HourglassForm form;
+  const char* name;
+};
+
+Figures run_case(const Material& material, const Variant& variant, bool prestrain, int cycles) {
   const Plate plate = make_plate();
   ShellPart part;
   part.quads = plate.quads;
@@ -96,12 +105,14 @@ Figures run_case(const Material& material, HourglassForm form, bool prestrain, i
   part.material = material;
   part.density = kRho;
   part.hourglass_coefficient = 0.1;
-  part.hourglass_form = form;
+  part.hourglass_form = variant.form;
+  part.formulation = variant.formulation;
   const int n_el = static_cast<int>(part.quads.cols());
   if (std::holds_alternative<Hill48PlaneStress>(material)) {
     part.material_angle.assign(static_cast<std::size_t>(n_el), 0.5);  // rad, RD at 29 deg to e1
   }
   ShellState st = make_shell_state(n_el, 5, kThick);
+  initialize_directors(part, plate.x, st);
   Matrix3X f = Matrix3X::Zero(3, plate.x.cols());
   Matrix3X m = Matrix3X::Zero(3, plate.x.cols());
   Matrix3X v;
@@ -155,7 +166,7 @@ int main(int argc, char** argv) {
       "bench_shell_forces: %d x %d BT shells, 5 Gauss points, best of %d batches of %d cycles\n",
       kCells, kCells, kRepeats, cycles);
   std::printf("machine: %s (1 thread)\n", machine_name().c_str());
-  std::printf("%-26s %-10s %18s %18s\n", "material", "hourglass", "ns/element-cycle",
+  std::printf("%-26s %-16s %18s %18s\n", "material", "formulation", "ns/element-cycle",
               "points yielding");
   struct Case {
     const char* key;
@@ -172,11 +183,14 @@ int main(int argc, char** argv) {
     if (only != "all" && only != c.key) {
       continue;
     }
-    for (HourglassForm form : {HourglassForm::viscous, HourglassForm::stiffness}) {
-      const Figures fig = run_case(c.material, form, c.prestrain, cycles);
-      std::printf("%-26s %-10s %18.1f %17.1f%%\n", c.name,
-                  form == HourglassForm::viscous ? "viscous" : "stiffness",
-                  fig.ns_per_element_cycle, 100.0 * fig.fraction_yielding);
+    const Variant variants[] = {
+        {ShellFormulation::belytschko_tsay, HourglassForm::viscous, "BT viscous"},
+        {ShellFormulation::belytschko_tsay, HourglassForm::stiffness, "BT stiffness"},
+        {ShellFormulation::assumed_strain, HourglassForm::viscous, "assumed strain"}};
+    for (const Variant& variant : variants) {
+      const Figures fig = run_case(c.material, variant, c.prestrain, cycles);
+      std::printf("%-26s %-16s %18.1f %17.1f%%\n", c.name, variant.name, fig.ns_per_element_cycle,
+                  100.0 * fig.fraction_yielding);
     }
   }
   return 0;

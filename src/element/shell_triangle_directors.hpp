@@ -26,8 +26,8 @@ inline EdgeDual compute_edge_dual(const Vec3& a1, const Vec3& a2) {
 inline constexpr int kSideNodes[3][2] = {{0, 1}, {0, 2}, {1, 2}};
 
 /// The covariant measures of one configuration: K = (a1 . d_1, a2 . d_2, a1 . d_2 + a2 . d_1)
-/// with a1 = x_1 - x_0, a2 = x_2 - x_0, d_1 = d_1 - d_0 (mm), and the shear gap of each side,
-/// (x_b - x_a) . (d_a + d_b) / 2 (mm).
+/// with a1 = x_1 - x_0, a2 = x_2 - x_0, d_1 = the arc difference from d_0 to d_1 (mm), and the
+/// shear gap of each side, (x_b - x_a) . (d_a + d_b) / 2 (mm).
 struct TriangleDirectorMeasures {
   Vec3 curvature;
   double gap[3];
@@ -37,8 +37,8 @@ inline TriangleDirectorMeasures compute_triangle_director_measures(const Tri3& x
   TriangleDirectorMeasures m;
   const Vec3 a1 = x.col(1) - x.col(0);
   const Vec3 a2 = x.col(2) - x.col(0);
-  const Vec3 d1 = d.col(1) - d.col(0);
-  const Vec3 d2 = d.col(2) - d.col(0);
+  const Vec3 d1 = make_arc_difference(d.col(0), d.col(1)).value;
+  const Vec3 d2 = make_arc_difference(d.col(0), d.col(2)).value;
   m.curvature = Vec3(a1.dot(d1), a2.dot(d2), a1.dot(d2) + a2.dot(d1));
   for (int k = 0; k < 3; ++k) {
     const int a = kSideNodes[k][0];
@@ -89,8 +89,10 @@ inline void add_triangle_director_forces(const Tri3& x, const Tri3& d, const Vec
                                          const double gap[3], Tri3& f, Tri3& m) {
   const Vec3 a1 = x.col(1) - x.col(0);
   const Vec3 a2 = x.col(2) - x.col(0);
-  const Vec3 d1 = d.col(1) - d.col(0);
-  const Vec3 d2 = d.col(2) - d.col(0);
+  const ArcDifference arc1 = make_arc_difference(d.col(0), d.col(1));
+  const ArcDifference arc2 = make_arc_difference(d.col(0), d.col(2));
+  const Vec3& d1 = arc1.value;
+  const Vec3& d2 = arc2.value;
   const Vec3 at1 = curvature(0) * d1 + curvature(2) * d2;  // dW/dx_1 (and -dW/dx_0)
   const Vec3 at2 = curvature(1) * d2 + curvature(2) * d1;  // dW/dx_2
   const Vec3 dd1 = curvature(0) * a1 + curvature(2) * a2;  // dW/dd_1
@@ -98,10 +100,15 @@ inline void add_triangle_director_forces(const Tri3& x, const Tri3& d, const Vec
   f.col(1) += at1;
   f.col(2) += at2;
   f.col(0) -= at1 + at2;
-  Tri3 a;
-  a.col(0) = -(dd1 + dd2);
-  a.col(1) = dd1;
-  a.col(2) = dd2;
+  Tri3 a = Tri3::Zero();
+  Vec3 grad0 = Vec3::Zero();
+  Vec3 grad1 = Vec3::Zero();
+  Vec3 grad2 = Vec3::Zero();
+  add_arc_difference_gradient(arc1, dd1, grad0, grad1);
+  add_arc_difference_gradient(arc2, dd2, grad0, grad2);
+  a.col(0) = grad0;
+  a.col(1) = grad1;
+  a.col(2) = grad2;
   for (int k = 0; k < 3; ++k) {
     const int i = kSideNodes[k][0];
     const int j = kSideNodes[k][1];
