@@ -8,7 +8,6 @@
 // Exit codes: 0 success, 2 bad input, 3 the run went unstable, 4 a static step did not converge
 // (or its stiffness is singular), 1 an internal error.
 #include <CLI/CLI.hpp>
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -21,6 +20,7 @@
 #include "model/build_model.hpp"
 #include "solver/explicit_driver.hpp"
 #include "solver/frame_output.hpp"
+#include "solver/model_report.hpp"
 #include "solver/static_driver.hpp"
 
 namespace fs = std::filesystem;
@@ -74,107 +74,6 @@ fs::path output_directory(const Arguments& args, const sf::CaseConfig& config) {
   return config.file.parent_path() / config.output.directory;
 }
 
-void print_material(const sf::CaseConfig& config) {
-  const sf::MaterialConfig& m = config.blank_material();
-  using Type = sf::MaterialConfig::Type;
-  using Law = sf::HardeningConfig::Law;
-  std::string law = "elastic";
-  if (m.type == Type::hill48) {
-    const auto& d = config.blank.rolling_direction;
-    law = fmt::format("Hill48 (r0 {}, r45 {}, r90 {}; rolling direction ({:.3g}, {:.3g}, {:.3g}))",
-                      m.r0, m.r45, m.r90, d[0], d[1], d[2]);
-  } else if (m.type == Type::von_mises) {
-    law = "von Mises";
-  }
-  if (m.type != Type::elastic) {
-    static constexpr const char* names[] = {"Swift", "linear", "Voce", "tabulated"};
-    law += fmt::format(", {} hardening", names[static_cast<int>(m.hardening.law)]);
-    if (m.hardening.law == Law::tabulated) {
-      law += fmt::format(" ({})", m.hardening.table_file.string());
-    }
-  }
-  sf::log_info("Material    '{}': E = {} MPa, nu = {}, {}\n", m.name, m.young, m.poisson, law);
-}
-
-void print_model(const sf::Model& model) {
-  const sf::Blank& blank = model.blank;
-  sf::log_info("Case        {}\n", model.config.file.string());
-  if (!model.config.title.empty()) {
-    sf::log_info("Title       {}\n", model.config.title);
-  }
-  sf::log_info("Units       {}\n", model.config.units);
-  const sf::BlankConfig& bc = model.config.blank;
-  sf::log_info(
-      "Blank       {} nodes, {} quadrilateral shells (Belytschko-Lin-Tsay), {} triangular shells "
-      "(C0, DSG3), t = {} mm, {} {} thickness points, {} hourglass control {}, material '{}'\n",
-      blank.mesh.nodes.cols(), blank.mesh.quads.cols(), blank.mesh.triangles.cols(), bc.thickness,
-      bc.integration_points,
-      bc.integration_rule == sf::BlankConfig::IntegrationRule::lobatto ? "Lobatto" : "Gauss",
-      bc.hourglass_form == sf::BlankConfig::HourglassForm::stiffness ? "stiffness" : "viscous",
-      bc.hourglass_coefficient, bc.material);
-  print_material(model.config);
-  sf::log_info(
-      "Mass        {:.6e} tonne physical, {:.6e} tonne added by mass scaling ({:.2f} %, "
-      "{} elements)\n",
-      blank.physical_mass, blank.scaling.added_mass,
-      100.0 * blank.scaling.added_mass / blank.physical_mass, blank.scaling.scaled_elements);
-  if (blank.scaling.enabled()) {
-    sf::log_info(
-        "Mass scale  target step {:.4e} s; elements below it get mass during the run too\n",
-        blank.scaling.target_dt);
-  }
-  for (const sf::BoundaryConfig& b : model.config.boundaries) {
-    sf::log_info("Boundary    '{}': {} nodes, {}\n", b.group, blank.group(b.group).nodes.size(),
-                 b.type == sf::BoundaryConfig::Type::fixed
-                     ? std::string("fixed")
-                     : fmt::format("symmetry plane normal to {}", "xyz"[b.axis]));
-  }
-  for (std::size_t i = 0; i < model.tools.size(); ++i) {
-    const sf::Tool& t = model.tools[i];
-    std::string motion = "fixed";
-    if (t.force_control) {
-      // Its frequency on the contact springs of its pair, against the bound build_model checks.
-      double k_sum = 0.0;
-      for (const sf::ContactInterface& c : model.contacts) {
-        if (c.tool == static_cast<int>(i)) {
-          k_sum += c.pair.stiffness.sum();
-        }
-      }
-      motion = fmt::format(
-          "force-controlled along ({:.3g}, {:.3g}, {:.3g}), mass {:.4e} tonne, damping {} 1/s; "
-          "sqrt(sum k / mass) dt = {:.3f}",
-          t.direction().x(), t.direction().y(), t.direction().z(), t.force_control->mass(),
-          t.force_control->damping(), std::sqrt(k_sum / t.force_control->mass()) * model.time_step);
-    } else if (t.motion.moves()) {
-      motion = fmt::format("moves along ({:.3g}, {:.3g}, {:.3g})", t.direction().x(),
-                           t.direction().y(), t.direction().z());
-    }
-    sf::log_info("Tool        '{}': {} nodes, {} triangles, {}\n", t.name, t.mesh.nodes.cols(),
-                 t.mesh.triangles.cols(), motion);
-  }
-  for (const sf::ContactInterface& c : model.contacts) {
-    const sf::ContactConfig* cc = nullptr;
-    for (const auto& candidate : model.config.contacts) {
-      if (candidate.tool == model.tools[static_cast<std::size_t>(c.tool)].name) {
-        cc = &candidate;
-      }
-    }
-    sf::log_info(
-        "Contact     blank nodes vs '{}': search '{}', penalty scale {}, stiffness {:.4g} to "
-        "{:.4g} N/mm\n",
-        model.tools[static_cast<std::size_t>(c.tool)].name, cc->search, cc->penalty_scale,
-        c.pair.stiffness.minCoeff(), c.pair.stiffness.maxCoeff());
-  }
-  sf::log_info("Time step   {:.4e} s (safety {} x critical, limited by element {})\n",
-               model.time_step, model.config.control.time_step_safety, model.limiting_element);
-  sf::log_info("End time    {:.6e} s{}\n", model.end_time,
-               model.config.control.stroke > 0.0
-                   ? fmt::format(" (stroke {} mm of '{}')", model.config.control.stroke,
-                                 model.config.control.stroke_tool)
-                   : std::string());
-  sf::log_info("Cycles      about {:.0f}\n", model.end_time / model.time_step);
-}
-
 sf::Model load(const Arguments& args) {
   // 1. Read and validate the case file.
   sf::CaseConfig config = sf::read_case(args.case_file);
@@ -185,7 +84,7 @@ sf::Model load(const Arguments& args) {
 
 int run(const Arguments& args) {
   sf::Model model = load(args);
-  print_model(model);
+  sf::print_model(model);
   // 3. Prepare the results folder and keep the resolved case beside the results.
   const fs::path out = output_directory(args, model.config);
   fs::create_directories(out);
@@ -209,14 +108,14 @@ int run(const Arguments& args) {
 
 int check(const Arguments& args) {
   const sf::Model model = load(args);
-  print_model(model);
+  sf::print_model(model);
   sf::log_info("Case is valid.\n");
   return sf::exit_ok;
 }
 
 int mesh(const Arguments& args) {
   sf::Model model = load(args);
-  print_model(model);
+  sf::print_model(model);
   const fs::path out = output_directory(args, model.config);
   fs::create_directories(out);
   sf::FrameOutput output(model, out);

@@ -11,6 +11,7 @@
 #include "core/errors.hpp"
 #include "io/case_config_implicit.hpp"
 #include "io/toml_reader.hpp"
+#include "io/unit_system.hpp"
 
 namespace sf {
 
@@ -600,6 +601,19 @@ void read_output(const TomlSection& top, const fs::path& folder, OutputConfig& o
   }
 }
 
+/// `units`: a consistent LENGTH-TIME-MASS-FORCE-STRESS system (parse_unit_system).
+void read_units(const TomlSection& top, std::string& units) {
+  if (!top.read_string("units", units)) {
+    return;
+  }
+  try {
+    parse_unit_system(units);
+  } catch (const std::invalid_argument& error) {
+    top.fail_at(*top.find("units"), "units",
+                fmt::format("{}; got {}", error.what(), quote_toml_string(units)));
+  }
+}
+
 std::string read_text_file(const fs::path& file) {
   std::error_code error;
   if (!fs::exists(file, error)) {
@@ -659,7 +673,7 @@ CaseConfig read_case(const fs::path& case_file) {
                   "load", "initial_velocity", "prescribed_velocity", "control", "output",
                   "analysis", "implicit", "springback"});
   top.read_string("title", config.title, Presence::optional, true);
-  top.read_string("units", config.units);
+  read_units(top, config.units);
   read_materials(top, folder, config.materials);
   read_blank(top, folder, config, config.blank);
   read_tools(top, folder, config.tools);

@@ -260,7 +260,9 @@ struct SpringbackConfig {
 struct CaseConfig {
   std::filesystem::path file;  ///< the case file, absolute
   std::string title;
-  std::string units = "mm-s-tonne-N-MPa";  ///< informational
+  /// "LENGTH-TIME-MASS-FORCE-STRESS", checked for consistency (parse_unit_system); it names the
+  /// units in messages and output, the solver itself is unit-agnostic.
+  std::string units = "mm-s-tonne-N-MPa";
   BlankConfig blank;
   std::vector<MaterialConfig> materials;
   std::vector<ToolConfig> tools;
