@@ -21,6 +21,9 @@ using Clock = std::chrono::steady_clock;
 
 // The full Newton step is kept unless it multiplies the residual norm by more than this.
 constexpr double kResidualGrowthLimit = 1e3;
+// An increment diverges (and is cut) when an iteration leaves the residual norm more than this
+// times its norm at the start of the increment (docs/static-analysis.md).
+constexpr double kDivergenceFactor = 1e6;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -60,6 +63,7 @@ class NewtonSolver {
       p->residual.setZero(dofs.equation_count());
     }
     delta_.setZero(dofs.equation_count());
+    rotation_.setZero(3, n);
     report_.colours = tangent_.colour_count();
     report_.equations = dofs.equation_count();
   }
@@ -119,19 +123,30 @@ class NewtonSolver {
       record.iterations.push_back(iteration);
       log_verbose("    iteration {}: residual {:.3e}, correction {:.3e}, line search {:.3f}\n",
                   it + 1, iteration.residual, iteration.correction, step);
-      if (!std::isfinite(current_.residual_norm) || current_.residual_norm > 1e6 * initial_norm) {
-        record.failure = fmt::format("iteration {}: the residual diverged to {:.3e} (relative)",
-                                     it + 1, iteration.residual);
+      if (!std::isfinite(current_.residual_norm)) {
+        record.failure = fmt::format("iteration {}: the residual is not finite", it + 1);
+        return false;
+      }
+      if (current_.residual_norm > kDivergenceFactor * initial_norm) {
+        record.failure = fmt::format(
+            "iteration {}: the residual diverged: {:.3e} times its norm at the start of the "
+            "increment, beyond the limit {:.0e} (residual {:.3e} of the reference force, largest "
+            "at {})",
+            it + 1, current_.residual_norm / initial_norm, kDivergenceFactor, iteration.residual,
+            worst_node());
         return false;
       }
       converged = options_.linear || (iteration.residual <= c.force_tolerance &&
                                       iteration.correction <= c.displacement_tolerance);
     }
     if (!converged) {
+      const double correction =
+          record.iterations.empty() ? 0.0 : record.iterations.back().correction;
       record.failure = fmt::format(
-          "no convergence in {} iterations: residual {:.3e} (tolerance {:.1e}), largest at {}",
+          "no convergence in {} iterations: residual {:.3e} (tolerance {:.1e}), last correction "
+          "{:.3e} (tolerance {:.1e}); the residual is largest at {}",
           max_iterations, current_.residual_norm / current_.reference, c.force_tolerance,
-          worst_node());
+          correction, c.displacement_tolerance, worst_node());
       return false;
     }
     record.converged = true;
@@ -151,10 +166,17 @@ class NewtonSolver {
     }
     report_.external_work += external;
     body_.commit(current_.du, current_.state);
+    rotation_ += current_.dtheta;
     return true;
   }
 
   const StiffnessSolver& solver() const { return solver_; }
+
+  /// The last converged increment (after run_increment returned true).
+  ConvergedIncrement converged() const {
+    return {current_.du,    current_.dtheta, current_.f_int, current_.m_int,
+            current_.f_ext, current_.m_ext,  rotation_};
+  }
 
   /// N/mm, the stabilising springs on every free translation, anchored at the increment's start.
   void set_stabilization(double k) { spring_ = k; }
@@ -361,6 +383,7 @@ class NewtonSolver {
   VectorX delta_;
   VectorX solved_for_, product_;  // the right-hand side of the last solve, and K delta
   Matrix3X x_trial_, f_ext_start_, m_ext_start_;
+  Matrix3X rotation_;          // rad, the converged rotation increments summed over the step
   std::vector<int> diagonal_;  // positions of the translations' diagonal entries in stiffness_
   double spring_ = 0.0;        // N/mm, stabilising springs (StaticStepOptions::stabilization)
   double lambda_end_ = 0.0;    // the load factor the increment being solved ends at
@@ -465,7 +488,7 @@ StaticStepReport solve_static_step(StaticShellBody& body, const DofMap& dofs,
                           : std::string());
       // A stabilised step reports load factor 1 once it has settled there.
       if (on_converged && !(stabilized && lambda >= 1.0 - 1e-12)) {
-        on_converged(lambda, body, report);
+        on_converged(lambda, body, report, newton.converged());
       }
       // After two good increments at a cut size, try twice the size again (up to the nominal).
       if (cut_level > 0 && ++successes_since_cut >= 2) {
@@ -487,13 +510,16 @@ StaticStepReport solve_static_step(StaticShellBody& body, const DofMap& dofs,
           lambda, target, cut_level - 1, record.failure,
           stabilized ? ", or stronger stabilising springs" : ""));
     }
-    log_info("  increment to load factor {:.4f} failed ({}); halved\n", target, record.failure);
     step *= 0.5;
+    log_info(
+        "  increment to load factor {:.4f} failed ({}); halved ({} of {}): tried again from load "
+        "factor {:.4f} to {:.4f}\n",
+        target, record.failure, cut_level, c.max_cuts, lambda, std::min(1.0, lambda + step));
   }
   if (stabilized) {
     settle(newton, options, report);
     if (on_converged) {
-      on_converged(1.0, body, report);
+      on_converged(1.0, body, report, newton.converged());
     }
   }
   report.solver = newton.solver().totals();
