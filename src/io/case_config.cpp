@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "io/case_config_history.hpp"
 #include "io/case_config_implicit.hpp"
 #include "io/toml_reader.hpp"
 #include "io/unit_system.hpp"
@@ -671,7 +672,7 @@ CaseConfig read_case(const fs::path& case_file) {
   const TomlSection top(root, "", file);
   top.check_keys({"title", "units", "blank", "materials", "tools", "contact", "boundary", "draw_in",
                   "load", "initial_velocity", "prescribed_velocity", "control", "output",
-                  "analysis", "implicit", "springback"});
+                  "analysis", "implicit", "springback", "history"});
   top.read_string("title", config.title, Presence::optional, true);
   read_units(top, config.units);
   read_materials(top, folder, config.materials);
@@ -686,6 +687,7 @@ CaseConfig read_case(const fs::path& case_file) {
   read_control(top, config, config.control);
   read_output(top, folder, config.output);
   read_implicit_sections(top, config);
+  read_history_groups(top, config);
   return config;
 }
 

@@ -188,6 +188,16 @@ struct DrawInConfig {
   std::string source;  ///< where the measured value comes from
 };
 
+/// A node group whose motion and reaction the history records each row ([[history]]): the mean
+/// over its nodes of the displacement, velocity and rotation, and the sum of the reactions.
+struct HistoryGroupConfig {
+  std::string group;         ///< physical group of blank nodes (points, curves or surfaces)
+  bool displacement = true;  ///< mean displacement (mm)
+  bool velocity = true;      ///< mean velocity (mm/s); explicit runs only
+  bool rotation = true;      ///< mean rotation (rad), the summed rotation increments
+  bool reaction = true;      ///< summed reaction force (N) and moment (N mm) of the constraints
+};
+
 struct OutputConfig {
   std::string directory = "results";  ///< relative to the case folder unless given with -o
   bool stress_layers = true;          ///< write mid, top and bottom stress per element
@@ -271,6 +281,7 @@ struct CaseConfig {
   ControlConfig control;
   OutputConfig output;
   std::vector<DrawInConfig> draw_ins;                           ///< [[draw_in]] tables
+  std::vector<HistoryGroupConfig> history_groups;               ///< [[history]] tables
   std::vector<LoadConfig> loads;                                ///< [[load]] tables
   std::vector<InitialVelocityConfig> initial_velocities;        ///< [[initial_velocity]]
   std::vector<PrescribedVelocityConfig> prescribed_velocities;  ///< [[prescribed_velocity]]

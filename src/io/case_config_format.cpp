@@ -4,6 +4,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/case_config.hpp"
@@ -246,6 +247,22 @@ void write_draw_in(TomlWriter& w, const DrawInConfig& draw_in) {
   w.string("source", draw_in.source);
 }
 
+void write_history_group(TomlWriter& w, const HistoryGroupConfig& h) {
+  w.array_header("history");
+  w.string("group", h.group);
+  std::string quantities;
+  const std::pair<bool, const char*> flags[] = {{h.displacement, "displacement"},
+                                                {h.velocity, "velocity"},
+                                                {h.rotation, "rotation"},
+                                                {h.reaction, "reaction"}};
+  for (const auto& [on, name] : flags) {
+    if (on) {
+      quantities += fmt::format("{}\"{}\"", quantities.empty() ? "" : ", ", name);
+    }
+  }
+  w.raw("quantities", "[" + quantities + "]");
+}
+
 void write_load(TomlWriter& w, const LoadConfig& load) {
   w.array_header("load");
   w.string("group", load.group);
@@ -387,6 +404,9 @@ std::string format_resolved_case(const CaseConfig& config) {
   }
   for (const auto& load : config.loads) {
     write_load(w, load);
+  }
+  for (const auto& h : config.history_groups) {
+    write_history_group(w, h);
   }
   for (const auto& iv : config.initial_velocities) {
     write_initial_velocity(w, iv);

@@ -93,6 +93,9 @@ void read_blank(const CaseConfig& config, Model& model) {
   for (const PrescribedVelocityConfig& v : config.prescribed_velocities) {
     names.push_back(v.group);
   }
+  for (const HistoryGroupConfig& h : config.history_groups) {
+    names.push_back(h.group);
+  }
   if (config.springback && config.springback->u_channel) {
     names.push_back(config.springback->u_channel->section);
   }

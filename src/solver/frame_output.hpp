@@ -7,6 +7,7 @@
 
 #include "io/results_writer.hpp"
 #include "model/model.hpp"
+#include "solver/group_history.hpp"
 #include "solver/search_audit_recorder.hpp"
 #include "solver/solution_state.hpp"
 
@@ -33,6 +34,11 @@ class FrameOutput {
   /// these coordinates (mm) rather than the current ones: a linear analysis refers its stresses
   /// to the undeformed geometry (null = the current coordinates again).
   void set_stress_geometry(const Matrix3X* x) { stress_geometry_ = x; }
+  /// From now on, reactions in the history are those of the components `held` holds (per node, as
+  /// NodalConstraints::mask; the caller keeps it alive), e.g. a static step's holds with the ones
+  /// it added for rigid-body modes; null = the explicit run's (boundary conditions and prescribed
+  /// velocities).
+  void set_held_mask(const std::vector<unsigned char>* held) { held_ = held; }
   /// The search audits run with the frames and history rows (contact pairs with audit = true).
   const SearchAuditRecorder& search_audits() const { return audits_; }
 
@@ -42,6 +48,7 @@ class FrameOutput {
   Matrix3X displacement_;
   bool has_springback_field_ = false;
   const Matrix3X* stress_geometry_ = nullptr;
+  const std::vector<unsigned char>* held_ = nullptr;
   Matrix3X springback_reference_;     ///< mm, x_formed (empty until set)
   Matrix3X springback_displacement_;  ///< mm
   VectorX plastic_strain_;
@@ -53,9 +60,10 @@ class FrameOutput {
   long last_history_cycle_ = -1;  ///< one row per cycle at most
 };
 
-/// The history columns, in order: time, the step taken and the stable step with its limiting
-/// element, the energies, the added mass, then per tool its travel, force and contact node count,
-/// then per audited contact pair its search misses (docs/results-format.md).
-std::vector<std::string> history_columns(const Model& model);
+/// The history columns with their units (the case's), in order: time, the step taken and the
+/// stable step with its limiting element, the energies, the added mass, then per tool its travel,
+/// speed, force and contact node count, the draw-ins, per audited contact pair its search misses,
+/// then the [[history]] groups' columns (docs/results-format.md).
+std::vector<HistoryColumn> history_columns(const Model& model);
 
 }  // namespace sf

@@ -43,23 +43,26 @@ ImplicitStepSummary run_implicit_springback(Model& model, SolutionState& s, Fram
                               ? model.config.springback->stabilization * body.membrane_stiffness()
                               : 0.0;
   const double t_formed = s.time;
+  const Matrix3X rotation_formed = s.rotation;
   const double frame_interval = model.end_time / model.config.control.output_frames;
   s.v.setZero();
   s.omega.setZero();
   s.f_contact.setZero();
   log_info("springback (implicit): releasing {:.4g} N of tool forces over {} equations\n",
            load.reference_force, constraints.dofs.equation_count());
-  summary.report = solve_static_step(body, constraints.dofs, load, options,
-                                     [&](double lambda, const StaticShellBody& b,
-                                         const StaticStepReport&, const ConvergedIncrement&) {
-                                       s.x = b.x();
-                                       s.shell = b.state();
-                                       s.time = t_formed + lambda * frame_interval;
-                                       s.cycle += 1;
-                                       if (output) {
-                                         output->write_frame(model, s);
-                                       }
-                                     });
+  summary.report =
+      solve_static_step(body, constraints.dofs, load, options,
+                        [&](double lambda, const StaticShellBody& b, const StaticStepReport&,
+                            const ConvergedIncrement& increment) {
+                          s.x = b.x();
+                          s.rotation = rotation_formed + increment.rotation;
+                          s.shell = b.state();
+                          s.time = t_formed + lambda * frame_interval;
+                          s.cycle += 1;
+                          if (output) {
+                            output->write_frame(model, s);
+                          }
+                        });
   s.energies.internal += summary.report.internal_work;
   s.energies.external_work += summary.report.external_work;
   summary.wall_seconds =

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "core/log.hpp"
 #include "model/external_loads.hpp"
@@ -213,6 +214,23 @@ void print_contacts(const Model& model, const UnitSystem& units) {
   }
 }
 
+void print_history_groups(const Model& model) {
+  for (const HistoryGroupConfig& h : model.config.history_groups) {
+    std::string quantities;
+    const std::pair<bool, const char*> flags[] = {{h.displacement, "mean displacement"},
+                                                  {h.velocity, "mean velocity"},
+                                                  {h.rotation, "mean rotation"},
+                                                  {h.reaction, "summed reaction"}};
+    for (const auto& [on, name] : flags) {
+      if (on) {
+        quantities += fmt::format("{}{}", quantities.empty() ? "" : ", ", name);
+      }
+    }
+    log_info("History     '{}' ({} nodes): {}\n", h.group, model.blank.group(h.group).nodes.size(),
+             quantities);
+  }
+}
+
 void print_time_control(const Model& model, const UnitSystem& units) {
   const ControlConfig& control = model.config.control;
   if (is_static(model.config)) {
@@ -278,6 +296,7 @@ void print_model(const Model& model) {
   print_loads(model, units);
   print_tools(model, units);
   print_contacts(model, units);
+  print_history_groups(model);
   print_time_control(model, units);
 }
 

@@ -9,13 +9,16 @@
 
 #include "core/build_info.hpp"
 #include "core/errors.hpp"
+#include "io/unit_system.hpp"
 #include "solver/draw_in.hpp"
 #include "solver/implicit_summary.hpp"
 
 namespace sf {
 
-RunSummary make_run_summary(const Model& model, const SolutionState& s, double wall_seconds) {
+RunSummary make_run_summary(const Model& model, const SolutionState& s, double wall_seconds,
+                            const std::vector<unsigned char>* held) {
   RunSummary r;
+  r.units = model.config.units;
   r.cycles = s.cycle;
   r.end_time = s.time;
   r.wall_seconds = wall_seconds;
@@ -70,8 +73,80 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
                     std::abs(end_stroke - dc.measured_stroke) <= 1e-6 * dc.measured_stroke);
     r.draw_ins.push_back(d);
   }
+  for (const HistoryGroupConfig& h : model.config.history_groups) {
+    const NodeGroup& group = model.blank.group(h.group);
+    r.history_groups.push_back({h.group, static_cast<int>(group.nodes.size()), h,
+                                measure_group(model, s, group.nodes, held)});
+  }
   return r;
 }
+
+namespace {
+
+std::string format_vector(const Vec3& v) {
+  return fmt::format("({:.6g}, {:.6g}, {:.6g})", v.x(), v.y(), v.z());
+}
+
+template <typename Add>
+void add_history_groups(const RunSummary& r, const Add& add) {
+  const UnitSystem units = parse_unit_system(r.units);
+  for (const HistoryGroupResult& g : r.history_groups) {
+    std::string text;
+    const auto put = [&text](const std::string& part) {
+      text += (text.empty() ? "" : ", ") + part;
+    };
+    if (g.quantities.displacement) {
+      put(fmt::format("displacement {} {}", format_vector(g.values.displacement), units.length));
+    }
+    if (g.quantities.velocity) {
+      put(fmt::format("velocity {} {}", format_vector(g.values.velocity), units.velocity()));
+    }
+    if (g.quantities.rotation) {
+      put(fmt::format("rotation {} rad", format_vector(g.values.rotation)));
+    }
+    if (g.quantities.reaction) {
+      put(fmt::format("reaction {} {}, moment {} {}", format_vector(g.values.reaction.force),
+                      units.force, format_vector(g.values.reaction.moment), units.moment()));
+    }
+    add(fmt::format("  group {:<13} ({} nodes) {}", g.group, g.nodes, text));
+  }
+}
+
+nlohmann::json vector_json(const Vec3& v) {
+  return nlohmann::json::array({v.x(), v.y(), v.z()});
+}
+
+nlohmann::json history_groups_json(const RunSummary& r) {
+  const UnitSystem units = parse_unit_system(r.units);
+  nlohmann::json j = nlohmann::json::object();
+  for (const HistoryGroupResult& g : r.history_groups) {
+    nlohmann::json entry = {{"nodes", g.nodes}};
+    nlohmann::json unit_names = nlohmann::json::object();
+    if (g.quantities.displacement) {
+      entry["displacement"] = vector_json(g.values.displacement);
+      unit_names["displacement"] = units.length;
+    }
+    if (g.quantities.velocity) {
+      entry["velocity"] = vector_json(g.values.velocity);
+      unit_names["velocity"] = units.velocity();
+    }
+    if (g.quantities.rotation) {
+      entry["rotation"] = vector_json(g.values.rotation);
+      unit_names["rotation"] = "rad";
+    }
+    if (g.quantities.reaction) {
+      entry["reaction_force"] = vector_json(g.values.reaction.force);
+      entry["reaction_moment"] = vector_json(g.values.reaction.moment);
+      unit_names["reaction_force"] = units.force;
+      unit_names["reaction_moment"] = units.moment();
+    }
+    entry["units"] = unit_names;
+    j[g.group] = entry;
+  }
+  return j;
+}
+
+}  // namespace
 
 std::string format_run_summary(const RunSummary& r) {
   std::string text;
@@ -127,6 +202,7 @@ std::string format_run_summary(const RunSummary& r) {
       add(fmt::format("  draw-in {:<11} {:7.3f} mm", d.name, d.computed));
     }
   }
+  add_history_groups(r, add);
   for (const SearchAuditSummary& a : r.search_audits) {
     if (a.max_misses == 0) {
       add(fmt::format(
@@ -214,6 +290,9 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
                                  {"max_misses_time_s", a.max_misses_time},
                                  {"total_misses", a.total_misses},
                                  {"max_gap_error_mm", a.max_gap_error}};
+  }
+  if (!r.history_groups.empty()) {
+    j["history"] = history_groups_json(r);
   }
   if (r.static_step) {
     j["static_step"] = implicit_step_json(*r.static_step);

@@ -7,6 +7,7 @@
 
 #include "implicit/static_step.hpp"
 #include "model/model.hpp"
+#include "solver/group_history.hpp"
 #include "solver/solution_state.hpp"
 #include "solver/springback.hpp"
 
@@ -46,6 +47,14 @@ struct SearchAuditSummary {
   double max_gap_error = 0.0;    ///< mm
 };
 
+/// A [[history]] group at the end of the run (of forming, when a springback follows).
+struct HistoryGroupResult {
+  std::string group;
+  int nodes = 0;
+  HistoryGroupConfig quantities;  ///< which of the values below the case asked for
+  GroupMeasures values;           ///< mean motion and summed reaction (group_history.hpp)
+};
+
 struct RunSummary {
   long cycles = 0;
   double end_time = 0.0;              ///< s
@@ -70,11 +79,16 @@ struct RunSummary {
   std::vector<ToolSummary> tools;
   std::vector<DrawInResult> draw_ins;
   std::vector<SearchAuditSummary> search_audits;  ///< filled by the driver when results are written
+  std::vector<HistoryGroupResult> history_groups;  ///< the case's [[history]] groups
+  std::string units = "mm-s-tonne-N-MPa";          ///< the case's unit system
   std::optional<ImplicitStepSummary> static_step;  ///< a static analysis
   std::optional<SpringbackSummary> springback;     ///< after an explicit forming run
 };
 
-RunSummary make_run_summary(const Model& model, const SolutionState& state, double wall_seconds);
+/// held: the components whose reactions the history groups sum (as sum_reactions; null = the
+/// explicit run's holds).
+RunSummary make_run_summary(const Model& model, const SolutionState& state, double wall_seconds,
+                            const std::vector<unsigned char>* held = nullptr);
 /// The end-of-run summary as text for the console.
 std::string format_run_summary(const RunSummary& summary);
 /// Writes summary.json (machine-readable, with the version and git hash).

@@ -90,6 +90,8 @@ RunSummary run_static(Model& model, const RunOptions& options, SolutionState* fi
   std::unique_ptr<FrameOutput> output;
   if (options.write_results) {
     output = std::make_unique<FrameOutput>(model, options.output_directory);
+    // Reactions on every held degree of freedom, the holds added for rigid-body modes included.
+    output->set_held_mask(&constraints.dofs.held());
     output->write_frame(model, s);
     output->append_history(model, s);
   }
@@ -123,6 +125,7 @@ RunSummary run_static(Model& model, const RunOptions& options, SolutionState* fi
                               const StaticStepReport& report, const ConvergedIncrement& increment) {
                             s.x = b.x();
                             s.shell = b.state();
+                            s.rotation = increment.rotation;
                             s.time = lambda * end_time;
                             s.cycle += 1;
                             s.energies.internal = report.internal_work;
@@ -143,7 +146,7 @@ RunSummary run_static(Model& model, const RunOptions& options, SolutionState* fi
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   step.wall_seconds = wall;
-  RunSummary summary = make_run_summary(model, s, wall);
+  RunSummary summary = make_run_summary(model, s, wall, &constraints.dofs.held());
   summary.static_step = std::move(step);
   if (final_state) {
     *final_state = std::move(s);
