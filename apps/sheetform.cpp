@@ -5,6 +5,9 @@
 //   sheetform check CASE            validate a case and print the model it builds
 //   sheetform mesh  CASE [-o DIR]   write only the meshes (HDF5 + XDMF, and .msh of each .geo)
 //
+// Each takes --set KEY=VALUE (repeatable): a case-file key overridden before the case is read,
+// e.g. --set blank.parameters.n=32 for a .geo parameter (docs/case-file.md).
+//
 // Exit codes: 0 success, 2 bad input, 3 the run went unstable, 4 a static step did not converge
 // (or its stiffness is singular), 1 an internal error.
 #include <CLI/CLI.hpp>
@@ -30,9 +33,10 @@ namespace {
 struct Arguments {
   std::string case_file;
   std::string output_directory;
-  double stroke = -1.0;    // mm; < 0 = as in the case
-  double end_time = -1.0;  // s; < 0 = as in the case
-  std::string search;      // "" = as in the case; else the search of every [[contact]]
+  double stroke = -1.0;          // mm; < 0 = as in the case
+  double end_time = -1.0;        // s; < 0 = as in the case
+  std::string search;            // "" = as in the case; else the search of every [[contact]]
+  std::vector<std::string> set;  // --set KEY=VALUE: case-file keys overridden before reading
   bool quiet = false;
   bool verbose = false;
 };
@@ -76,7 +80,7 @@ fs::path output_directory(const Arguments& args, const sf::CaseConfig& config) {
 
 sf::Model load(const Arguments& args) {
   // 1. Read and validate the case file.
-  sf::CaseConfig config = sf::read_case(args.case_file);
+  sf::CaseConfig config = sf::read_case(args.case_file, args.set);
   apply_overrides(args, config);
   // 2. Mesh every part and build the model.
   return sf::build_model(config);
@@ -128,7 +132,8 @@ int mesh(const Arguments& args) {
   auto write_msh_of = [&out](const std::string& part, const sf::MeshSourceConfig& mesh,
                              bool recombine) {
     if (mesh.file.extension() == ".geo") {
-      sf::write_msh(mesh.file, mesh.element_size, recombine, out / (part + ".msh"));
+      sf::write_msh(mesh.file, mesh.element_size, recombine, out / (part + ".msh"),
+                    mesh.parameters);
     }
   };
   write_msh_of("blank", c.blank.mesh, c.blank.element == "quad");
@@ -157,6 +162,11 @@ int main(int argc, char** argv) {
     sub->add_flag("-q,--quiet", args.quiet, "print errors only");
     sub->add_flag("-v,--verbose", args.verbose,
                   "print more: gmsh's messages, every Newton iteration of a static step");
+    sub->add_option("--set", args.set,
+                    "override a case-file key before the case is read, KEY=VALUE with KEY a "
+                    "dotted path (blank.parameters.n=32, tools[1].element_size=1.5, "
+                    "control.output_frames=10) and VALUE a TOML value; repeatable")
+        ->allow_extra_args(false);
   };
   CLI::App* run_cmd = app.add_subcommand("run", "run a case and write results for ParaView");
   add_common(run_cmd);

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "io/geo_parameter.hpp"
+
 namespace sf {
 
 /// A piecewise-linear curve value(time), given as points [[t0, v0], [t1, v1], ...] with strictly
@@ -61,6 +63,9 @@ struct MeshSourceConfig {
   std::filesystem::path file;  ///< absolute (resolved against the case file's folder)
   std::string group;           ///< physical group name holding the part's surface
   double element_size = 0.0;   ///< mm; 0 = leave the .geo file's own sizes (ignored for .msh)
+  /// .geo only: numbers set before gmsh parses the file, sorted by name; each must be declared by
+  /// the file with DefineConstant[] (checked when the model is built: load_gmsh_model).
+  std::vector<GeoParameter> parameters{};
 };
 
 struct BlankConfig {
@@ -296,8 +301,11 @@ struct CaseConfig {
 };
 
 /// Reads and validates a case file. Throws InputError naming the file, line and key for an unknown
-/// key, a wrong type, an out-of-range value, a missing file or a dangling name.
-CaseConfig read_case(const std::filesystem::path& case_file);
+/// key, a wrong type, an out-of-range value, a missing file or a dangling name. `overrides`
+/// ("KEY=VALUE", e.g. "blank.parameters.n=32") replace or add keys before the case is read
+/// (apply_case_overrides); errors in their values name the override.
+CaseConfig read_case(const std::filesystem::path& case_file,
+                     const std::vector<std::string>& overrides = {});
 
 /// The fully resolved case (every default filled) as TOML text, written beside the results.
 std::string format_resolved_case(const CaseConfig& config);

@@ -89,6 +89,14 @@ void write_mesh_source(TomlWriter& w, const MeshSourceConfig& mesh) {
   w.string("mesh", mesh.file.string());
   w.string("group", mesh.group);
   w.number("element_size", mesh.element_size, "mm; 0 = the .geo file's own sizes");
+  if (!mesh.parameters.empty()) {
+    std::string table;
+    for (const GeoParameter& p : mesh.parameters) {
+      table +=
+          fmt::format("{}{} = {}", table.empty() ? "" : ", ", p.name, format_toml_number(p.value));
+    }
+    w.raw("parameters", "{ " + table + " }");
+  }
 }
 
 void write_blank(TomlWriter& w, const BlankConfig& blank) {

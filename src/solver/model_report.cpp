@@ -214,6 +214,23 @@ void print_contacts(const Model& model, const UnitSystem& units) {
   }
 }
 
+void print_mesh_parameters(const CaseConfig& config) {
+  const auto print = [](const std::string& part, const MeshSourceConfig& mesh) {
+    if (mesh.parameters.empty()) {
+      return;
+    }
+    std::string list;
+    for (const GeoParameter& p : mesh.parameters) {
+      list += fmt::format("{}{} = {}", list.empty() ? "" : ", ", p.name, p.value);
+    }
+    log_info("Parameters  {} ({}): {}\n", part, mesh.file.filename().string(), list);
+  };
+  print("blank", config.blank.mesh);
+  for (const ToolConfig& t : config.tools) {
+    print(fmt::format("tool '{}'", t.name), t.mesh);
+  }
+}
+
 void print_history_groups(const Model& model) {
   for (const HistoryGroupConfig& h : model.config.history_groups) {
     std::string quantities;
@@ -288,6 +305,7 @@ void print_model(const Model& model) {
   log_info("Blank       {} nodes, {} elements, t = {} {}, material '{}'\n", blank.mesh.nodes.cols(),
            element_count(blank.part), config.blank.thickness, units.length, config.blank.material);
   log_info("Elements    {}\n", describe_shell_formulation(blank.part, is_static(config)));
+  print_mesh_parameters(config);
   print_material(config, units);
   if (!is_static(config)) {
     print_mass(model, units);
