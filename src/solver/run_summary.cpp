@@ -148,58 +148,86 @@ nlohmann::json history_groups_json(const RunSummary& r) {
 
 }  // namespace
 
-std::string format_run_summary(const RunSummary& r) {
-  std::string text;
-  auto add = [&text](const std::string& line) { text += line + "\n"; };
-  add(fmt::format("Run summary"));
-  add(fmt::format("  cycles              {}", r.cycles));
-  add(fmt::format("  end time            {:.6e} s", r.end_time));
-  add(fmt::format("  wall time           {:.2f} s ({:.0f} ns per element-cycle, {} elements)",
-                  r.wall_seconds, r.ns_per_element_cycle, r.elements));
+// The lines of an explicit run's cost, time step and mass (a static analysis has none of them).
+template <typename Add>
+void add_explicit_run_lines(const RunSummary& r, const UnitSystem& u, const Add& add) {
   add(fmt::format("  time split          elements {:.0f} %, contact {:.0f} %, rest {:.0f} %",
                   100.0 * r.element_share, 100.0 * r.contact_share,
                   100.0 * (1.0 - r.element_share - r.contact_share)));
-  add(fmt::format("  time step           {:.4e} to {:.4e} s (smallest limited by element {})",
-                  r.min_time_step, r.max_time_step, r.min_time_step_element));
-  add(
-      fmt::format("  energies [N mm]     kinetic {:.4e}, internal {:.4e}, hourglass {:.4e}, "
-                  "contact {:.4e}, external work {:.4e}",
-                  r.energies.kinetic, r.energies.internal, r.energies.hourglass, r.energies.contact,
-                  r.energies.external_work));
-  add(
-      fmt::format("                      damping {:.4e}, mass scaling {:.4e}; plastic work {:.4e} "
-                  "(part of internal), friction work {:.4e} (part of contact)",
-                  r.energies.damping, r.energies.mass_scaling, r.energies.plastic_work,
-                  r.energies.friction_work));
+  add(fmt::format("  time step           {:.4e} to {:.4e} {} (smallest limited by element {})",
+                  r.min_time_step, r.max_time_step, u.time, r.min_time_step_element));
+}
+
+template <typename Add>
+void add_energy_lines(const RunSummary& r, const UnitSystem& u, const Add& add) {
+  const Energies& e = r.energies;
+  if (r.static_step) {
+    add(fmt::format("  energies [{}]     internal {:.4e}, external work {:.4e}", u.moment(),
+                    e.internal, e.external_work));
+  } else {
+    add(
+        fmt::format("  energies [{}]     kinetic {:.4e}, internal {:.4e}, hourglass {:.4e}, "
+                    "contact {:.4e}, external work {:.4e}",
+                    u.moment(), e.kinetic, e.internal, e.hourglass, e.contact, e.external_work));
+    add(
+        fmt::format("                      damping {:.4e}, mass scaling {:.4e}; plastic work "
+                    "{:.4e} (part of internal), friction work {:.4e} (part of contact)",
+                    e.damping, e.mass_scaling, e.plastic_work, e.friction_work));
+  }
   add(fmt::format("  energy balance      {:+.3e} (total - external work, relative)",
-                  r.energies.balance_error()));
+                  e.balance_error()));
+  if (r.static_step) {
+    return;
+  }
   add(fmt::format("  kinetic / internal  {:.4f} at the end, {:.4f} at most after 10% of the run",
-                  r.energies.kinetic_ratio(), r.peak_kinetic_ratio));
-  add(fmt::format(
-      "  added mass          {:.4e} tonne, {:.2f} % of {:.4e} tonne ({} elements scaled)",
-      r.added_mass, 100.0 * r.added_mass_fraction, r.physical_mass, r.scaled_elements));
-  add(fmt::format("  thickness           {:.4f} to {:.4f} mm", r.min_thickness, r.max_thickness));
+                  e.kinetic_ratio(), r.peak_kinetic_ratio));
+  add(fmt::format("  added mass          {:.4e} {}, {:.2f} % of {:.4e} {} ({} elements scaled)",
+                  r.added_mass, u.mass, 100.0 * r.added_mass_fraction, r.physical_mass, u.mass,
+                  r.scaled_elements));
+}
+
+std::string format_run_summary(const RunSummary& r) {
+  std::string text;
+  auto add = [&text](const std::string& line) { text += line + "\n"; };
+  const UnitSystem u = parse_unit_system(r.units);
+  add(fmt::format("Run summary"));
+  if (r.static_step) {
+    add(fmt::format("  increments          {} converged, to the pseudo-time {:.6e} {}", r.cycles,
+                    r.end_time, u.time));
+    add(fmt::format("  wall time           {:.2f} s ({} elements)", r.wall_seconds, r.elements));
+  } else {
+    add(fmt::format("  cycles              {}", r.cycles));
+    add(fmt::format("  end time            {:.6e} {}", r.end_time, u.time));
+    add(fmt::format("  wall time           {:.2f} s ({:.0f} ns per element-cycle, {} elements)",
+                    r.wall_seconds, r.ns_per_element_cycle, r.elements));
+    add_explicit_run_lines(r, u, add);
+  }
+  add_energy_lines(r, u, add);
+  add(fmt::format("  thickness           {:.4f} to {:.4f} {}", r.min_thickness, r.max_thickness,
+                  u.length));
   add(fmt::format("  max plastic strain  {:.4f}", r.max_plastic_strain));
   for (const ToolSummary& t : r.tools) {
-    add(fmt::format("  tool {:<14} travel {:8.3f} mm, force {:10.1f} N, peak {:10.1f} N{}", t.name,
-                    t.travel, t.final_force, t.peak_force,
+    add(fmt::format("  tool {:<14} travel {:8.3f} {}, force {:10.1f} {}, peak {:10.1f} {}{}",
+                    t.name, t.travel, u.length, t.final_force, u.force, t.peak_force, u.force,
                     t.force_controlled
-                        ? fmt::format(" (force-controlled: applied {:.1f} N, speed {:.4g} mm/s)",
-                                      t.applied_force, t.speed)
+                        ? fmt::format(" (force-controlled: applied {:.1f} {}, speed {:.4g} {})",
+                                      t.applied_force, u.force, t.speed, u.velocity())
                         : std::string()));
   }
   for (const DrawInResult& d : r.draw_ins) {
     if (d.measured >= 0.0 && !d.comparable) {
       add(fmt::format(
-          "  draw-in {:<11} {:7.3f} mm   (measured {:.3f} mm at {:g} mm of stroke; this run "
-          "ended at {:.3f} mm: not compared)",
-          d.name, d.computed, d.measured, d.measured_stroke, d.end_stroke));
+          "  draw-in {:<11} {:7.3f} {}   (measured {:.3f} {} at {:g} {} of stroke; this run "
+          "ended at {:.3f} {}: not compared)",
+          d.name, d.computed, u.length, d.measured, u.length, d.measured_stroke, u.length,
+          d.end_stroke, u.length));
     } else if (d.measured >= 0.0) {
       add(fmt::format(
-          "  draw-in {:<11} {:7.3f} mm   measured {:7.3f} mm   deviation {:+.1f} %  ({})", d.name,
-          d.computed, d.measured, 100.0 * (d.computed - d.measured) / d.measured, d.source));
+          "  draw-in {:<11} {:7.3f} {}   measured {:7.3f} {}   deviation {:+.1f} %  ({})", d.name,
+          d.computed, u.length, d.measured, u.length,
+          100.0 * (d.computed - d.measured) / d.measured, d.source));
     } else {
-      add(fmt::format("  draw-in {:<11} {:7.3f} mm", d.name, d.computed));
+      add(fmt::format("  draw-in {:<11} {:7.3f} {}", d.name, d.computed, u.length));
     }
   }
   add_history_groups(r, add);
@@ -213,9 +241,9 @@ std::string format_run_summary(const RunSummary& r) {
     }
     add(fmt::format(
         "  search audit {:<8} {} search: {} misses of {} nodes within reach at the end; "
-        "at most {} (t = {:.4e} s), {} over {} audits; largest gap error {:.3e} mm",
+        "at most {} (t = {:.4e} {}), {} over {} audits; largest gap error {:.3e} {}",
         a.tool, a.search, a.final_misses, a.final_nodes_checked, a.max_misses, a.max_misses_time,
-        a.total_misses, a.audits, a.max_gap_error));
+        u.time, a.total_misses, a.audits, a.max_gap_error, u.length));
   }
   if (r.static_step) {
     add("Static step");
