@@ -5,6 +5,7 @@
 #include "core/build_info.hpp"
 #include "io/unit_system.hpp"
 #include "solver/draw_in.hpp"
+#include "solver/nodal_reactions.hpp"
 
 namespace sf {
 
@@ -103,6 +104,9 @@ FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& direct
   stress_mid_.resize(6, n_elements);
   stress_top_.resize(6, n_elements);
   stress_bottom_.resize(6, n_elements);
+  needs_reactions_ = history_needs_reactions(model);
+  reaction_force_ = Matrix3X::Zero(3, model.blank.mesh.nodes.cols());
+  reaction_moment_ = Matrix3X::Zero(3, model.blank.mesh.nodes.cols());
 }
 
 void FrameOutput::write_frame(const Model& model, const SolutionState& s) {
@@ -186,7 +190,11 @@ void FrameOutput::append_history(const Model& model, const SolutionState& s) {
   for (const SearchAuditRecord& r : audits_.records()) {
     row_[k++] = r.last.misses;
   }
-  record_history_groups(model, s, held_, std::span<double>(row_).subspan(k));
+  if (needs_reactions_) {
+    compute_nodal_reactions(model, s, held_, reaction_force_, reaction_moment_);
+  }
+  record_history_groups(model, s, {reaction_force_, reaction_moment_},
+                        std::span<double>(row_).subspan(k));
   writer_->append_history(row_);
 }
 

@@ -49,6 +49,9 @@ class FrameOutput {
   bool has_springback_field_ = false;
   const Matrix3X* stress_geometry_ = nullptr;
   const std::vector<unsigned char>* held_ = nullptr;
+  bool needs_reactions_ = false;      ///< a [[history]] group records reactions
+  Matrix3X reaction_force_;           ///< N per node, at the last history row
+  Matrix3X reaction_moment_;          ///< N mm per node
   Matrix3X springback_reference_;     ///< mm, x_formed (empty until set)
   Matrix3X springback_displacement_;  ///< mm
   VectorX plastic_strain_;

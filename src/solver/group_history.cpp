@@ -3,7 +3,7 @@
 namespace sf {
 
 GroupMeasures measure_group(const Model& model, const SolutionState& s, std::span<const int> nodes,
-                            const std::vector<unsigned char>* held) {
+                            const NodalReactionFields& reactions) {
   GroupMeasures m;
   if (nodes.empty()) {
     return m;
@@ -12,12 +12,13 @@ GroupMeasures measure_group(const Model& model, const SolutionState& s, std::spa
     m.displacement += s.x.col(node) - model.blank.mesh.nodes.col(node);
     m.velocity += s.v.col(node);
     m.rotation += s.rotation.col(node);
+    m.reaction_force += reactions.force.col(node);
+    m.reaction_moment += reactions.moment.col(node);
   }
   const double inverse_count = 1.0 / static_cast<double>(nodes.size());
   m.displacement *= inverse_count;
   m.velocity *= inverse_count;
   m.rotation *= inverse_count;
-  m.reaction = sum_reactions(model, s, nodes, held);
   return m;
 }
 
@@ -47,7 +48,7 @@ std::vector<HistoryColumn> history_group_columns(const Model& model, const UnitS
 }
 
 std::size_t record_history_groups(const Model& model, const SolutionState& s,
-                                  const std::vector<unsigned char>* held, std::span<double> row) {
+                                  const NodalReactionFields& reactions, std::span<double> row) {
   std::size_t k = 0;
   const auto put = [&row, &k](const Vec3& v) {
     for (int c = 0; c < 3; ++c) {
@@ -55,7 +56,7 @@ std::size_t record_history_groups(const Model& model, const SolutionState& s,
     }
   };
   for (const HistoryGroupConfig& h : model.config.history_groups) {
-    const GroupMeasures m = measure_group(model, s, model.blank.group(h.group).nodes, held);
+    const GroupMeasures m = measure_group(model, s, model.blank.group(h.group).nodes, reactions);
     if (h.displacement) {
       put(m.displacement);
     }
@@ -66,11 +67,20 @@ std::size_t record_history_groups(const Model& model, const SolutionState& s,
       put(m.rotation);
     }
     if (h.reaction) {
-      put(m.reaction.force);
-      put(m.reaction.moment);
+      put(m.reaction_force);
+      put(m.reaction_moment);
     }
   }
   return k;
+}
+
+bool history_needs_reactions(const Model& model) {
+  for (const HistoryGroupConfig& h : model.config.history_groups) {
+    if (h.reaction) {
+      return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace sf

@@ -12,6 +12,7 @@
 #include "io/unit_system.hpp"
 #include "solver/draw_in.hpp"
 #include "solver/implicit_summary.hpp"
+#include "solver/nodal_reactions.hpp"
 
 namespace sf {
 
@@ -73,10 +74,13 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
                     std::abs(end_stroke - dc.measured_stroke) <= 1e-6 * dc.measured_stroke);
     r.draw_ins.push_back(d);
   }
+  Matrix3X reaction_force, reaction_moment;
+  compute_nodal_reactions(model, s, held, reaction_force, reaction_moment);
   for (const HistoryGroupConfig& h : model.config.history_groups) {
     const NodeGroup& group = model.blank.group(h.group);
-    r.history_groups.push_back({h.group, static_cast<int>(group.nodes.size()), h,
-                                measure_group(model, s, group.nodes, held)});
+    r.history_groups.push_back(
+        {h.group, static_cast<int>(group.nodes.size()), h,
+         measure_group(model, s, group.nodes, {reaction_force, reaction_moment})});
   }
   return r;
 }
@@ -105,8 +109,8 @@ void add_history_groups(const RunSummary& r, const Add& add) {
       put(fmt::format("rotation {} rad", format_vector(g.values.rotation)));
     }
     if (g.quantities.reaction) {
-      put(fmt::format("reaction {} {}, moment {} {}", format_vector(g.values.reaction.force),
-                      units.force, format_vector(g.values.reaction.moment), units.moment()));
+      put(fmt::format("reaction {} {}, moment {} {}", format_vector(g.values.reaction_force),
+                      units.force, format_vector(g.values.reaction_moment), units.moment()));
     }
     add(fmt::format("  group {:<13} ({} nodes) {}", g.group, g.nodes, text));
   }
@@ -135,8 +139,8 @@ nlohmann::json history_groups_json(const RunSummary& r) {
       unit_names["rotation"] = "rad";
     }
     if (g.quantities.reaction) {
-      entry["reaction_force"] = vector_json(g.values.reaction.force);
-      entry["reaction_moment"] = vector_json(g.values.reaction.moment);
+      entry["reaction_force"] = vector_json(g.values.reaction_force);
+      entry["reaction_moment"] = vector_json(g.values.reaction_moment);
       unit_names["reaction_force"] = units.force;
       unit_names["reaction_moment"] = units.moment();
     }

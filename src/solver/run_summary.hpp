@@ -85,8 +85,8 @@ struct RunSummary {
   std::optional<SpringbackSummary> springback;     ///< after an explicit forming run
 };
 
-/// held: the components whose reactions the history groups sum (as sum_reactions; null = the
-/// explicit run's holds).
+/// held: the components whose reactions the history groups sum (as compute_nodal_reactions; null
+/// = the explicit run's holds).
 RunSummary make_run_summary(const Model& model, const SolutionState& state, double wall_seconds,
                             const std::vector<unsigned char>* held = nullptr);
 /// The end-of-run summary as text for the console.
