@@ -5,10 +5,12 @@
 //   sheetform check CASE            validate a case and print the model it builds
 //   sheetform mesh  CASE [-o DIR]   write only the meshes (HDF5 + XDMF, and .msh of each .geo)
 //
+// Each takes --set KEY=VALUE (repeatable): a case-file key overridden before the case is read,
+// e.g. --set blank.parameters.n=32 for a .geo parameter (docs/case-file.md).
+//
 // Exit codes: 0 success, 2 bad input, 3 the run went unstable, 4 a static step did not converge
 // (or its stiffness is singular), 1 an internal error.
 #include <CLI/CLI.hpp>
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -22,6 +24,7 @@
 #include "model/constraint_assembly.hpp"
 #include "solver/explicit_driver.hpp"
 #include "solver/frame_output.hpp"
+#include "solver/model_report.hpp"
 #include "solver/static_driver.hpp"
 
 namespace fs = std::filesystem;
@@ -31,9 +34,10 @@ namespace {
 struct Arguments {
   std::string case_file;
   std::string output_directory;
-  double stroke = -1.0;    // mm; < 0 = as in the case
-  double end_time = -1.0;  // s; < 0 = as in the case
-  std::string search;      // "" = as in the case; else the search of every [[contact]]
+  double stroke = -1.0;          // mm; < 0 = as in the case
+  double end_time = -1.0;        // s; < 0 = as in the case
+  std::string search;            // "" = as in the case; else the search of every [[contact]]
+  std::vector<std::string> set;  // --set KEY=VALUE: case-file keys overridden before reading
   bool quiet = false;
   bool verbose = false;
 };
@@ -75,119 +79,9 @@ fs::path output_directory(const Arguments& args, const sf::CaseConfig& config) {
   return config.file.parent_path() / config.output.directory;
 }
 
-void print_material(const sf::CaseConfig& config) {
-  const sf::MaterialConfig& m = config.blank_material();
-  using Type = sf::MaterialConfig::Type;
-  using Law = sf::HardeningConfig::Law;
-  std::string law = "elastic";
-  if (m.type == Type::hill48) {
-    const auto& d = config.blank.rolling_direction;
-    law = fmt::format("Hill48 (r0 {}, r45 {}, r90 {}; rolling direction ({:.3g}, {:.3g}, {:.3g}))",
-                      m.r0, m.r45, m.r90, d[0], d[1], d[2]);
-  } else if (m.type == Type::von_mises) {
-    law = "von Mises";
-  }
-  if (m.type != Type::elastic) {
-    static constexpr const char* names[] = {"Swift", "linear", "Voce", "tabulated"};
-    law += fmt::format(", {} hardening", names[static_cast<int>(m.hardening.law)]);
-    if (m.hardening.law == Law::tabulated) {
-      law += fmt::format(" ({})", m.hardening.table_file.string());
-    }
-  }
-  sf::log_info("Material    '{}': E = {} MPa, nu = {}, {}\n", m.name, m.young, m.poisson, law);
-}
-
-void print_model(const sf::Model& model) {
-  const sf::Blank& blank = model.blank;
-  sf::log_info("Case        {}\n", model.config.file.string());
-  if (!model.config.title.empty()) {
-    sf::log_info("Title       {}\n", model.config.title);
-  }
-  sf::log_info("Units       {}\n", model.config.units);
-  const sf::BlankConfig& bc = model.config.blank;
-  sf::log_info(
-      "Blank       {} nodes, {} quadrilateral shells (Belytschko-Lin-Tsay), {} triangular shells "
-      "(C0, DSG3), t = {} mm, {} {} thickness points, {} hourglass control {}, material '{}'\n",
-      blank.mesh.nodes.cols(), blank.mesh.quads.cols(), blank.mesh.triangles.cols(), bc.thickness,
-      bc.integration_points,
-      bc.integration_rule == sf::BlankConfig::IntegrationRule::lobatto ? "Lobatto" : "Gauss",
-      bc.hourglass_form == sf::BlankConfig::HourglassForm::stiffness ? "stiffness" : "viscous",
-      bc.hourglass_coefficient, bc.material);
-  print_material(model.config);
-  sf::log_info(
-      "Mass        {:.6e} tonne physical, {:.6e} tonne added by mass scaling ({:.2f} %, "
-      "{} elements)\n",
-      blank.physical_mass, blank.scaling.added_mass,
-      100.0 * blank.scaling.added_mass / blank.physical_mass, blank.scaling.scaled_elements);
-  if (blank.scaling.enabled()) {
-    sf::log_info(
-        "Mass scale  target step {:.4e} s; elements below it get mass during the run too\n",
-        blank.scaling.target_dt);
-  }
-  for (const sf::BoundaryConfig& b : model.config.boundaries) {
-    sf::log_info("Boundary    '{}': {} nodes, {}\n", b.group, blank.group(b.group).nodes.size(),
-                 sf::describe_boundary(b));
-  }
-  for (const sf::PrescribedMotion& p : model.prescribed_motions) {
-    sf::log_info("Prescribed  '{}': {} nodes, {} {} along ({:.3g}, {:.3g}, {:.3g}) ({})\n", p.group,
-                 p.nodes.size(), p.rotation ? "rotation" : "translation",
-                 p.kind == sf::PrescribedMotion::Kind::displacement ? "displacement" : "velocity",
-                 p.direction.x(), p.direction.y(), p.direction.z(), p.entry);
-  }
-  if (model.constraints.frames.count() > 0) {
-    const int framed = model.constraints.frames.count();
-    sf::log_info("Node axes   {} node{} in axes of {} own (from the constraints there)\n", framed,
-                 framed == 1 ? "" : "s", framed == 1 ? "its" : "their");
-  }
-  for (std::size_t i = 0; i < model.tools.size(); ++i) {
-    const sf::Tool& t = model.tools[i];
-    std::string motion = "fixed";
-    if (t.force_control) {
-      // Its frequency on the contact springs of its pair, against the bound build_model checks.
-      double k_sum = 0.0;
-      for (const sf::ContactInterface& c : model.contacts) {
-        if (c.tool == static_cast<int>(i)) {
-          k_sum += c.pair.stiffness.sum();
-        }
-      }
-      motion = fmt::format(
-          "force-controlled along ({:.3g}, {:.3g}, {:.3g}), mass {:.4e} tonne, damping {} 1/s; "
-          "sqrt(sum k / mass) dt = {:.3f}",
-          t.direction().x(), t.direction().y(), t.direction().z(), t.force_control->mass(),
-          t.force_control->damping(), std::sqrt(k_sum / t.force_control->mass()) * model.time_step);
-    } else if (t.motion.moves()) {
-      motion = fmt::format("moves along ({:.3g}, {:.3g}, {:.3g})", t.direction().x(),
-                           t.direction().y(), t.direction().z());
-    }
-    sf::log_info("Tool        '{}': {} nodes, {} triangles, {}\n", t.name, t.mesh.nodes.cols(),
-                 t.mesh.triangles.cols(), motion);
-  }
-  for (const sf::ContactInterface& c : model.contacts) {
-    const sf::ContactConfig* cc = nullptr;
-    for (const auto& candidate : model.config.contacts) {
-      if (candidate.tool == model.tools[static_cast<std::size_t>(c.tool)].name) {
-        cc = &candidate;
-      }
-    }
-    sf::log_info(
-        "Contact     blank nodes vs '{}': search '{}', penalty scale {}, stiffness {:.4g} to "
-        "{:.4g} N/mm\n",
-        model.tools[static_cast<std::size_t>(c.tool)].name, cc->search, cc->penalty_scale,
-        c.pair.stiffness.minCoeff(), c.pair.stiffness.maxCoeff());
-  }
-  sf::log_info("Time step   {:.4e} s (safety {} x critical, limited by element {})\n",
-               model.time_step, model.config.control.time_step_safety, model.limiting_element);
-  sf::log_info("End time    {:.6e} s{}\n", model.end_time,
-               model.config.control.stroke > 0.0
-                   ? fmt::format(" (stroke {} mm of '{}')", model.config.control.stroke,
-                                 model.config.control.stroke_tool)
-                   : std::string());
-  sf::log_info("Cycles      about {:.0f}\n", model.end_time / model.time_step);
-}
-
 sf::Model load(const Arguments& args) {
   // 1. Read and validate the case file.
-  sf::CaseConfig config = sf::read_case(args.case_file);
+  sf::CaseConfig config = sf::read_case(args.case_file, args.set);
   apply_overrides(args, config);
   // 2. Mesh every part and build the model.
   return sf::build_model(config);
@@ -195,7 +89,7 @@ sf::Model load(const Arguments& args) {
 
 int run(const Arguments& args) {
   sf::Model model = load(args);
-  print_model(model);
+  sf::print_model(model);
   // 3. Prepare the results folder and keep the resolved case beside the results.
   const fs::path out = output_directory(args, model.config);
   fs::create_directories(out);
@@ -219,14 +113,14 @@ int run(const Arguments& args) {
 
 int check(const Arguments& args) {
   const sf::Model model = load(args);
-  print_model(model);
+  sf::print_model(model);
   sf::log_info("Case is valid.\n");
   return sf::exit_ok;
 }
 
 int mesh(const Arguments& args) {
   sf::Model model = load(args);
-  print_model(model);
+  sf::print_model(model);
   const fs::path out = output_directory(args, model.config);
   fs::create_directories(out);
   sf::FrameOutput output(model, out);
@@ -239,7 +133,8 @@ int mesh(const Arguments& args) {
   auto write_msh_of = [&out](const std::string& part, const sf::MeshSourceConfig& mesh,
                              bool recombine) {
     if (mesh.file.extension() == ".geo") {
-      sf::write_msh(mesh.file, mesh.element_size, recombine, out / (part + ".msh"));
+      sf::write_msh(mesh.file, mesh.element_size, recombine, out / (part + ".msh"),
+                    mesh.parameters);
     }
   };
   write_msh_of("blank", c.blank.mesh, c.blank.element == "quad");
@@ -268,6 +163,11 @@ int main(int argc, char** argv) {
     sub->add_flag("-q,--quiet", args.quiet, "print errors only");
     sub->add_flag("-v,--verbose", args.verbose,
                   "print more: gmsh's messages, every Newton iteration of a static step");
+    sub->add_option("--set", args.set,
+                    "override a case-file key before the case is read, KEY=VALUE with KEY a "
+                    "dotted path (blank.parameters.n=32, tools[1].element_size=1.5, "
+                    "control.output_frames=10) and VALUE a TOML value; repeatable")
+        ->allow_extra_args(false);
   };
   CLI::App* run_cmd = app.add_subcommand("run", "run a case and write results for ParaView");
   add_common(run_cmd);

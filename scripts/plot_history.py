@@ -4,6 +4,7 @@
 Usage:
 
     /usr/bin/python3 scripts/plot_history.py RESULTS_DIR [-o OUT_DIR] [--tool NAME] [--csv]
+                                             [--group NAME ...]
 
 Reads the /history columns of RESULTS_DIR/results.h5 (docs/results-format.md) and writes, in
 OUT_DIR (default RESULTS_DIR):
@@ -15,6 +16,12 @@ OUT_DIR (default RESULTS_DIR):
   work in N mm (= mJ) against time in ms; below, the ratio kinetic / internal energy (-).
 - `draw_in.png`, only when the history has columns `draw_in_<name>`: each draw-in in mm against
   the same tool's travel in mm.
+
+- `group_<name>.png` for each `--group NAME` (a `[[history]]` group of the case): one panel per
+  quantity the history holds for it (displacement, velocity, rotation, reaction force, reaction
+  moment), its x, y and z components against time, in the units of the columns' `unit`
+  attributes. A case without a moving tool (a static analysis) then needs no --tool: the force and
+  draw-in plots are left out.
 
 With --csv, the plotted series also go to `<tool>_force.csv`, `energies.csv` and `draw_in.csv`
 beside the images (one row per history row, full double precision, units in the headers).
@@ -51,12 +58,26 @@ ENERGIES = [
 ]
 
 
+# {results.h5 path: {column: unit}}, filled by read_history.
+UNITS = {}
+
+# The quantities of a [[history]] group: (column stem after "<group>_", panel title).
+GROUP_QUANTITIES = [
+    ("displacement", "mean displacement"),
+    ("velocity", "mean velocity"),
+    ("rotation", "mean rotation"),
+    ("reaction_force", "reaction force (sum)"),
+    ("reaction_moment", "reaction moment (sum)"),
+]
+
+
 class InputProblem(Exception):
     """Bad input: a missing folder, file or column. The message names it."""
 
 
 def read_history(path):
-    """{column: array} of results.h5's /history, in the file's column order."""
+    """{column: array} of results.h5's /history, in the file's column order; each array's unit
+    (the dataset's `unit` attribute, when the file has it) is in UNITS[path][column]."""
     if not os.path.isfile(path):
         raise InputProblem(f"{path}: no such file (not a sheetform results folder?)")
     with h5py.File(path, "r") as f:
@@ -73,6 +94,10 @@ def read_history(path):
             if name not in group:
                 raise InputProblem(f"{path}: /history/{name} is listed in 'columns' but missing")
             history[name] = group[name][:].astype(float)
+            unit = group[name].attrs.get("unit")
+            if unit is not None:
+                UNITS.setdefault(path, {})[name] = unit.decode() if isinstance(unit, bytes) \
+                    else str(unit)
     return history
 
 
@@ -193,6 +218,38 @@ def plot_draw_in(history, h5_path, tool, title, out_dir, with_csv):
     return True
 
 
+def plot_group(history, h5_path, group, title, out_dir, with_csv):
+    """group_<group>.png: every quantity the history holds for the [[history]] group."""
+    time = column(history, "time", h5_path)
+    panels = [(stem, label) for stem, label in GROUP_QUANTITIES
+              if f"{group}_{stem}_x" in history]
+    if not panels:
+        raise InputProblem(f"{h5_path}: /history has no columns of group '{group}' (a [[history]] "
+                           f"group of the case: <group>_displacement_x, ...)")
+    units = UNITS.get(h5_path, {})
+    time_unit = units.get("time", "s")
+    fig, axes = plt.subplots(len(panels), 1, figsize=(8, 2.6 * len(panels) + 0.8), sharex=True,
+                             squeeze=False)
+    header, series = [f"time_{time_unit}"], [time]
+    for ax, (stem, label) in zip(axes[:, 0], panels):
+        unit = units.get(f"{group}_{stem}_x", "")
+        for axis in "xyz":
+            name = f"{group}_{stem}_{axis}"
+            ax.plot(time, history[name], label=axis)
+            header.append(f"{name}_{unit.replace(' ', '').replace('/', '_per_')}" if unit
+                          else name)
+            series.append(history[name])
+        ax.set_ylabel(f"{label}" + (f" ({unit})" if unit else ""))
+        ax.legend(fontsize="small", ncol=3)
+        ax.grid(True, alpha=0.3)
+    axes[-1, 0].set_xlabel(f"time ({time_unit})")
+    axes[0, 0].set_title(f"{title}\ngroup '{group}'" if title else f"group '{group}'")
+    fig.tight_layout()
+    save(fig, os.path.join(out_dir, f"group_{group}.png"))
+    if with_csv:
+        write_csv(os.path.join(out_dir, f"group_{group}.csv"), header, series)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("results_dir", help="a sheetform results folder (holds results.h5)")
@@ -200,6 +257,8 @@ def main():
     parser.add_argument("--tool", help="the tool whose force and travel are plotted (default: the "
                                        "case's control.stroke_tool)")
     parser.add_argument("--csv", action="store_true", help="also write the plotted series as CSV")
+    parser.add_argument("--group", action="append", default=[],
+                        help="also plot this [[history]] group's columns (repeatable)")
     args = parser.parse_args()
 
     if not os.path.isdir(args.results_dir):
@@ -207,22 +266,35 @@ def main():
     h5_path = os.path.join(args.results_dir, "results.h5")
     history = read_history(h5_path)
     case = read_resolved_case(args.results_dir)
-    tool = choose_tool(case, args.results_dir, args.tool)
+    has_stroke_tool = bool(case and case.get("control", {}).get("stroke_tool"))
+    # With --group, a case without a moving tool (a static analysis) plots no tool force.
+    tool = choose_tool(case, args.results_dir, args.tool) \
+        if args.tool or has_stroke_tool or not args.group else None
     title = case.get("title", "") if case else ""
     units = case.get("units") if case else None
     if units is not None and units != EXPECTED_UNITS:
         print(f"plot_history: warning: the case's units are '{units}'; the labels assume "
               f"{EXPECTED_UNITS}", file=sys.stderr)
     # Check every column needed before writing anything.
-    for name in ["time", f"{tool}_travel", f"{tool}_force"] + [n for n, _ in ENERGIES]:
+    tool_columns = [f"{tool}_travel", f"{tool}_force"] if tool else []
+    for name in ["time"] + tool_columns + [n for n, _ in ENERGIES]:
         column(history, name, h5_path)
+    for group in args.group:
+        if not any(f"{group}_{stem}_x" in history for stem, _ in GROUP_QUANTITIES):
+            raise InputProblem(f"{h5_path}: /history has no columns of group '{group}' "
+                               f"(a [[history]] group of the case: <group>_displacement_x, ...)")
 
     out_dir = args.out_dir or args.results_dir
     os.makedirs(out_dir, exist_ok=True)
-    plot_force(history, h5_path, tool, title, out_dir, args.csv)
+    if tool:
+        plot_force(history, h5_path, tool, title, out_dir, args.csv)
+    else:
+        print("plot_history: the case has no moving tool: no force or draw-in plot")
     plot_energies(history, h5_path, title, out_dir, args.csv)
-    if not plot_draw_in(history, h5_path, tool, title, out_dir, args.csv):
+    if tool and not plot_draw_in(history, h5_path, tool, title, out_dir, args.csv):
         print("plot_history: no draw_in_<name> columns in the history: no draw_in.png")
+    for group in args.group:
+        plot_group(history, h5_path, group, title, out_dir, args.csv)
     return 0
 
 

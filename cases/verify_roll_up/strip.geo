@@ -3,7 +3,7 @@
 // file's own sizes). Groups: blank (surface), clamp (edge x = 0), tip (edge x = 100).
 L = 100;  // mm, length
 b = 10;   // mm, width
-n = 20;   // elements along the length
+DefineConstant[ n = 20 ];  // elements along the length (a case sets it: blank.parameters.n)
 Point(1) = {0, 0, 0};
 Point(2) = {L, 0, 0};
 Point(3) = {L, b, 0};

@@ -31,10 +31,9 @@ struct ContactPair {
   /// Search radius, mm (e.g. max half thickness + a margin). Must exceed every half thickness:
   /// a node on the positive side is in contact when its distance is below its half thickness.
   double cutoff = 0;
-  /// Orthogonal by default for now. The paper's choice, interpolated, is meant to become the
-  /// case default once the driver counts the contact energy as the work of the contact forces:
-  /// the interpolated force is not the gradient of 1/2 k g^2, so with that energy in the balance
-  /// the demo square cup's balance error grows from -2.4e-3 to -6.0e-3 (docs/contact.md).
+  /// Orthogonal by default here, for library users who want a gradient field; the case file's
+  /// default is the paper's interpolated projection (build_model sets it; the driver counts the
+  /// contact energy as the work of the contact forces, which holds for either: docs/contact.md).
   ContactProjection projection = ContactProjection::orthogonal;
   FrictionParameters friction;  ///< frictionless unless friction.static_coefficient > 0
 

@@ -21,6 +21,9 @@ using Clock = std::chrono::steady_clock;
 
 // The full Newton step is kept unless it multiplies the residual norm by more than this.
 constexpr double kResidualGrowthLimit = 1e3;
+// An increment diverges (and is cut) when an iteration leaves the residual norm more than this
+// times its norm at the start of the increment (docs/static-analysis.md).
+constexpr double kDivergenceFactor = 1e6;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -63,6 +66,7 @@ class NewtonSolver {
     predictor_force_.setZero(dofs.equation_count());
     prescribed_du_.setZero(3, n);
     prescribed_dtheta_.setZero(3, n);
+    rotation_.setZero(3, n);
     report_.colours = tangent_.colour_count();
     report_.equations = dofs.equation_count();
   }
@@ -136,19 +140,30 @@ class NewtonSolver {
       record.iterations.push_back(iteration);
       log_verbose("    iteration {}: residual {:.3e}, correction {:.3e}, line search {:.3f}\n",
                   it + 1, iteration.residual, iteration.correction, step);
-      if (!std::isfinite(current_.residual_norm) || current_.residual_norm > 1e6 * initial_norm) {
-        record.failure = fmt::format("iteration {}: the residual diverged to {:.3e} (relative)",
-                                     it + 1, iteration.residual);
+      if (!std::isfinite(current_.residual_norm)) {
+        record.failure = fmt::format("iteration {}: the residual is not finite", it + 1);
+        return false;
+      }
+      if (current_.residual_norm > kDivergenceFactor * initial_norm) {
+        record.failure = fmt::format(
+            "iteration {}: the residual diverged: {:.3e} times its norm at the start of the "
+            "increment, beyond the limit {:.0e} (residual {:.3e} of the reference force, largest "
+            "at {})",
+            it + 1, current_.residual_norm / initial_norm, kDivergenceFactor, iteration.residual,
+            worst_node());
         return false;
       }
       converged = options_.linear || (pending_ == 0.0 && iteration.residual <= c.force_tolerance &&
                                       iteration.correction <= c.displacement_tolerance);
     }
     if (!converged) {
+      const double correction =
+          record.iterations.empty() ? 0.0 : record.iterations.back().correction;
       record.failure = fmt::format(
-          "no convergence in {} iterations: residual {:.3e} (tolerance {:.1e}), largest at {}",
+          "no convergence in {} iterations: residual {:.3e} (tolerance {:.1e}), last correction "
+          "{:.3e} (tolerance {:.1e}); the residual is largest at {}",
           max_iterations, current_.residual_norm / current_.reference, c.force_tolerance,
-          worst_node());
+          correction, c.displacement_tolerance, worst_node());
       return false;
     }
     record.converged = true;
@@ -168,6 +183,10 @@ class NewtonSolver {
     }
     if (options_.linear) {
       compute_linear_reactions();
+      // The linear problem's internal forces, whose difference from the loads on the undeformed
+      // geometry is the linear reaction (for the history of node groups, converged()).
+      linear_f_int_ = linear_force_ + candidate_.f_ext;
+      linear_m_int_ = linear_moment_ + candidate_.m_ext;
     }
     const double prescribed = prescribed_increment_work();
     report_.external_work += external + prescribed;
@@ -175,6 +194,7 @@ class NewtonSolver {
     report_.force_scale =
         std::max({report_.force_scale, current_.reference, pending_start_ * predictor_norm_});
     body_.commit(current_.du, current_.state);
+    rotation_ += current_.dtheta;
     return true;
   }
 
@@ -190,6 +210,17 @@ class NewtonSolver {
     }
     report.reaction_force = current_.f_int - current_.f_ext;
     report.reaction_moment = current_.m_int - current_.m_ext;
+  }
+
+  /// The last converged increment (after run_increment returned true); a linear analysis's forces
+  /// are those of the linear problem, the loads on the undeformed geometry.
+  ConvergedIncrement converged() const {
+    if (options_.linear) {
+      return {current_.du,      current_.dtheta,  linear_f_int_, linear_m_int_,
+              candidate_.f_ext, candidate_.m_ext, rotation_};
+    }
+    return {current_.du,    current_.dtheta, current_.f_int, current_.m_int,
+            current_.f_ext, current_.m_ext,  rotation_};
   }
 
   /// N/mm, the stabilising springs on every free translation, anchored at the increment's start.
@@ -524,6 +555,8 @@ class NewtonSolver {
   double pending_ = 0.0;
   double pending_start_ = 0.0;  // pending_ at the increment's start (1 with a prescription)
   Matrix3X linear_force_, linear_moment_;  // a linear analysis's reactions (N, N mm)
+  Matrix3X linear_f_int_, linear_m_int_;   // and its internal forces (N, N mm)
+  Matrix3X rotation_;          // rad, the converged rotation increments summed over the step
   std::vector<int> diagonal_;  // positions of the translations' diagonal entries in stiffness_
   double spring_ = 0.0;        // N/mm, stabilising springs (StaticStepOptions::stabilization)
   double lambda_end_ = 0.0;    // the load factor the increment being solved ends at
@@ -628,7 +661,7 @@ StaticStepReport solve_static_step(StaticShellBody& body, const DofMap& dofs,
                           : std::string());
       // A stabilised step reports load factor 1 once it has settled there.
       if (on_converged && !(stabilized && lambda >= 1.0 - 1e-12)) {
-        on_converged(lambda, body, report);
+        on_converged(lambda, body, report, newton.converged());
       }
       // After two good increments at a cut size, try twice the size again (up to the nominal).
       if (cut_level > 0 && ++successes_since_cut >= 2) {
@@ -650,15 +683,18 @@ StaticStepReport solve_static_step(StaticShellBody& body, const DofMap& dofs,
           lambda, target, cut_level - 1, record.failure,
           stabilized ? ", or stronger stabilising springs" : ""));
     }
-    log_info("  increment to load factor {:.4f} failed ({}); halved\n", target, record.failure);
     step *= 0.5;
+    log_info(
+        "  increment to load factor {:.4f} failed ({}); halved ({} of {}): tried again from load "
+        "factor {:.4f} to {:.4f}\n",
+        target, record.failure, cut_level, c.max_cuts, lambda, std::min(1.0, lambda + step));
   }
   if (stabilized) {
     settle(newton, options, report);
   }
   newton.store_reactions(report);
   if (stabilized && on_converged) {
-    on_converged(1.0, body, report);
+    on_converged(1.0, body, report, newton.converged());
   }
   report.solver = newton.solver().totals();
   return report;

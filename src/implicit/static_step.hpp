@@ -99,10 +99,25 @@ struct ImplicitStepSummary {
   double wall_seconds = 0.0;                   ///< s, the whole step
 };
 
-/// Called after each converged increment with its load factor, the body (committed) and the
-/// report so far.
+/// A converged increment as IncrementCallback sees it: its motion from the previous committed
+/// state and the forces at the new committed state (valid during the call only).
+struct ConvergedIncrement {
+  const Matrix3X& du;      ///< mm, the translation increment of every node
+  const Matrix3X& dtheta;  ///< rad, the rotation increment of every node
+  const Matrix3X& f_int;   ///< N, internal forces (the drilling springs' included)
+  const Matrix3X& m_int;   ///< N mm, internal moments (the drilling springs' included)
+  const Matrix3X& f_ext;   ///< N, external forces at the increment's load factor
+  const Matrix3X& m_ext;   ///< N mm, external moments likewise
+  /// rad, every node's rotation increments summed over the step's converged increments so far
+  /// (settling increments included)
+  const Matrix3X& rotation;
+};
+
+/// Called after each converged increment with its load factor, the body (committed), the report
+/// so far and the increment.
 using IncrementCallback =
-    std::function<void(double lambda, const StaticShellBody& body, const StaticStepReport& report)>;
+    std::function<void(double lambda, const StaticShellBody& body, const StaticStepReport& report,
+                       const ConvergedIncrement& increment)>;
 
 /// Solves the step, committing each converged increment into `body` and calling on_converged
 /// after it. Throws ConvergenceError naming the load factor, the

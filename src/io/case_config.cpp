@@ -4,6 +4,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -11,8 +12,11 @@
 #include "core/errors.hpp"
 #include "io/case_config_common.hpp"
 #include "io/case_config_constraints.hpp"
+#include "io/case_config_history.hpp"
 #include "io/case_config_implicit.hpp"
+#include "io/case_overrides.hpp"
 #include "io/toml_reader.hpp"
+#include "io/unit_system.hpp"
 
 namespace sf {
 
@@ -47,10 +51,58 @@ fs::path read_existing_file(const TomlSection& s, std::string_view key, const fs
   return file;
 }
 
+bool is_geo_identifier(std::string_view name) {
+  for (std::size_t i = 0; i < name.size(); ++i) {
+    const char c = name[i];
+    const bool letter = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+    if (!letter && !(i > 0 && c >= '0' && c <= '9')) {
+      return false;
+    }
+  }
+  return !name.empty();
+}
+
+/// `parameters`: a table of numbers set in a .geo before gmsh parses it ({ n = 16 }).
+void read_geo_parameters(const TomlSection& s, const MeshSourceConfig& mesh,
+                         std::vector<GeoParameter>& parameters) {
+  const toml::node* node = s.find("parameters");
+  if (!node) {
+    return;
+  }
+  if (mesh.file.extension() != ".geo") {
+    s.fail_forbidden("parameters",
+                     "parameters are set in a .geo file before gmsh parses it; a .msh mesh is "
+                     "read as it is");
+  }
+  const toml::table* table = node->as_table();
+  if (!table) {
+    s.fail_value("parameters", "a table of numbers, e.g. { n = 16 }");
+  }
+  const std::string path = s.key_path("parameters");
+  for (const auto& [key, value] : *table) {
+    const std::string name(key.str());
+    const std::string key_path = fmt::format("{}.{}", path, name);
+    const auto& region = key.source().begin.line != 0 ? key.source() : value.source();
+    if (!is_geo_identifier(name)) {
+      s.fail_at(value, key_path,
+                "expected a .geo variable name (a letter or '_', then letters, digits or '_')");
+    }
+    const std::optional<double> number = number_of(value);
+    if (!number || !std::isfinite(*number)) {
+      s.fail_at(value, key_path,
+                fmt::format("expected a finite number, got {}", describe_value(value)));
+    }
+    parameters.push_back({name, *number, format_location(s.file(), region)});
+  }
+  std::sort(parameters.begin(), parameters.end(),
+            [](const GeoParameter& a, const GeoParameter& b) { return a.name < b.name; });
+}
+
 void read_mesh_source(const TomlSection& s, const fs::path& folder, MeshSourceConfig& mesh) {
   mesh.file = read_existing_file(s, "mesh", folder, {".geo", ".msh"});
   s.read_string("group", mesh.group);
   s.read_number("element_size", mesh.element_size, at_least(0.0, "mm"));
+  read_geo_parameters(s, mesh, mesh.parameters);
 }
 
 void read_hardening(const TomlSection& s, const fs::path& folder, HardeningConfig& hardening) {
@@ -191,9 +243,9 @@ void read_blank(const TomlSection& top, const fs::path& folder, const CaseConfig
   using Rule = BlankConfig::IntegrationRule;
   using Form = BlankConfig::HourglassForm;
   using Formulation = BlankConfig::Formulation;
-  s.check_keys({"mesh", "group", "element_size", "element", "thickness", "integration_points",
-                "integration_rule", "material", "formulation", "hourglass", "hourglass_form",
-                "rolling_direction"});
+  s.check_keys({"mesh", "group", "element_size", "parameters", "element", "thickness",
+                "integration_points", "integration_rule", "material", "formulation", "hourglass",
+                "hourglass_form", "rolling_direction"});
   read_mesh_source(s, folder, blank.mesh);
   s.read_choice<std::string>("element", blank.element,
                              {{"quad", "quad"}, {"as_meshed", "as_meshed"}});
@@ -277,7 +329,7 @@ void read_tools(const TomlSection& top, const fs::path& folder, std::vector<Tool
   const std::vector<TomlSection> sections = top.table_array("tools");
   for (std::size_t i = 0; i < sections.size(); ++i) {
     const TomlSection& s = sections[i];
-    s.check_keys({"name", "mesh", "group", "element_size", "motion"});
+    s.check_keys({"name", "mesh", "group", "element_size", "parameters", "motion"});
     ToolConfig tool;
     s.read_string("name", tool.name, Presence::required);
     for (std::size_t j = 0; j < i; ++j) {
@@ -509,6 +561,19 @@ void read_output(const TomlSection& top, const fs::path& folder, OutputConfig& o
   }
 }
 
+/// `units`: a consistent LENGTH-TIME-MASS-FORCE-STRESS system (parse_unit_system).
+void read_units(const TomlSection& top, std::string& units) {
+  if (!top.read_string("units", units)) {
+    return;
+  }
+  try {
+    parse_unit_system(units);
+  } catch (const std::invalid_argument& error) {
+    top.fail_at(*top.find("units"), "units",
+                fmt::format("{}; got {}", error.what(), quote_toml_string(units)));
+  }
+}
+
 std::string read_text_file(const fs::path& file) {
   std::error_code error;
   if (!fs::exists(file, error)) {
@@ -556,19 +621,20 @@ const ToolConfig* CaseConfig::find_tool(const std::string& name) const {
   return nullptr;
 }
 
-CaseConfig read_case(const fs::path& case_file) {
+CaseConfig read_case(const fs::path& case_file, const std::vector<std::string>& overrides) {
   CaseConfig config;
   config.file = fs::absolute(case_file).lexically_normal();
   const std::string file = config.file.string();
-  const toml::table root = parse_toml(read_text_file(config.file), file);
+  toml::table root = parse_toml(read_text_file(config.file), file);
+  apply_case_overrides(root, overrides);
   const fs::path folder = config.file.parent_path();
 
   const TomlSection top(root, "", file);
   top.check_keys({"title", "units", "blank", "materials", "tools", "contact", "boundary", "draw_in",
                   "load", "initial_velocity", "prescribed_velocity", "prescribed_motion", "control",
-                  "output", "analysis", "implicit", "springback"});
+                  "output", "analysis", "implicit", "springback", "history"});
   top.read_string("title", config.title, Presence::optional, true);
-  top.read_string("units", config.units);
+  read_units(top, config.units);
   read_materials(top, folder, config.materials);
   read_blank(top, folder, config, config.blank);
   read_tools(top, folder, config.tools);
@@ -581,6 +647,7 @@ CaseConfig read_case(const fs::path& case_file) {
   read_output(top, folder, config.output);
   read_implicit_sections(top, config);
   check_constraints_for_analysis(top, config);
+  read_history_groups(top, config);
   return config;
 }
 

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "io/geo_parameter.hpp"
+
 namespace sf {
 
 /// A piecewise-linear curve value(time), given as points [[t0, v0], [t1, v1], ...] with strictly
@@ -61,6 +63,9 @@ struct MeshSourceConfig {
   std::filesystem::path file;  ///< absolute (resolved against the case file's folder)
   std::string group;           ///< physical group name holding the part's surface
   double element_size = 0.0;   ///< mm; 0 = leave the .geo file's own sizes (ignored for .msh)
+  /// .geo only: numbers set before gmsh parses the file, sorted by name; each must be declared by
+  /// the file with DefineConstant[] (checked when the model is built: load_gmsh_model).
+  std::vector<GeoParameter> parameters{};
 };
 
 struct BlankConfig {
@@ -236,6 +241,16 @@ struct DrawInConfig {
   std::string source;  ///< where the measured value comes from
 };
 
+/// A node group whose motion and reaction the history records each row ([[history]]): the mean
+/// over its nodes of the displacement, velocity and rotation, and the sum of the reactions.
+struct HistoryGroupConfig {
+  std::string group;         ///< physical group of blank nodes (points, curves or surfaces)
+  bool displacement = true;  ///< mean displacement (mm)
+  bool velocity = true;      ///< mean velocity (mm/s); explicit runs only
+  bool rotation = true;      ///< mean rotation (rad), the summed rotation increments
+  bool reaction = true;      ///< summed reaction force (N) and moment (N mm) of the constraints
+};
+
 struct OutputConfig {
   std::string directory = "results";  ///< relative to the case folder unless given with -o
   bool stress_layers = true;          ///< write mid, top and bottom stress per element
@@ -308,7 +323,9 @@ struct SpringbackConfig {
 struct CaseConfig {
   std::filesystem::path file;  ///< the case file, absolute
   std::string title;
-  std::string units = "mm-s-tonne-N-MPa";  ///< informational
+  /// "LENGTH-TIME-MASS-FORCE-STRESS", checked for consistency (parse_unit_system); it names the
+  /// units in messages and output, the solver itself is unit-agnostic.
+  std::string units = "mm-s-tonne-N-MPa";
   BlankConfig blank;
   std::vector<MaterialConfig> materials;
   std::vector<ToolConfig> tools;
@@ -317,6 +334,7 @@ struct CaseConfig {
   ControlConfig control;
   OutputConfig output;
   std::vector<DrawInConfig> draw_ins;                           ///< [[draw_in]] tables
+  std::vector<HistoryGroupConfig> history_groups;               ///< [[history]] tables
   std::vector<LoadConfig> loads;                                ///< [[load]] tables
   std::vector<InitialVelocityConfig> initial_velocities;        ///< [[initial_velocity]]
   std::vector<PrescribedVelocityConfig> prescribed_velocities;  ///< [[prescribed_velocity]]
@@ -332,8 +350,11 @@ struct CaseConfig {
 };
 
 /// Reads and validates a case file. Throws InputError naming the file, line and key for an unknown
-/// key, a wrong type, an out-of-range value, a missing file or a dangling name.
-CaseConfig read_case(const std::filesystem::path& case_file);
+/// key, a wrong type, an out-of-range value, a missing file or a dangling name. `overrides`
+/// ("KEY=VALUE", e.g. "blank.parameters.n=32") replace or add keys before the case is read
+/// (apply_case_overrides); errors in their values name the override.
+CaseConfig read_case(const std::filesystem::path& case_file,
+                     const std::vector<std::string>& overrides = {});
 
 /// The fully resolved case (every default filled) as TOML text, written beside the results.
 std::string format_resolved_case(const CaseConfig& config);

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/dof_names.hpp"
@@ -89,6 +90,14 @@ void write_mesh_source(TomlWriter& w, const MeshSourceConfig& mesh) {
   w.string("mesh", mesh.file.string());
   w.string("group", mesh.group);
   w.number("element_size", mesh.element_size, "mm; 0 = the .geo file's own sizes");
+  if (!mesh.parameters.empty()) {
+    std::string table;
+    for (const GeoParameter& p : mesh.parameters) {
+      table +=
+          fmt::format("{}{} = {}", table.empty() ? "" : ", ", p.name, format_toml_number(p.value));
+    }
+    w.raw("parameters", "{ " + table + " }");
+  }
 }
 
 void write_blank(TomlWriter& w, const BlankConfig& blank) {
@@ -303,6 +312,22 @@ void write_draw_in(TomlWriter& w, const DrawInConfig& draw_in) {
   w.string("source", draw_in.source);
 }
 
+void write_history_group(TomlWriter& w, const HistoryGroupConfig& h) {
+  w.array_header("history");
+  w.string("group", h.group);
+  std::string quantities;
+  const std::pair<bool, const char*> flags[] = {{h.displacement, "displacement"},
+                                                {h.velocity, "velocity"},
+                                                {h.rotation, "rotation"},
+                                                {h.reaction, "reaction"}};
+  for (const auto& [on, name] : flags) {
+    if (on) {
+      quantities += fmt::format("{}\"{}\"", quantities.empty() ? "" : ", ", name);
+    }
+  }
+  w.raw("quantities", "[" + quantities + "]");
+}
+
 void write_load(TomlWriter& w, const LoadConfig& load) {
   w.array_header("load");
   w.string("group", load.group);
@@ -444,6 +469,9 @@ std::string format_resolved_case(const CaseConfig& config) {
   }
   for (const auto& load : config.loads) {
     write_load(w, load);
+  }
+  for (const auto& h : config.history_groups) {
+    write_history_group(w, h);
   }
   for (const auto& iv : config.initial_velocities) {
     write_initial_velocity(w, iv);

@@ -1,15 +1,20 @@
 // gmsh reader: one gmsh session per call, errors turned into InputError naming the file.
 #include "io/gmsh_reader.hpp"
 
+#include <fmt/core.h>
 #include <omp.h>
+#include <unistd.h>
 
 #include <gmsh.h>
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <cmath>
 #include <deque>
 #include <exception>
+#include <fstream>
 #include <functional>
+#include <limits>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -138,9 +143,116 @@ void check_mesh_source(const std::filesystem::path& file, double element_size) {
   }
 }
 
+/// A fresh folder under the system's temporary directory, removed with its content on
+/// destruction.
+class TemporaryFolder {
+ public:
+  TemporaryFolder() {
+    static std::atomic<int> counter{0};
+    path_ = std::filesystem::temp_directory_path() /
+            fmt::format("sheetform-geo-{}-{}", static_cast<long>(::getpid()), counter++);
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(path_);
+  }
+  TemporaryFolder(const TemporaryFolder&) = delete;
+  TemporaryFolder& operator=(const TemporaryFolder&) = delete;
+  ~TemporaryFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+void write_text(const std::filesystem::path& file, const std::string& text) {
+  std::ofstream out(file);
+  out << text;
+  if (!out) {
+    throw InputError(quoted(file) + ": cannot write this temporary gmsh file");
+  }
+}
+
+/// The ONELAB number `name`, set by a DefineConstant[ ... Name "name" ] of a parsed .geo.
+double read_onelab_number(const std::string& name) {
+  std::vector<double> value;
+  gmsh::onelab::getNumber(name, value);
+  return value.empty() ? std::numeric_limits<double>::quiet_NaN() : value.front();
+}
+
+/// Parses `file` as it is and checks that it defines every parameter (gmsh's Exists()).
+void check_parameters_defined(const std::filesystem::path& file,
+                              std::span<const GeoParameter> parameters,
+                              const std::filesystem::path& folder) {
+  gmsh::onelab::clear();
+  run_gmsh_step(file, "reading the file", [&] { gmsh::open(file.string()); });
+  std::string check;
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    check += fmt::format(
+        "DefineConstant[ sheetform_defined_{0} = {{Exists({1}), Name \"sheetform/defined/{0}\"}} "
+        "];\n",
+        i, parameters[i].name);
+  }
+  write_text(folder / "check.geo", check);
+  run_gmsh_step(file, "checking its parameters",
+                [&] { gmsh::merge((folder / "check.geo").string()); });
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    if (read_onelab_number(fmt::format("sheetform/defined/{}", i)) != 1.0) {
+      throw GeoParameterError(
+          i, fmt::format("{} does not define {}: declare it in the file with DefineConstant[ {} = "
+                         "<default> ]; (gmsh then takes the value set before the file is parsed)",
+                         quoted(file), parameters[i].name, parameters[i].name));
+    }
+  }
+}
+
+/// Opens `file` through a wrapper .geo that assigns the parameters and Includes it, and checks
+/// that the file kept every value (a plain assignment in the file would override it).
+void open_with_parameters(const std::filesystem::path& file,
+                          std::span<const GeoParameter> parameters) {
+  const std::string path = std::filesystem::absolute(file).generic_string();
+  if (path.find('"') != std::string::npos) {
+    throw InputError(quoted(file) + ": a .geo path holding '\"' cannot take parameters");
+  }
+  const TemporaryFolder folder;
+  check_parameters_defined(file, parameters, folder.path());
+  std::string wrapper;
+  for (const GeoParameter& p : parameters) {
+    wrapper += fmt::format("{} = {:.17g};\n", p.name, p.value);
+  }
+  wrapper += fmt::format("Include \"{}\";\n", path);
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    wrapper += fmt::format(
+        "DefineConstant[ sheetform_value_{0} = {{{1}, Name \"sheetform/value/{0}\"}} ];\n", i,
+        parameters[i].name);
+  }
+  const std::filesystem::path wrapper_file = folder.path() / file.filename();
+  write_text(wrapper_file, wrapper);
+  gmsh::onelab::clear();
+  run_gmsh_step(file, "reading the file", [&] { gmsh::open(wrapper_file.string()); });
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    const double kept = read_onelab_number(fmt::format("sheetform/value/{}", i));
+    if (kept != parameters[i].value) {
+      throw GeoParameterError(
+          i, fmt::format("{} assigns {} itself ({} = {:g} once the file is read, not the {:g} "
+                         "set): declare it with DefineConstant[ {} = {:g} ]; instead of a plain "
+                         "assignment, so that it can be set",
+                         quoted(file), parameters[i].name, parameters[i].name, kept,
+                         parameters[i].value, parameters[i].name, kept));
+    }
+  }
+}
+
 /// Opens (and for a .geo, meshes in 2-D) `file` in the current gmsh session.
-void open_and_mesh(const std::filesystem::path& file, double element_size, bool recombine) {
+void open_and_mesh(const std::filesystem::path& file, double element_size, bool recombine,
+                   std::span<const GeoParameter> parameters) {
   const bool geo = lower_extension(file) == ".geo";
+  if (!geo && !parameters.empty()) {
+    throw InputError(quoted(file) +
+                     ": parameters are set in a .geo file before gmsh parses it; a .msh file is "
+                     "read as it is");
+  }
   const auto set_size = [&] {
     if (geo && element_size > 0.0) {
       gmsh::option::setNumber("Mesh.MeshSizeMax", element_size);
@@ -148,7 +260,11 @@ void open_and_mesh(const std::filesystem::path& file, double element_size, bool 
     }
   };
   run_gmsh_step(file, "setting options", set_size);
-  run_gmsh_step(file, "reading the file", [&] { gmsh::open(file.string()); });
+  if (parameters.empty()) {
+    run_gmsh_step(file, "reading the file", [&] { gmsh::open(file.string()); });
+  } else {
+    open_with_parameters(file, parameters);
+  }
   if (geo) {
     run_gmsh_step(file, "meshing in 2-D", [&] {
       set_size();
@@ -345,18 +461,19 @@ std::string GmshModel::list_groups() const {
   return text.empty() ? "none" : text;
 }
 
-GmshModel load_gmsh_model(const std::filesystem::path& file, double element_size, bool recombine) {
+GmshModel load_gmsh_model(const std::filesystem::path& file, double element_size, bool recombine,
+                          std::span<const GeoParameter> parameters) {
   check_mesh_source(file, element_size);
   GmshSession session;
-  open_and_mesh(file, element_size, recombine);
+  open_and_mesh(file, element_size, recombine, parameters);
   return read_current_model(file);
 }
 
 void write_msh(const std::filesystem::path& geo_file, double element_size, bool recombine,
-               const std::filesystem::path& msh_out) {
+               const std::filesystem::path& msh_out, std::span<const GeoParameter> parameters) {
   check_mesh_source(geo_file, element_size);
   GmshSession session;
-  open_and_mesh(geo_file, element_size, recombine);
+  open_and_mesh(geo_file, element_size, recombine, parameters);
   read_current_model(geo_file);  // the same checks as load_gmsh_model (empty mesh, no groups)
   run_gmsh_step(msh_out, "writing the mesh", [&] {
     gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);

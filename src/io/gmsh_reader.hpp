@@ -4,11 +4,14 @@
 // gmsh is used only here, serially, before the time loop.
 #include <cstddef>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
+#include "core/errors.hpp"
 #include "core/types.hpp"
+#include "io/geo_parameter.hpp"
 #include "mesh/mesh_data.hpp"
 
 namespace sf {
@@ -45,6 +48,18 @@ struct GmshModel {
   std::string list_groups() const;
 };
 
+/// A parameter a .geo file cannot take (it does not define it, or assigns it itself); index() is
+/// its position in the parameters given.
+class GeoParameterError : public InputError {
+ public:
+  GeoParameterError(std::size_t index, const std::string& message)
+      : InputError(message), index_(index) {}
+  std::size_t index() const { return index_; }
+
+ private:
+  std::size_t index_;
+};
+
 /// Meshes a .geo file with gmsh (OpenCASCADE or built-in kernel, 2-D mesh) or reads a .msh file.
 ///
 /// element_size (mm) > 0, for a .geo file only: sets gmsh's option Mesh.MeshSizeMax to it and
@@ -55,12 +70,22 @@ struct GmshModel {
 /// recombine = true (for a .geo) sets Mesh.RecombineAll = 1 and Mesh.Algorithm = 8
 /// (Frontal-Delaunay for quads) after the file is read: quadrilaterals wherever gmsh can make them.
 ///
+/// parameters (a .geo only): numbers set before the file is parsed. Each must be a variable the
+/// file declares with DefineConstant[ name = default ] (DefineConstant keeps a value set before
+/// it; a plain assignment `name = ...;` would override it). gmsh 4.8's API cannot set or list
+/// parser variables, so the file is parsed twice: once as it is, to check with Exists() that it
+/// defines every parameter, then through a wrapper .geo (in a temporary folder) that assigns the
+/// parameters and Includes the file, reading each value back afterwards. GeoParameterError for a
+/// parameter the file does not define or overrides.
+///
 /// Throws InputError naming the file for: a missing file, an unknown extension, a negative size,
-/// gmsh parse/meshing errors (with gmsh's message), an empty mesh, a model without physical groups.
+/// gmsh parse/meshing errors (with gmsh's message), an empty mesh, a model without physical groups,
+/// parameters for a .msh file.
 /// Runs its own gmsh session (initialize ... finalize; not re-entrant, do not call while another
 /// gmsh session is open) and restores the OpenMP thread count that gmsh resets. gmsh's terminal
 /// output is shown only at Verbosity::verbose.
-GmshModel load_gmsh_model(const std::filesystem::path& file, double element_size, bool recombine);
+GmshModel load_gmsh_model(const std::filesystem::path& file, double element_size, bool recombine,
+                          std::span<const GeoParameter> parameters = {});
 
 /// The 2-D physical group `group` as a part mesh named `part_name`: compact local node numbering
 /// (ascending gmsh node tag), gmsh tags kept, quads and/or 3-node triangles; any other element type
@@ -84,6 +109,6 @@ NodeGroup extract_node_group(const GmshModel& model, const PartMesh& part,
 /// Only elements of physical groups are written. InputError as load_gmsh_model, or if the output
 /// cannot be written.
 void write_msh(const std::filesystem::path& geo_file, double element_size, bool recombine,
-               const std::filesystem::path& msh_out);
+               const std::filesystem::path& msh_out, std::span<const GeoParameter> parameters = {});
 
 }  // namespace sf

@@ -53,8 +53,13 @@ std::string frame_group_name(int index) {
 
 ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
                              std::vector<PartTopology> parts,
-                             std::vector<std::string> history_columns)
+                             std::vector<std::string> history_columns,
+                             std::vector<std::string> history_units)
     : history_columns_(std::move(history_columns)) {
+  if (!history_units.empty() && history_units.size() != history_columns_.size()) {
+    throw std::invalid_argument(std::to_string(history_units.size()) + " history unit(s) for " +
+                                std::to_string(history_columns_.size()) + " column(s)");
+  }
   // Check everything before touching the disk.
   std::set<std::string> seen;
   for (const PartTopology& part : parts) {
@@ -158,8 +163,12 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
     }
     file.create_group("/history");
     std::string column_list;
-    for (const std::string& column : history_columns_) {
+    for (std::size_t c = 0; c < history_columns_.size(); ++c) {
+      const std::string& column = history_columns_[c];
       file.create_extendible("/history/" + column, history_chunk_rows);
+      if (!history_units.empty()) {
+        file.write_attribute("/history/" + column, "unit", history_units[c]);
+      }
       column_list += (column_list.empty() ? "" : ",") + column;
     }
     file.write_attribute("/history", "columns", column_list);

@@ -69,8 +69,11 @@ class ResultsWriter {
   /// <directory>/results.h5 with every part's topology, /history and /run, and writes one
   /// <directory>/<part>.xdmf per part, with no frames yet. `history_columns` names the history
   /// values (time first, by convention), e.g. time (s), kinetic_energy (mJ), punch_force (N).
+  /// `history_units`, when given, holds one unit per column ("mm", "N", "-"), stored as the
+  /// string attribute `unit` of each /history/<column>.
   ResultsWriter(const std::filesystem::path& directory, std::vector<PartTopology> parts,
-                std::vector<std::string> history_columns);
+                std::vector<std::string> history_columns,
+                std::vector<std::string> history_units = {});
   ResultsWriter(const ResultsWriter&) = delete;
   ResultsWriter& operator=(const ResultsWriter&) = delete;
   /// Flushes buffered history rows (errors are reported as a warning, not thrown).

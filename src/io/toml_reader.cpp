@@ -163,6 +163,9 @@ std::optional<double> number_of(const toml::node& node) {
 }
 
 std::string format_location(const std::string& file, const toml::source_region& region) {
+  if (region.path && *region.path != file) {
+    return *region.path;  // a value from elsewhere: a command-line override (apply_case_overrides)
+  }
   if (region.begin.line == 0) {
     return file;
   }

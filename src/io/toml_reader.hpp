@@ -112,7 +112,8 @@ class TomlSection {
   const std::string* file_;
 };
 
-/// "file:line:col" when the region is known, else "file".
+/// "file:line:col" when the region is known, else "file"; a region from another source (a
+/// command-line override) is named by that source instead.
 std::string format_location(const std::string& file, const toml::source_region& region);
 
 template <typename T>

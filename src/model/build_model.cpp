@@ -63,13 +63,26 @@ std::vector<double> make_material_angles(const CaseConfig& config, const PartMes
   }
 }
 
+// Meshes a part's source; a .geo parameter the file cannot take is reported at the case key
+// that set it (`key` is "blank" or "tools[1]").
+GmshModel load_mesh_source(const CaseConfig& config, const MeshSourceConfig& mesh,
+                           const std::string& key, bool recombine) {
+  try {
+    return load_gmsh_model(mesh.file, mesh.element_size, recombine, mesh.parameters);
+  } catch (const GeoParameterError& error) {
+    const GeoParameter& p = mesh.parameters.at(error.index());
+    throw InputError(fmt::format("{}: {}.parameters.{}: {}",
+                                 p.location.empty() ? config.file.string() : p.location, key,
+                                 p.name, error.what()));
+  }
+}
+
 void read_blank(const CaseConfig& config, Model& model) {
   const BlankConfig& bc = config.blank;
   // "quad": a .geo is meshed with every surface recombined (quads wherever gmsh can make them);
   // "as_meshed": the .geo's own Recombine commands decide. Either way the blank takes quads,
   // triangles or both (a .msh is read as it is).
-  const GmshModel gmsh_model =
-      load_gmsh_model(bc.mesh.file, bc.mesh.element_size, bc.element == "quad");
+  const GmshModel gmsh_model = load_mesh_source(config, bc.mesh, "blank", bc.element == "quad");
   Blank& blank = model.blank;
   blank.mesh = extract_part_mesh(gmsh_model, bc.mesh.group, "blank");
   if (blank.mesh.quads.cols() + blank.mesh.triangles.cols() == 0) {
@@ -108,6 +121,10 @@ void read_blank(const CaseConfig& config, Model& model) {
   for (std::size_t i = 0; i < config.prescribed_motions.size(); ++i) {
     const PrescribedMotionConfig& m = config.prescribed_motions[i];
     names.emplace_back(m.group, fmt::format("{}: prescribed_motion[{}].group", at_line(m.line), i));
+  }
+  for (std::size_t i = 0; i < config.history_groups.size(); ++i) {
+    names.emplace_back(config.history_groups[i].group,
+                       fmt::format("{}: history[{}].group", file, i));
   }
   if (config.springback && config.springback->u_channel) {
     names.emplace_back(config.springback->u_channel->section,
@@ -171,8 +188,10 @@ void read_blank(const CaseConfig& config, Model& model) {
 }
 
 void read_tools(const CaseConfig& config, Model& model) {
-  for (const ToolConfig& tc : config.tools) {
-    const GmshModel gmsh_model = load_gmsh_model(tc.mesh.file, tc.mesh.element_size, false);
+  for (std::size_t t = 0; t < config.tools.size(); ++t) {
+    const ToolConfig& tc = config.tools[t];
+    const GmshModel gmsh_model =
+        load_mesh_source(config, tc.mesh, fmt::format("tools[{}]", t), false);
     Tool tool;
     tool.name = tc.name;
     tool.mesh = extract_part_mesh(gmsh_model, tc.mesh.group, tc.name);

@@ -21,32 +21,58 @@ void compute_external_forces(const Model& model, double time, const Matrix3X& x,
       target.col(node) += value;
     }
   }
-  const QuadConn& quads = model.blank.part.quads;
-  const TriConn& triangles = model.blank.part.triangles;
-  const Eigen::Index n_quads = quads.cols();
+  const ShellPart& part = model.blank.part;
+  const Eigen::Index n_quads = part.quads.cols();
   for (const PressureLoad& load : loads.pressures) {
     const double p = load.scale.value(time) * load.pressure;
     for (int e : load.elements) {
-      // Vector area of the element, shared equally by its nodes; the pressure on the top face
-      // pushes along -normal. Quad: (x3 - x1) x (x4 - x2) / 2; triangle: (x2 - x1) x (x3 - x1) / 2.
+      // The vector area is shared equally by the element's nodes; the pressure on the top face
+      // pushes along -normal.
+      const Vec3 area = element_vector_area(part, x, e);
       if (e < n_quads) {
-        const Vec3 area = 0.5 * (x.col(quads(2, e)) - x.col(quads(0, e)))
-                                    .cross(x.col(quads(3, e)) - x.col(quads(1, e)));
         const Vec3 f = (-0.25 * p) * area;
         for (int a = 0; a < 4; ++a) {
-          f_ext.col(quads(a, e)) += f;
+          f_ext.col(part.quads(a, e)) += f;
         }
       } else {
-        const Eigen::Index k = e - n_quads;
-        const Vec3 x1 = x.col(triangles(0, k));
-        const Vec3 area = 0.5 * (x.col(triangles(1, k)) - x1).cross(x.col(triangles(2, k)) - x1);
         const Vec3 f = (-p / 3.0) * area;
         for (int a = 0; a < 3; ++a) {
-          f_ext.col(triangles(a, k)) += f;
+          f_ext.col(part.triangles(a, e - n_quads)) += f;
         }
       }
     }
   }
+}
+
+Vec3 element_vector_area(const ShellPart& part, const Matrix3X& x, int e) {
+  const Eigen::Index n_quads = part.quads.cols();
+  if (e < n_quads) {
+    const QuadConn& q = part.quads;
+    return 0.5 * (x.col(q(2, e)) - x.col(q(0, e))).cross(x.col(q(3, e)) - x.col(q(1, e)));
+  }
+  const Eigen::Index k = e - n_quads;
+  const TriConn& t = part.triangles;
+  const Vec3 x1 = x.col(t(0, k));
+  return 0.5 * (x.col(t(1, k)) - x1).cross(x.col(t(2, k)) - x1);
+}
+
+PressureDirection compute_pressure_direction(const Model& model, const PressureLoad& load,
+                                             const Matrix3X& x) {
+  PressureDirection d;
+  Vec3 vector_area = Vec3::Zero();
+  for (int e : load.elements) {
+    const Vec3 a = element_vector_area(model.blank.part, x, e);
+    vector_area += a;
+    d.area += a.norm();
+  }
+  if (vector_area.norm() > 0.0) {
+    d.top_normal = vector_area.normalized();
+  }
+  d.resultant = -load.pressure * vector_area;
+  if (d.resultant.norm() > 0.0) {
+    d.push = d.resultant.normalized();
+  }
+  return d;
 }
 
 }  // namespace sf

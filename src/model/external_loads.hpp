@@ -11,4 +11,22 @@ namespace sf {
 void compute_external_forces(const Model& model, double time, const Matrix3X& x, Matrix3X& f_ext,
                              Matrix3X& m_ext);
 
+/// The vector area (mm^2) of blank element e (quads, then triangles, as in ShellPart) on the
+/// coordinates x: along the element's normal, which points to its top side (the +normal side a
+/// pressure acts on). Quad: (x3 - x1) x (x4 - x2) / 2; triangle: (x2 - x1) x (x3 - x1) / 2.
+Vec3 element_vector_area(const ShellPart& part, const Matrix3X& x, int e);
+
+/// Where a pressure load pushes, on the coordinates x: for users to check that their elements'
+/// top side is the one they meant.
+struct PressureDirection {
+  double area = 0.0;               ///< mm^2, summed over the load's elements
+  Vec3 top_normal = Vec3::Zero();  ///< the area-weighted mean normal of their top sides (unit)
+  Vec3 push = Vec3::Zero();        ///< unit direction of the resultant (-top_normal for p > 0)
+  Vec3 resultant = Vec3::Zero();   ///< N, -p x the summed vector area, at scale factor 1
+};
+
+/// The direction of `load` on the blank of `model` at the coordinates x (mm).
+PressureDirection compute_pressure_direction(const Model& model, const PressureLoad& load,
+                                             const Matrix3X& x);
+
 }  // namespace sf

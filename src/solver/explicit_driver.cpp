@@ -242,6 +242,7 @@ SolutionState make_initial_state(const Model& model) {
   s.x = model.blank.mesh.nodes;
   s.v = Matrix3X::Zero(3, n);
   s.omega = Matrix3X::Zero(3, n);
+  s.rotation = Matrix3X::Zero(3, n);
   s.f_int = Matrix3X::Zero(3, n);
   s.m_int = Matrix3X::Zero(3, n);
   s.f_contact = Matrix3X::Zero(3, n);
@@ -389,6 +390,7 @@ void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previ
   }
   const double prescribed_work = apply_prescribed_motions(model, s, weight, dt);
   s.x += dt * s.v;
+  s.rotation += dt * s.omega;
   s.time += dt;
   s.cycle += 1;
   s.dt = dt;

@@ -3,42 +3,50 @@
 #include <fmt/core.h>
 
 #include "core/build_info.hpp"
+#include "io/unit_system.hpp"
 #include "solver/draw_in.hpp"
+#include "solver/reactions.hpp"
 
 namespace sf {
 
-std::vector<std::string> history_columns(const Model& model) {
-  std::vector<std::string> columns = {"time",
-                                      "time_step",
-                                      "stable_time_step",
-                                      "time_step_element",
-                                      "kinetic_energy",
-                                      "internal_energy",
-                                      "hourglass_energy",
-                                      "contact_energy",
-                                      "damping_energy",
-                                      "mass_scaling_energy",
-                                      "plastic_work",
-                                      "friction_work",
-                                      "external_work",
-                                      "energy_balance_error",
-                                      "added_mass",
-                                      "added_mass_percent",
-                                      "scaled_elements"};
+std::vector<HistoryColumn> history_columns(const Model& model) {
+  const UnitSystem units = parse_unit_system(model.config.units);
+  const std::string energy = units.moment();
+  std::vector<HistoryColumn> columns = {{"time", units.time},
+                                        {"time_step", units.time},
+                                        {"stable_time_step", units.time},
+                                        {"time_step_element", "-"},
+                                        {"kinetic_energy", energy},
+                                        {"internal_energy", energy},
+                                        {"hourglass_energy", energy},
+                                        {"contact_energy", energy},
+                                        {"damping_energy", energy},
+                                        {"mass_scaling_energy", energy},
+                                        {"plastic_work", energy},
+                                        {"friction_work", energy},
+                                        {"external_work", energy},
+                                        {"energy_balance_error", "-"},
+                                        {"added_mass", units.mass},
+                                        {"added_mass_percent", "%"},
+                                        {"scaled_elements", "-"}};
   for (const Tool& t : model.tools) {
-    columns.push_back(t.name + "_travel");
-    columns.push_back(t.name + "_speed");
-    columns.push_back(t.name + "_force");
-    columns.push_back(t.name + "_nodes_in_contact");
+    columns.push_back({t.name + "_travel", units.length});
+    columns.push_back({t.name + "_speed", units.velocity()});
+    columns.push_back({t.name + "_force", units.force});
+    columns.push_back({t.name + "_nodes_in_contact", "-"});
   }
   for (const DrawInConfig& d : model.config.draw_ins) {
-    columns.push_back("draw_in_" + d.name);
+    columns.push_back({"draw_in_" + d.name, units.length});
   }
   for (std::size_t c = 0; c < model.contacts.size(); ++c) {
     if (model.config.contacts[c].audit) {
-      columns.push_back(model.tools[static_cast<std::size_t>(model.contacts[c].tool)].name +
-                        "_search_misses");
+      columns.push_back(
+          {model.tools[static_cast<std::size_t>(model.contacts[c].tool)].name + "_search_misses",
+           "-"});
     }
+  }
+  for (HistoryColumn& column : history_group_columns(model, units)) {
+    columns.push_back(std::move(column));
   }
   return columns;
 }
@@ -70,7 +78,14 @@ FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& direct
     tool_coordinates_.push_back(t.mesh.nodes);
     tool_displacement_.push_back(Matrix3X::Zero(3, t.mesh.nodes.cols()));
   }
-  writer_ = std::make_unique<ResultsWriter>(directory, std::move(parts), history_columns(model));
+  std::vector<std::string> names, units;
+  for (HistoryColumn& column : history_columns(model)) {
+    names.push_back(std::move(column.name));
+    units.push_back(std::move(column.unit));
+  }
+  row_.resize(names.size());
+  writer_ = std::make_unique<ResultsWriter>(directory, std::move(parts), std::move(names),
+                                            std::move(units));
   writer_->write_run_info("resolved_case", format_resolved_case(model.config));
   writer_->write_run_info("version", build_info::version);
   writer_->write_run_info("git_hash", build_info::git_hash);
@@ -89,7 +104,9 @@ FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& direct
   stress_mid_.resize(6, n_elements);
   stress_top_.resize(6, n_elements);
   stress_bottom_.resize(6, n_elements);
-  row_.resize(history_columns(model).size());
+  needs_reactions_ = history_needs_reactions(model);
+  reaction_force_ = Matrix3X::Zero(3, model.blank.mesh.nodes.cols());
+  reaction_moment_ = Matrix3X::Zero(3, model.blank.mesh.nodes.cols());
 }
 
 void FrameOutput::write_frame(const Model& model, const SolutionState& s) {
@@ -173,6 +190,11 @@ void FrameOutput::append_history(const Model& model, const SolutionState& s) {
   for (const SearchAuditRecord& r : audits_.records()) {
     row_[k++] = r.last.misses;
   }
+  if (needs_reactions_) {
+    compute_reactions(model, s, reaction_force_, reaction_moment_);
+  }
+  record_history_groups(model, s, {reaction_force_, reaction_moment_},
+                        std::span<double>(row_).subspan(k));
   writer_->append_history(row_);
 }
 

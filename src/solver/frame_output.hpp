@@ -7,6 +7,7 @@
 
 #include "io/results_writer.hpp"
 #include "model/model.hpp"
+#include "solver/group_history.hpp"
 #include "solver/search_audit_recorder.hpp"
 #include "solver/solution_state.hpp"
 
@@ -42,6 +43,9 @@ class FrameOutput {
   Matrix3X displacement_;
   bool has_springback_field_ = false;
   const Matrix3X* stress_geometry_ = nullptr;
+  bool needs_reactions_ = false;      ///< a [[history]] group records reactions
+  Matrix3X reaction_force_;           ///< N per node, at the last history row
+  Matrix3X reaction_moment_;          ///< N mm per node
   Matrix3X springback_reference_;     ///< mm, x_formed (empty until set)
   Matrix3X springback_displacement_;  ///< mm
   VectorX plastic_strain_;
@@ -53,9 +57,10 @@ class FrameOutput {
   long last_history_cycle_ = -1;  ///< one row per cycle at most
 };
 
-/// The history columns, in order: time, the step taken and the stable step with its limiting
-/// element, the energies, the added mass, then per tool its travel, force and contact node count,
-/// then per audited contact pair its search misses (docs/results-format.md).
-std::vector<std::string> history_columns(const Model& model);
+/// The history columns with their units (the case's), in order: time, the step taken and the
+/// stable step with its limiting element, the energies, the added mass, then per tool its travel,
+/// speed, force and contact node count, the draw-ins, per audited contact pair its search misses,
+/// then the [[history]] groups' columns (docs/results-format.md).
+std::vector<HistoryColumn> history_columns(const Model& model);
 
 }  // namespace sf

@@ -46,6 +46,7 @@ ImplicitStepSummary run_implicit_springback(Model& model, SolutionState& s, Fram
                               ? model.config.springback->stabilization * body.membrane_stiffness()
                               : 0.0;
   const double t_formed = s.time;
+  const Matrix3X rotation_formed = s.rotation;
   const double frame_interval = model.end_time / model.config.control.output_frames;
   s.v.setZero();
   s.omega.setZero();
@@ -54,8 +55,10 @@ ImplicitStepSummary run_implicit_springback(Model& model, SolutionState& s, Fram
            load.reference_force, constraints.dofs.equation_count());
   summary.report =
       solve_static_step(body, constraints.dofs, load, options,
-                        [&](double lambda, const StaticShellBody& b, const StaticStepReport&) {
+                        [&](double lambda, const StaticShellBody& b, const StaticStepReport&,
+                            const ConvergedIncrement& increment) {
                           s.x = b.x();
+                          s.rotation = rotation_formed + increment.rotation;
                           s.shell = b.state();
                           s.time = t_formed + lambda * frame_interval;
                           s.cycle += 1;

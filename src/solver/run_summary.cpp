@@ -9,6 +9,7 @@
 
 #include "core/build_info.hpp"
 #include "core/errors.hpp"
+#include "io/unit_system.hpp"
 #include "solver/draw_in.hpp"
 #include "solver/implicit_summary.hpp"
 
@@ -59,6 +60,7 @@ nlohmann::json reaction_json(const ConstraintReaction& c) {
 
 RunSummary make_run_summary(const Model& model, const SolutionState& s, double wall_seconds) {
   RunSummary r;
+  r.units = model.config.units;
   r.cycles = s.cycle;
   r.end_time = s.time;
   r.wall_seconds = wall_seconds;
@@ -113,68 +115,171 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
                     std::abs(end_stroke - dc.measured_stroke) <= 1e-6 * dc.measured_stroke);
     r.draw_ins.push_back(d);
   }
+  Matrix3X reaction_force, reaction_moment;
+  compute_reactions(model, s, reaction_force, reaction_moment);
   if (!model.config.boundaries.empty() || !model.prescribed_motions.empty()) {
-    Matrix3X force, moment;
-    compute_reactions(model, s, force, moment);
-    r.reactions = sum_reactions_by_entry(model, force, moment);
+    r.reactions = sum_reactions_by_entry(model, reaction_force, reaction_moment);
+  }
+  for (const HistoryGroupConfig& h : model.config.history_groups) {
+    const NodeGroup& group = model.blank.group(h.group);
+    r.history_groups.push_back(
+        {h.group, static_cast<int>(group.nodes.size()), h,
+         measure_group(model, s, group.nodes, {reaction_force, reaction_moment})});
   }
   return r;
+}
+
+namespace {
+
+std::string format_group_vector(const Vec3& v) {
+  return fmt::format("({:.6g}, {:.6g}, {:.6g})", v.x(), v.y(), v.z());
+}
+
+template <typename Add>
+void add_history_groups(const RunSummary& r, const Add& add) {
+  const UnitSystem units = parse_unit_system(r.units);
+  for (const HistoryGroupResult& g : r.history_groups) {
+    std::string text;
+    const auto put = [&text](const std::string& part) {
+      text += (text.empty() ? "" : ", ") + part;
+    };
+    if (g.quantities.displacement) {
+      put(fmt::format("displacement {} {}", format_group_vector(g.values.displacement),
+                      units.length));
+    }
+    if (g.quantities.velocity) {
+      put(fmt::format("velocity {} {}", format_group_vector(g.values.velocity), units.velocity()));
+    }
+    if (g.quantities.rotation) {
+      put(fmt::format("rotation {} rad", format_group_vector(g.values.rotation)));
+    }
+    if (g.quantities.reaction) {
+      put(fmt::format("reaction {} {}, moment {} {}", format_group_vector(g.values.reaction_force),
+                      units.force, format_group_vector(g.values.reaction_moment), units.moment()));
+    }
+    add(fmt::format("  group {:<13} ({} nodes) {}", g.group, g.nodes, text));
+  }
+}
+
+nlohmann::json vector_json(const Vec3& v) {
+  return nlohmann::json::array({v.x(), v.y(), v.z()});
+}
+
+nlohmann::json history_groups_json(const RunSummary& r) {
+  const UnitSystem units = parse_unit_system(r.units);
+  nlohmann::json j = nlohmann::json::object();
+  for (const HistoryGroupResult& g : r.history_groups) {
+    nlohmann::json entry = {{"nodes", g.nodes}};
+    nlohmann::json unit_names = nlohmann::json::object();
+    if (g.quantities.displacement) {
+      entry["displacement"] = vector_json(g.values.displacement);
+      unit_names["displacement"] = units.length;
+    }
+    if (g.quantities.velocity) {
+      entry["velocity"] = vector_json(g.values.velocity);
+      unit_names["velocity"] = units.velocity();
+    }
+    if (g.quantities.rotation) {
+      entry["rotation"] = vector_json(g.values.rotation);
+      unit_names["rotation"] = "rad";
+    }
+    if (g.quantities.reaction) {
+      entry["reaction_force"] = vector_json(g.values.reaction_force);
+      entry["reaction_moment"] = vector_json(g.values.reaction_moment);
+      unit_names["reaction_force"] = units.force;
+      unit_names["reaction_moment"] = units.moment();
+    }
+    entry["units"] = unit_names;
+    j[g.group] = entry;
+  }
+  return j;
+}
+
+}  // namespace
+
+// The lines of an explicit run's cost, time step and mass (a static analysis has none of them).
+template <typename Add>
+void add_explicit_run_lines(const RunSummary& r, const UnitSystem& u, const Add& add) {
+  add(fmt::format("  time split          elements {:.0f} %, contact {:.0f} %, rest {:.0f} %",
+                  100.0 * r.element_share, 100.0 * r.contact_share,
+                  100.0 * (1.0 - r.element_share - r.contact_share)));
+  add(fmt::format("  time step           {:.4e} to {:.4e} {} (smallest limited by element {})",
+                  r.min_time_step, r.max_time_step, u.time, r.min_time_step_element));
+}
+
+template <typename Add>
+void add_energy_lines(const RunSummary& r, const UnitSystem& u, const Add& add) {
+  const Energies& e = r.energies;
+  if (r.static_step) {
+    add(fmt::format("  energies [{}]     internal {:.4e}, external work {:.4e}", u.moment(),
+                    e.internal, e.external_work));
+  } else {
+    add(
+        fmt::format("  energies [{}]     kinetic {:.4e}, internal {:.4e}, hourglass {:.4e}, "
+                    "contact {:.4e}, external work {:.4e}",
+                    u.moment(), e.kinetic, e.internal, e.hourglass, e.contact, e.external_work));
+    add(
+        fmt::format("                      damping {:.4e}, mass scaling {:.4e}; plastic work "
+                    "{:.4e} (part of internal), friction work {:.4e} (part of contact)",
+                    e.damping, e.mass_scaling, e.plastic_work, e.friction_work));
+  }
+  add(fmt::format("  energy balance      {:+.3e} (total - external work, relative)",
+                  e.balance_error()));
+  if (r.static_step) {
+    return;
+  }
+  add(fmt::format("  kinetic / internal  {:.4f} at the end, {:.4f} at most after 10% of the run",
+                  e.kinetic_ratio(), r.peak_kinetic_ratio));
+  add(fmt::format("  added mass          {:.4e} {}, {:.2f} % of {:.4e} {} ({} elements scaled)",
+                  r.added_mass, u.mass, 100.0 * r.added_mass_fraction, r.physical_mass, u.mass,
+                  r.scaled_elements));
 }
 
 std::string format_run_summary(const RunSummary& r) {
   std::string text;
   auto add = [&text](const std::string& line) { text += line + "\n"; };
+  const UnitSystem u = parse_unit_system(r.units);
   add(fmt::format("Run summary"));
-  add(fmt::format("  cycles              {}", r.cycles));
-  add(fmt::format("  end time            {:.6e} s", r.end_time));
-  add(fmt::format("  wall time           {:.2f} s ({:.0f} ns per element-cycle, {} elements)",
-                  r.wall_seconds, r.ns_per_element_cycle, r.elements));
-  add(fmt::format("  time split          elements {:.0f} %, contact {:.0f} %, rest {:.0f} %",
-                  100.0 * r.element_share, 100.0 * r.contact_share,
-                  100.0 * (1.0 - r.element_share - r.contact_share)));
-  add(fmt::format("  time step           {:.4e} to {:.4e} s (smallest limited by element {})",
-                  r.min_time_step, r.max_time_step, r.min_time_step_element));
-  add(
-      fmt::format("  energies [N mm]     kinetic {:.4e}, internal {:.4e}, hourglass {:.4e}, "
-                  "contact {:.4e}, external work {:.4e}",
-                  r.energies.kinetic, r.energies.internal, r.energies.hourglass, r.energies.contact,
-                  r.energies.external_work));
-  add(
-      fmt::format("                      damping {:.4e}, mass scaling {:.4e}; plastic work {:.4e} "
-                  "(part of internal), friction work {:.4e} (part of contact)",
-                  r.energies.damping, r.energies.mass_scaling, r.energies.plastic_work,
-                  r.energies.friction_work));
-  add(fmt::format("  energy balance      {:+.3e} (total - external work, relative)",
-                  r.energies.balance_error()));
-  add(fmt::format("  kinetic / internal  {:.4f} at the end, {:.4f} at most after 10% of the run",
-                  r.energies.kinetic_ratio(), r.peak_kinetic_ratio));
-  add(fmt::format(
-      "  added mass          {:.4e} tonne, {:.2f} % of {:.4e} tonne ({} elements scaled)",
-      r.added_mass, 100.0 * r.added_mass_fraction, r.physical_mass, r.scaled_elements));
-  add(fmt::format("  thickness           {:.4f} to {:.4f} mm", r.min_thickness, r.max_thickness));
+  if (r.static_step) {
+    add(fmt::format("  increments          {} converged, to the pseudo-time {:.6e} {}", r.cycles,
+                    r.end_time, u.time));
+    add(fmt::format("  wall time           {:.2f} s ({} elements)", r.wall_seconds, r.elements));
+  } else {
+    add(fmt::format("  cycles              {}", r.cycles));
+    add(fmt::format("  end time            {:.6e} {}", r.end_time, u.time));
+    add(fmt::format("  wall time           {:.2f} s ({:.0f} ns per element-cycle, {} elements)",
+                    r.wall_seconds, r.ns_per_element_cycle, r.elements));
+    add_explicit_run_lines(r, u, add);
+  }
+  add_energy_lines(r, u, add);
+  add(fmt::format("  thickness           {:.4f} to {:.4f} {}", r.min_thickness, r.max_thickness,
+                  u.length));
   add(fmt::format("  max plastic strain  {:.4f}", r.max_plastic_strain));
   for (const ToolSummary& t : r.tools) {
-    add(fmt::format("  tool {:<14} travel {:8.3f} mm, force {:10.1f} N, peak {:10.1f} N{}", t.name,
-                    t.travel, t.final_force, t.peak_force,
+    add(fmt::format("  tool {:<14} travel {:8.3f} {}, force {:10.1f} {}, peak {:10.1f} {}{}",
+                    t.name, t.travel, u.length, t.final_force, u.force, t.peak_force, u.force,
                     t.force_controlled
-                        ? fmt::format(" (force-controlled: applied {:.1f} N, speed {:.4g} mm/s)",
-                                      t.applied_force, t.speed)
+                        ? fmt::format(" (force-controlled: applied {:.1f} {}, speed {:.4g} {})",
+                                      t.applied_force, u.force, t.speed, u.velocity())
                         : std::string()));
   }
   for (const DrawInResult& d : r.draw_ins) {
     if (d.measured >= 0.0 && !d.comparable) {
       add(fmt::format(
-          "  draw-in {:<11} {:7.3f} mm   (measured {:.3f} mm at {:g} mm of stroke; this run "
-          "ended at {:.3f} mm: not compared)",
-          d.name, d.computed, d.measured, d.measured_stroke, d.end_stroke));
+          "  draw-in {:<11} {:7.3f} {}   (measured {:.3f} {} at {:g} {} of stroke; this run "
+          "ended at {:.3f} {}: not compared)",
+          d.name, d.computed, u.length, d.measured, u.length, d.measured_stroke, u.length,
+          d.end_stroke, u.length));
     } else if (d.measured >= 0.0) {
       add(fmt::format(
-          "  draw-in {:<11} {:7.3f} mm   measured {:7.3f} mm   deviation {:+.1f} %  ({})", d.name,
-          d.computed, d.measured, 100.0 * (d.computed - d.measured) / d.measured, d.source));
+          "  draw-in {:<11} {:7.3f} {}   measured {:7.3f} {}   deviation {:+.1f} %  ({})", d.name,
+          d.computed, u.length, d.measured, u.length,
+          100.0 * (d.computed - d.measured) / d.measured, d.source));
     } else {
-      add(fmt::format("  draw-in {:<11} {:7.3f} mm", d.name, d.computed));
+      add(fmt::format("  draw-in {:<11} {:7.3f} {}", d.name, d.computed, u.length));
     }
   }
+  add_history_groups(r, add);
   for (const SearchAuditSummary& a : r.search_audits) {
     if (a.max_misses == 0) {
       add(fmt::format(
@@ -185,9 +290,9 @@ std::string format_run_summary(const RunSummary& r) {
     }
     add(fmt::format(
         "  search audit {:<8} {} search: {} misses of {} nodes within reach at the end; "
-        "at most {} (t = {:.4e} s), {} over {} audits; largest gap error {:.3e} mm",
+        "at most {} (t = {:.4e} {}), {} over {} audits; largest gap error {:.3e} {}",
         a.tool, a.search, a.final_misses, a.final_nodes_checked, a.max_misses, a.max_misses_time,
-        a.total_misses, a.audits, a.max_gap_error));
+        u.time, a.total_misses, a.audits, a.max_gap_error, u.length));
   }
   for (const ConstraintReaction& c : r.reactions) {
     add(format_reaction(c));
@@ -268,6 +373,9 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
   }
   for (const ConstraintReaction& c : r.reactions) {
     j["reactions"][c.entry] = reaction_json(c);
+  }
+  if (!r.history_groups.empty()) {
+    j["history"] = history_groups_json(r);
   }
   if (r.static_step) {
     j["static_step"] = implicit_step_json(*r.static_step);

@@ -7,6 +7,7 @@
 
 #include "implicit/static_step.hpp"
 #include "model/model.hpp"
+#include "solver/group_history.hpp"
 #include "solver/reactions.hpp"
 #include "solver/solution_state.hpp"
 #include "solver/springback.hpp"
@@ -47,6 +48,14 @@ struct SearchAuditSummary {
   double max_gap_error = 0.0;    ///< mm
 };
 
+/// A [[history]] group at the end of the run (of forming, when a springback follows).
+struct HistoryGroupResult {
+  std::string group;
+  int nodes = 0;
+  HistoryGroupConfig quantities;  ///< which of the values below the case asked for
+  GroupMeasures values;           ///< mean motion and summed reaction (group_history.hpp)
+};
+
 struct RunSummary {
   long cycles = 0;
   double end_time = 0.0;              ///< s
@@ -74,10 +83,14 @@ struct RunSummary {
   /// The constraints' reactions per case entry at the end of the run (forming, or the static
   /// analysis's last increment), solver/reactions.hpp.
   std::vector<ConstraintReaction> reactions;
+  std::vector<HistoryGroupResult> history_groups;  ///< the case's [[history]] groups
+  std::string units = "mm-s-tonne-N-MPa";          ///< the case's unit system
   std::optional<ImplicitStepSummary> static_step;  ///< a static analysis
   std::optional<SpringbackSummary> springback;     ///< after an explicit forming run
 };
 
+/// The summary of the state at the end of a run; the reactions (per constraint entry and summed
+/// over the history groups) from compute_reactions.
 RunSummary make_run_summary(const Model& model, const SolutionState& state, double wall_seconds);
 /// The end-of-run summary as text for the console.
 std::string format_run_summary(const RunSummary& summary);

@@ -38,18 +38,22 @@ struct SolutionState {
   Matrix3X x;                  ///< mm, current coordinates
   Matrix3X v;                  ///< mm/s, at the half step (v(0) before the first step)
   Matrix3X omega;              ///< rad/s, at the half step (likewise)
-  Matrix3X f_int;              ///< N, internal forces (resisting)
-  Matrix3X m_int;              ///< N mm, internal moments (resisting)
-  Matrix3X f_contact;          ///< N, contact forces on the blank nodes
-  Matrix3X f_ext;              ///< N, applied forces (loads, pressure, gravity)
-  Matrix3X m_ext;              ///< N mm, applied moments
-  Matrix3X f_ext_previous;     ///< N, a step ago (for the work increment)
-  Matrix3X m_ext_previous;     ///< N mm
-  Matrix3X f_int_previous;     ///< N, for the trapezoidal work increment
-  Matrix3X m_int_previous;     ///< N mm
-  VectorX half_thickness;      ///< mm per node, the contact offset
-  VectorX mass_before;         ///< tonne per node, scratch: the masses before this cycle's scaling
-  VectorX inertia_before;      ///< tonne mm^2 per node, likewise
+  /// rad, per node, the rotation increments summed since time 0 (explicit: omega dt per step;
+  /// static: the converged increments' dtheta): the rotation vector for a rotation about a fixed
+  /// axis, a first-order measure of a general one
+  Matrix3X rotation;
+  Matrix3X f_int;           ///< N, internal forces (resisting)
+  Matrix3X m_int;           ///< N mm, internal moments (resisting)
+  Matrix3X f_contact;       ///< N, contact forces on the blank nodes
+  Matrix3X f_ext;           ///< N, applied forces (loads, pressure, gravity)
+  Matrix3X m_ext;           ///< N mm, applied moments
+  Matrix3X f_ext_previous;  ///< N, a step ago (for the work increment)
+  Matrix3X m_ext_previous;  ///< N mm
+  Matrix3X f_int_previous;  ///< N, for the trapezoidal work increment
+  Matrix3X m_int_previous;  ///< N mm
+  VectorX half_thickness;   ///< mm per node, the contact offset
+  VectorX mass_before;      ///< tonne per node, scratch: the masses before this cycle's scaling
+  VectorX inertia_before;   ///< tonne mm^2 per node, likewise
   /// N, the contact forces on the blank nodes a step ago (for the contact work increment).
   Matrix3X f_contact_previous;
   /// N mm, sum of 1/2 k g^2 over the penalty springs at the current state: a diagnostic only

@@ -2,7 +2,6 @@
 
 #include <fmt/core.h>
 #include <fmt/format.h>
-
 #include <algorithm>
 #include <chrono>
 
@@ -15,9 +14,7 @@
 #include "solver/frame_output.hpp"
 
 namespace sf {
-
 namespace {
-
 /// Adds the prescribed displacements (mm) and rotations (rad) at time t (s) to du and dtheta,
 /// along the nodes' axes.
 void add_prescribed_displacements(const Model& model, double t, Matrix3X& du, Matrix3X& dtheta) {
@@ -70,34 +67,9 @@ void check_automatic_holds(const Model& model, const StaticConstraints& constrai
   }
 }
 
-}  // namespace
-
-RunSummary run_static(Model& model, const RunOptions& options, SolutionState* final_state) {
-  const auto start = std::chrono::steady_clock::now();
-  SolutionState s = make_initial_state(model);
-  std::unique_ptr<FrameOutput> output;
-  if (options.write_results) {
-    output = std::make_unique<FrameOutput>(model, options.output_directory);
-    output->write_frame(model, s);
-    output->append_history(model, s);
-  }
-  if (output && model.config.analysis.linear) {
-    output->set_stress_geometry(&model.blank.mesh.nodes);
-  }
-  const auto node_name = blank_node_namer(model);
-  StaticShellBody body(model.blank.part, s.x, s.shell);
-  ImplicitStepSummary step;
-  // Held and prescribed degrees of freedom are not solved for; the prescribed ones move by their
-  // curves (StaticLoad::prescribed).
-  StaticConstraints constraints = make_static_constraints(
-      s.x, model.constraints.held_or_prescribed(), model.config.implicit.rigid_body_modes,
-      node_name, model.constraints.frames);
-  step.free_modes = constraints.free_modes;
-  step.added_constraints = constraints.added;
-
-  const double end_time = model.config.control.end_time;
-  // A load without a curve ramps from zero at time 0 to its value at end_time (in an explicit run
-  // it would be constant): the static step follows the load from the unloaded state.
+// A load without a curve ramps from zero at time 0 to its value at end_time (in an explicit run
+// it would be constant): the static step follows the load from the unloaded state.
+void ramp_loads_without_curves(Model& model, double end_time) {
   const LoadCurve ramp({0.0, end_time}, {0.0, 1.0});
   std::size_t nodal = 0;
   std::size_t pressure = 0;
@@ -110,6 +82,82 @@ RunSummary run_static(Model& model, const RunOptions& options, SolutionState* fi
     }
   }
   model.loads.gravity_scale = ramp;
+}
+
+// Frames at the pseudo-times of control.output_frames, each written at the first converged
+// increment at or past its time (as the explicit loop does with its steps), and one of the final
+// state; a history row at every converged increment.
+class StaticOutputSchedule {
+ public:
+  StaticOutputSchedule(FrameOutput* output, double end_time, int frames)
+      : output_(output), end_time_(end_time), interval_(end_time / frames), next_(interval_) {}
+
+  void record(const Model& model, const SolutionState& s, bool final_state) {
+    if (!output_) {
+      return;
+    }
+    output_->append_history(model, s);
+    if (final_state || s.time >= next_ * (1.0 - 1e-12)) {
+      output_->write_frame(model, s);
+      last_frame_time_ = s.time;
+      while (next_ <= s.time * (1.0 + 1e-12)) {
+        next_ += interval_;  // an increment longer than the frame interval
+      }
+    }
+  }
+
+  // After a failed step: the last converged state as a frame when it is not one already.
+  // Returns the sentence to append to the error message.
+  std::string write_stop_state(const Model& model, const SolutionState& s) {
+    if (!output_) {
+      return {};
+    }
+    std::string sentence;
+    if (s.time > last_frame_time_) {
+      output_->write_frame(model, s);
+      sentence = fmt::format(
+          "; the last frame in the results (load factor {:.6f}) is the last converged state",
+          s.time / end_time_);
+    }
+    output_->flush();
+    return sentence;
+  }
+
+ private:
+  FrameOutput* output_;
+  double end_time_;  // s, the pseudo-time of load factor 1
+  double interval_;  // s, between frames
+  double next_;      // s, the next frame's pseudo-time
+  double last_frame_time_ = 0.0;
+};
+
+}  // namespace
+
+RunSummary run_static(Model& model, const RunOptions& options, SolutionState* final_state) {
+  const auto start = std::chrono::steady_clock::now();
+  SolutionState s = make_initial_state(model);
+  const auto node_name = blank_node_namer(model);
+  // Held and prescribed degrees of freedom are not solved for; the prescribed ones move by their
+  // curves (StaticLoad::prescribed).
+  StaticConstraints constraints = make_static_constraints(
+      s.x, model.constraints.held_or_prescribed(), model.config.implicit.rigid_body_modes,
+      node_name, model.constraints.frames);
+  std::unique_ptr<FrameOutput> output;
+  if (options.write_results) {
+    output = std::make_unique<FrameOutput>(model, options.output_directory);
+    output->write_frame(model, s);
+    output->append_history(model, s);
+  }
+  if (output && model.config.analysis.linear) {
+    output->set_stress_geometry(&model.blank.mesh.nodes);
+  }
+  StaticShellBody body(model.blank.part, s.x, s.shell);
+  ImplicitStepSummary step;
+  step.free_modes = constraints.free_modes;
+  step.added_constraints = constraints.added;
+
+  const double end_time = model.config.control.end_time;
+  ramp_loads_without_curves(model, end_time);
   StaticLoad load;
   load.at = [&](double lambda, const Matrix3X& x, Matrix3X& f, Matrix3X& m) {
     compute_external_forces(model, lambda * end_time, x, f, m);
@@ -137,21 +185,30 @@ RunSummary run_static(Model& model, const RunOptions& options, SolutionState* fi
            step_options.linear ? "linear" : "nonlinear", constraints.dofs.equation_count(),
            end_time, step_options.linear ? 1 : step_options.controls.increments,
            step_options.linear || step_options.controls.increments == 1 ? "" : "s");
-  step.report = solve_static_step(
-      body, constraints.dofs, load, step_options,
-      [&](double lambda, const StaticShellBody& b, const StaticStepReport& report) {
-        s.x = b.x();
-        s.shell = b.state();
-        s.time = lambda * end_time;
-        s.cycle += 1;
-        s.energies.internal = report.internal_work;
-        s.energies.external_work = report.external_work;
-        compute_external_forces(model, s.time, s.x, s.f_ext, s.m_ext);
-        if (output) {
-          output->append_history(model, s);
-          output->write_frame(model, s);
-        }
-      });
+  StaticOutputSchedule schedule(output.get(), end_time, model.config.control.output_frames);
+  try {
+    step.report =
+        solve_static_step(body, constraints.dofs, load, step_options,
+                          [&](double lambda, const StaticShellBody& b,
+                              const StaticStepReport& report, const ConvergedIncrement& increment) {
+                            s.x = b.x();
+                            s.shell = b.state();
+                            s.rotation = increment.rotation;
+                            s.time = lambda * end_time;
+                            s.cycle += 1;
+                            s.energies.internal = report.internal_work;
+                            s.energies.external_work = report.external_work;
+                            // The forces of the converged state, as the step's residual used
+                            // them: f_int - f_ext is the reaction on held and prescribed dofs.
+                            s.f_int = increment.f_int;
+                            s.m_int = increment.m_int;
+                            s.f_ext = increment.f_ext;
+                            s.m_ext = increment.m_ext;
+                            schedule.record(model, s, lambda >= 1.0 - 1e-12);
+                          });
+  } catch (const ConvergenceError& error) {
+    throw ConvergenceError(error.what() + schedule.write_stop_state(model, s));
+  }
   if (output) {
     output->flush();
   }

@@ -9,10 +9,12 @@
 
 namespace sf {
 
-/// Runs the static analysis, writing a frame (time = load factor x end_time) and a history row
-/// per converged increment; the final state goes to `final_state` when given. Throws
-/// ConvergenceError when the step cannot converge, InputError for constraints that leave
-/// rigid-body modes free with implicit.rigid_body_modes = "error".
+/// Runs the static analysis, writing a history row per converged increment (time = load factor x
+/// end_time) and frames at the control.output_frames pseudo-times (each at the first converged
+/// increment at or past it; the initial state and the final one always); the final state goes to
+/// `final_state` when given. Throws ConvergenceError when the step cannot converge (after writing
+/// the last converged state as a frame), InputError for constraints that leave rigid-body modes
+/// free with implicit.rigid_body_modes = "error".
 RunSummary run_static(Model& model, const RunOptions& options,
                       SolutionState* final_state = nullptr);
 

@@ -42,7 +42,7 @@ end_time = 0.002
 
 /// Every key given, with values that differ from the defaults.
 inline constexpr std::string_view kFull = R"toml(title = "NUMISHEET'93 square cup"
-units = "mm-s-tonne-N-MPa (full)"
+units = "m-s-kg-N-Pa"
 
 [blank]
 mesh = "geometry/../blank.geo"

@@ -73,7 +73,7 @@ TEST_F(ReadCase, MinimalCaseGetsEveryDocumentedDefault) {
 TEST_F(ReadCase, FullCaseReadsEveryValue) {
   const sf::CaseConfig c = sf::read_case(write_case(kFull));
   EXPECT_EQ(c.title, "NUMISHEET'93 square cup");
-  EXPECT_EQ(c.units, "mm-s-tonne-N-MPa (full)");
+  EXPECT_EQ(c.units, "m-s-kg-N-Pa");
 
   EXPECT_EQ(c.blank.mesh.file, dir_ / "blank.geo");  // normalised
   EXPECT_EQ(c.blank.mesh.group, "sheet");

@@ -108,7 +108,8 @@ TEST(StaticStep, PerfectlyPlasticBendingUnloadsByMOverEI) {
   double eps_p_peak = 0.0;
   const sf::StaticStepReport report = sf::solve_static_step(
       body, c.dofs, load, options,
-      [&](double lambda, const sf::StaticShellBody& b, const sf::StaticStepReport&) {
+      [&](double lambda, const sf::StaticShellBody& b, const sf::StaticStepReport&,
+          const sf::ConvergedIncrement&) {
         if (std::abs(lambda - 0.5) < 1e-12) {
           kappa_loaded = arc_curvature(model, b.x());
           eps_p_peak = *std::max_element(b.state().eps_p.begin(), b.state().eps_p.end());

@@ -1,0 +1,344 @@
+#include "solver/model_report.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "core/log.hpp"
+#include "model/constraint_assembly.hpp"
+#include "model/external_loads.hpp"
+
+namespace sf {
+namespace {
+
+std::string format_vector(const Vec3& v) {
+  return fmt::format("({:.4g}, {:.4g}, {:.4g})", v.x(), v.y(), v.z());
+}
+
+std::string format_vector(const std::array<double, 3>& v) {
+  return format_vector(Vec3(v[0], v[1], v[2]));
+}
+
+bool is_static(const CaseConfig& config) {
+  return config.analysis.type == AnalysisConfig::Type::static_equilibrium;
+}
+
+void print_analysis(const CaseConfig& config) {
+  if (is_static(config)) {
+    const ImplicitConfig& c = config.implicit;
+    if (config.analysis.linear) {
+      log_info("Analysis    static, linear: one solve on the initial geometry\n");
+    } else {
+      log_info(
+          "Analysis    static, nonlinear: Newton-Raphson in {} increment{} (an increment is "
+          "halved at most {} times), {} iterations at most each\n",
+          c.increments, c.increments == 1 ? "" : "s", c.max_cuts, c.max_iterations);
+    }
+    return;
+  }
+  std::string springback;
+  if (config.springback) {
+    springback = config.springback->method == SpringbackConfig::Method::implicit
+                     ? ", then springback by the implicit static step"
+                     : ", then springback by dynamic relaxation";
+  }
+  log_info("Analysis    explicit dynamic (central differences){}\n", springback);
+}
+
+void print_material(const CaseConfig& config, const UnitSystem& units) {
+  const MaterialConfig& m = config.blank_material();
+  using Type = MaterialConfig::Type;
+  using Law = HardeningConfig::Law;
+  std::string law = "elastic";
+  if (m.type == Type::hill48) {
+    const auto& d = config.blank.rolling_direction;
+    law = fmt::format("Hill48 (r0 {}, r45 {}, r90 {}; rolling direction ({:.3g}, {:.3g}, {:.3g}))",
+                      m.r0, m.r45, m.r90, d[0], d[1], d[2]);
+  } else if (m.type == Type::von_mises) {
+    law = "von Mises";
+  }
+  if (m.type != Type::elastic) {
+    static constexpr const char* names[] = {"Swift", "linear", "Voce", "tabulated"};
+    law += fmt::format(", {} hardening", names[static_cast<int>(m.hardening.law)]);
+    if (m.hardening.law == Law::tabulated) {
+      law += fmt::format(" ({})", m.hardening.table_file.string());
+    }
+  }
+  log_info("Material    '{}': E = {} {}, nu = {}, density {} {}, {}\n", m.name, m.young,
+           units.stress, m.poisson, m.density, units.density(), law);
+}
+
+void print_mass(const Model& model, const UnitSystem& units) {
+  const Blank& blank = model.blank;
+  log_info(
+      "Mass        {:.6e} {} physical, {:.6e} {} added by mass scaling ({:.2f} %, {} elements)\n",
+      blank.physical_mass, units.mass, blank.scaling.added_mass, units.mass,
+      100.0 * blank.scaling.added_mass / blank.physical_mass, blank.scaling.scaled_elements);
+  if (blank.scaling.enabled()) {
+    log_info("Mass scale  target step {:.4e} {}; elements below it get mass during the run too\n",
+             blank.scaling.target_dt, units.time);
+  }
+}
+
+void print_boundaries(const Model& model, const UnitSystem& units) {
+  for (const BoundaryConfig& b : model.config.boundaries) {
+    log_info("Boundary    '{}': {} nodes, {}\n", b.group, model.blank.group(b.group).nodes.size(),
+             describe_boundary(b));
+  }
+  for (const PrescribedMotion& p : model.prescribed_motions) {
+    const bool displacement = p.kind == PrescribedMotion::Kind::displacement;
+    const std::string unit =
+        p.rotation ? (displacement ? std::string("rad") : fmt::format("rad/{}", units.time))
+                   : (displacement ? std::string(units.length) : units.velocity());
+    log_info("Prescribed  '{}': {} nodes, {} {} ({}) along ({:.3g}, {:.3g}, {:.3g}) ({})\n",
+             p.group, p.nodes.size(), p.rotation ? "rotation" : "translation",
+             displacement ? "displacement" : "velocity", unit, p.direction.x(), p.direction.y(),
+             p.direction.z(), p.entry);
+  }
+  if (model.constraints.frames.count() > 0) {
+    const int framed = model.constraints.frames.count();
+    log_info("Node axes   {} node{} in axes of {} own (from the constraints there)\n", framed,
+             framed == 1 ? "" : "s", framed == 1 ? "its" : "their");
+  }
+}
+
+/// How a load or prescription is scaled over time: its curve, or (static, no curve) the ramp.
+std::string describe_scale(const CaseConfig& config, const CurveConfig& curve,
+                           const UnitSystem& units) {
+  if (!curve.times.empty()) {
+    return fmt::format("scaled by a curve of {} point{} (factor {} at {} {} .. {} from {} {})",
+                       curve.times.size(), curve.times.size() == 1 ? "" : "s", curve.values.front(),
+                       curve.times.front(), units.time, curve.values.back(), curve.times.back(),
+                       units.time);
+  }
+  if (is_static(config)) {
+    return fmt::format("ramped from 0 to its value over the pseudo-time 0..{} {}",
+                       config.control.end_time, units.time);
+  }
+  return "constant";
+}
+
+void print_pressure(const Model& model, const LoadConfig& lc, const PressureLoad& load,
+                    const UnitSystem& units) {
+  const PressureDirection d = compute_pressure_direction(model, load, model.blank.mesh.nodes);
+  log_info(
+      "Load        '{}': pressure {} {} on the top side of {} elements ({:.6g} {}), {}\n"
+      "            their top side's mean normal {}; the pressure pushes along {}: resultant {} "
+      "{} at full value\n",
+      lc.group, lc.pressure, units.stress, load.elements.size(), d.area, units.area(),
+      describe_scale(model.config, lc.curve, units), format_vector(d.top_normal),
+      format_vector(d.push), format_vector(d.resultant), units.force);
+}
+
+void print_loads(const Model& model, const UnitSystem& units) {
+  const CaseConfig& config = model.config;
+  std::size_t pressure = 0;
+  for (const LoadConfig& lc : config.loads) {
+    if (lc.type == LoadConfig::Type::pressure) {
+      print_pressure(model, lc, model.loads.pressures.at(pressure++), units);
+      continue;
+    }
+    const bool moment = lc.type == LoadConfig::Type::moment;
+    log_info("Load        '{}': {} {} {} per node on {} nodes, {}\n", lc.group,
+             moment ? "moment" : "force", format_vector(lc.value),
+             moment ? units.moment() : units.force, model.blank.group(lc.group).nodes.size(),
+             describe_scale(config, lc.curve, units));
+  }
+  for (const PrescribedVelocityConfig& pv : config.prescribed_velocities) {
+    std::string held;
+    for (int c = 0; c < 3; ++c) {
+      if (pv.components[static_cast<std::size_t>(c)]) {
+        held += fmt::format("{}{} = {}", held.empty() ? "" : ", ", "xyz"[c],
+                            pv.velocity[static_cast<std::size_t>(c)]);
+      }
+    }
+    log_info("Prescribed  '{}': velocity {} {} held on {} nodes, {}\n", pv.group, held,
+             units.velocity(), model.blank.group(pv.group).nodes.size(),
+             describe_scale(config, pv.curve, units));
+  }
+  for (const InitialVelocityConfig& iv : config.initial_velocities) {
+    log_info("Initial     {}: velocity {} {}\n",
+             iv.group.empty() ? std::string("every node") : fmt::format("'{}'", iv.group),
+             format_vector(iv.velocity), units.velocity());
+  }
+  const auto& g = config.control.gravity;
+  if (g[0] != 0.0 || g[1] != 0.0 || g[2] != 0.0) {
+    log_info("Gravity     {} {} on the physical mass, {}\n", format_vector(g), units.acceleration(),
+             is_static(config) ? "ramped like the loads" : std::string("constant"));
+  }
+  if (config.control.damping > 0.0 && !is_static(config)) {
+    log_info("Damping     {} {}, mass-proportional\n", config.control.damping, units.rate());
+  }
+}
+
+void print_tools(const Model& model, const UnitSystem& units) {
+  for (std::size_t i = 0; i < model.tools.size(); ++i) {
+    const Tool& t = model.tools[i];
+    std::string motion = "fixed";
+    if (t.force_control) {
+      // Its frequency on the contact springs of its pair, against the bound build_model checks.
+      double k_sum = 0.0;
+      for (const ContactInterface& c : model.contacts) {
+        if (c.tool == static_cast<int>(i)) {
+          k_sum += c.pair.stiffness.sum();
+        }
+      }
+      motion = fmt::format(
+          "force-controlled along {}, mass {:.4e} {}, damping {} {}; sqrt(sum k / mass) dt = "
+          "{:.3f}",
+          format_vector(t.direction()), t.force_control->mass(), units.mass,
+          t.force_control->damping(), units.rate(),
+          std::sqrt(k_sum / t.force_control->mass()) * model.time_step);
+    } else if (t.motion.moves()) {
+      motion = fmt::format("moves along {}", format_vector(t.direction()));
+    }
+    log_info("Tool        '{}': {} nodes, {} triangles, {}\n", t.name, t.mesh.nodes.cols(),
+             t.mesh.triangles.cols(), motion);
+  }
+}
+
+std::string describe_friction(const ContactConfig& c, const UnitSystem& units) {
+  if (!(c.friction_static > 0.0)) {
+    return "frictionless";
+  }
+  if (c.friction_dynamic == c.friction_static && c.friction_decay == 0.0) {
+    return fmt::format("Coulomb friction mu = {}", c.friction_static);
+  }
+  return fmt::format("Coulomb friction mu_s = {}, mu_d = {}, decay {} {}/{}", c.friction_static,
+                     c.friction_dynamic, c.friction_decay, units.time, units.length);
+}
+
+void print_contacts(const Model& model, const UnitSystem& units) {
+  for (std::size_t k = 0; k < model.contacts.size(); ++k) {
+    const ContactInterface& c = model.contacts[k];
+    const ContactConfig& cc = model.config.contacts[k];  // build_model keeps the case's order
+    log_info(
+        "Contact     blank nodes vs '{}': search '{}', {} projection, penalty {} {:.4g} to "
+        "{:.4g} {}, {}\n",
+        model.tools[static_cast<std::size_t>(c.tool)].name, cc.search,
+        cc.projection == ContactConfig::Projection::interpolated ? "interpolated" : "orthogonal",
+        cc.penalty_stiffness > 0.0 ? std::string("stiffness")
+                                   : fmt::format("scale {}, stiffness", cc.penalty_scale),
+        c.pair.stiffness.minCoeff(), c.pair.stiffness.maxCoeff(), units.stiffness(),
+        describe_friction(cc, units));
+  }
+}
+
+void print_mesh_parameters(const CaseConfig& config) {
+  const auto print = [](const std::string& part, const MeshSourceConfig& mesh) {
+    if (mesh.parameters.empty()) {
+      return;
+    }
+    std::string list;
+    for (const GeoParameter& p : mesh.parameters) {
+      list += fmt::format("{}{} = {}", list.empty() ? "" : ", ", p.name, p.value);
+    }
+    log_info("Parameters  {} ({}): {}\n", part, mesh.file.filename().string(), list);
+  };
+  print("blank", config.blank.mesh);
+  for (const ToolConfig& t : config.tools) {
+    print(fmt::format("tool '{}'", t.name), t.mesh);
+  }
+}
+
+void print_history_groups(const Model& model) {
+  for (const HistoryGroupConfig& h : model.config.history_groups) {
+    std::string quantities;
+    const std::pair<bool, const char*> flags[] = {{h.displacement, "mean displacement"},
+                                                  {h.velocity, "mean velocity"},
+                                                  {h.rotation, "mean rotation"},
+                                                  {h.reaction, "summed reaction"}};
+    for (const auto& [on, name] : flags) {
+      if (on) {
+        quantities += fmt::format("{}{}", quantities.empty() ? "" : ", ", name);
+      }
+    }
+    log_info("History     '{}' ({} nodes): {}\n", h.group, model.blank.group(h.group).nodes.size(),
+             quantities);
+  }
+}
+
+void print_time_control(const Model& model, const UnitSystem& units) {
+  const ControlConfig& control = model.config.control;
+  if (is_static(model.config)) {
+    log_info(
+        "Output      {} frames at the load factors k / {}, k = 1 .. {} (each at the first "
+        "converged increment at or past it), a history row per converged increment\n",
+        control.output_frames, control.output_frames, control.output_frames);
+    return;
+  }
+  log_info("Time step   {:.4e} {} (safety {} x critical, limited by element {})\n", model.time_step,
+           units.time, control.time_step_safety, model.limiting_element);
+  log_info("End time    {:.6e} {}{}\n", model.end_time, units.time,
+           control.stroke > 0.0 ? fmt::format(" (stroke {} {} of '{}')", control.stroke,
+                                              units.length, control.stroke_tool)
+                                : std::string());
+  log_info("Cycles      about {:.0f}\n", model.end_time / model.time_step);
+  log_info("Output      {} frames, a history row every {} cycles\n", control.output_frames,
+           control.history_interval);
+}
+
+}  // namespace
+
+std::string describe_shell_formulation(const ShellPart& part, bool static_step) {
+  const ShellSection& s = part.section;
+  std::string text;
+  if (part.formulation == ShellFormulation::assumed_strain) {
+    if (part.quads.cols() > 0) {
+      text = fmt::format(
+          "{} assumed-strain quadrilaterals (one in-plane point, directors, MITC4 transverse "
+          "shear, physical hourglass stabilisation)",
+          part.quads.cols());
+    }
+    if (part.triangles.cols() > 0) {
+      text += fmt::format("{}{} assumed-strain triangles (directors, DSG3 transverse shear)",
+                          text.empty() ? "" : ", ", part.triangles.cols());
+    }
+  } else if (part.quads.cols() > 0) {
+    const bool stiffness = static_step || part.hourglass_form == HourglassForm::stiffness;
+    text = fmt::format(
+        "{} Belytschko-Lin-Tsay quadrilaterals (one in-plane point, {} hourglass control, "
+        "coefficient {}{})",
+        part.quads.cols(), stiffness ? "stiffness" : "viscous", part.hourglass_coefficient,
+        static_step && part.hourglass_form == HourglassForm::viscous
+            ? "; the case's viscous form has no static stiffness"
+            : "");
+  }
+  if (part.formulation != ShellFormulation::assumed_strain && part.triangles.cols() > 0) {
+    text += fmt::format("{}{} C0 triangles (DSG3 transverse shear)", text.empty() ? "" : ", ",
+                        part.triangles.cols());
+  }
+  return text + fmt::format("; {} {} points through the thickness", s.n_points,
+                            s.rule == ThroughThicknessRule::lobatto ? "Lobatto" : "Gauss");
+}
+
+void print_model(const Model& model) {
+  const CaseConfig& config = model.config;
+  const UnitSystem units = parse_unit_system(config.units);
+  log_info("Case        {}\n", config.file.string());
+  if (!config.title.empty()) {
+    log_info("Title       {}\n", config.title);
+  }
+  log_info("Units       {}: length {}, time {}, mass {}, force {}, stress {}\n", config.units,
+           units.length, units.time, units.mass, units.force, units.stress);
+  print_analysis(config);
+  const Blank& blank = model.blank;
+  log_info("Blank       {} nodes, {} elements, t = {} {}, material '{}'\n", blank.mesh.nodes.cols(),
+           element_count(blank.part), config.blank.thickness, units.length, config.blank.material);
+  log_info("Elements    {}\n", describe_shell_formulation(blank.part, is_static(config)));
+  print_mesh_parameters(config);
+  print_material(config, units);
+  if (!is_static(config)) {
+    print_mass(model, units);
+  }
+  print_boundaries(model, units);
+  print_loads(model, units);
+  print_tools(model, units);
+  print_contacts(model, units);
+  print_history_groups(model);
+  print_time_control(model, units);
+}
+
+}  // namespace sf
