@@ -83,10 +83,14 @@ ShellForceResult StaticShellBody::compute_forces(const Matrix3X& du, const Matri
   m.setZero(3, x_.cols());
   // One step of unit length: "velocities" du, dtheta over dt = 1.
   ShellForceResult r = compute_shell_internal_forces(part_, x_trial_, du, dtheta, 1.0, trial, f, m);
-  // Drilling springs about the committed normals.
+  // Drilling springs about the committed normals, anchored at the increment's start: their work
+  // over it, 1/2 k (n . dtheta)^2 per node, is part of the body's internal work (without it a
+  // drilling rotation's work would be missing from the energy balance).
   for (Eigen::Index i = 0; i < x_.cols(); ++i) {
     const Vec3 n = normal_.col(i);
-    m.col(i) += (drilling_stiffness_ * n.dot(dtheta.col(i))) * n;
+    const double drill = n.dot(dtheta.col(i));
+    m.col(i) += (drilling_stiffness_ * drill) * n;
+    r.internal_work += 0.5 * drilling_stiffness_ * drill * drill;
   }
   return r;
 }

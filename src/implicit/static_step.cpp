@@ -175,7 +175,8 @@ class NewtonSolver {
     } else {
       report_.final_residual = current_.residual_norm / current_.reference;
     }
-    report_.internal_work += current_.forces.internal_work + current_.forces.hourglass_work;
+    report_.internal_work += current_.forces.internal_work;
+    report_.hourglass_work += current_.forces.hourglass_work;
     double external = 0.0;
     for (Eigen::Index i = 0; i < current_.du.cols(); ++i) {
       external += 0.5 * ((f_ext_start_.col(i) + current_.f_ext.col(i)).dot(current_.du.col(i)) +

@@ -74,7 +74,12 @@ struct StaticStepReport {
   int equations = 0;
   FactorizationStats last_factorization;
   StiffnessSolverTotals solver;
-  double internal_work = 0.0;  ///< N mm, work of the internal forces over the step
+  /// N mm, work of the internal forces over the step (the drilling springs' included; the
+  /// hourglass forces' apart)
+  double internal_work = 0.0;
+  /// N mm, work of the hourglass forces: Belytschko-Tsay's stiffness form, or the assumed-strain
+  /// element's stabilisation (as in explicit runs)
+  double hourglass_work = 0.0;
   /// N mm, work of the loads over the step, and of the reactions on the prescribed displacements
   double external_work = 0.0;
   double prescribed_work = 0.0;  ///< N mm, the part of external_work done by those reactions

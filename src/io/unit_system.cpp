@@ -77,11 +77,15 @@ std::vector<std::string_view> split(std::string_view text, char separator) {
 }  // namespace
 
 UnitSystem parse_unit_system(std::string_view text) {
+  if (text == "consistent") {
+    // A benchmark's data in no named system (MacNeal-Harder's problems): symbols of dimension.
+    return UnitSystem{"[L]", "[T]", "[M]", "[F]", "[F/L^2]"};
+  }
   const std::vector<std::string_view> parts = split(text, '-');
   if (parts.size() != 5) {
     throw std::invalid_argument(
         fmt::format("expected five units LENGTH-TIME-MASS-FORCE-STRESS separated by '-' (e.g. "
-                    "\"mm-s-tonne-N-MPa\" or \"m-s-kg-N-Pa\"), got {} part{}",
+                    "\"mm-s-tonne-N-MPa\" or \"m-s-kg-N-Pa\"), or \"consistent\", got {} part{}",
                     parts.size(), parts.size() == 1 ? "" : "s"));
   }
   const NamedUnit& length = find_unit(parts[0], kLengths, "length");

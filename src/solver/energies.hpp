@@ -7,8 +7,10 @@ struct Energies {
   /// Translational + rotational, at the step end t(n+1): from the whole-step velocity v(n+1) =
   /// v(n+1/2) + dt/2 a(n+1) (docs/time-integration.md)
   double kinetic = 0.0;
-  double internal = 0.0;   ///< work of the element forces, hourglass work excluded
-  double hourglass = 0.0;  ///< work of the hourglass forces
+  double internal = 0.0;  ///< work of the element forces, hourglass work excluded
+  /// Work of the hourglass forces (Belytschko-Tsay) or of the physical stabilisation
+  /// (assumed strain, where it is elastic energy of the stabilised modes).
+  double hourglass = 0.0;
   /// Work done against the contact forces, accumulated each step by the trapezoidal rule (the
   /// sliding energy of LS-DYNA): dE = -1/2 sum_i (fc_i(n) + fc_i(n+1)) . (x_i(n+1) - x_i(n))
   /// - sum_tools 1/2 (F_t(n) + F_t(n+1)) . (u_t(n+1) - u_t(n)), fc the contact force on blank
@@ -41,6 +43,9 @@ struct Energies {
   /// N mm, D at the first step, less D's jumps where the step size changed (D scales with dt^2).
   double half_kick_reference = 0.0;
 
+  /// D - D_ref, the term the balance takes out of the total (history `half_kick_energy`).
+  double half_kick_change() const { return half_kick - half_kick_reference; }
+
   double total() const { return kinetic + internal + hourglass + contact + damping + mass_scaling; }
   /// What the total must equal: the work put in plus the initial kinetic energy.
   double supplied() const { return external_work + initial_kinetic; }
@@ -58,7 +63,7 @@ inline double Energies::balance_error() const {
   if (scale <= 0.0) {
     return 0.0;
   }
-  return (total() - (half_kick - half_kick_reference) - supplied()) / scale;
+  return (total() - half_kick_change() - supplied()) / scale;
 }
 
 }  // namespace sf

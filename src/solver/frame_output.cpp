@@ -25,6 +25,7 @@ std::vector<HistoryColumn> history_columns(const Model& model) {
                                         {"plastic_work", energy},
                                         {"friction_work", energy},
                                         {"external_work", energy},
+                                        {"half_kick_energy", energy},
                                         {"energy_balance_error", "-"},
                                         {"added_mass", units.mass},
                                         {"added_mass_percent", "%"},
@@ -170,11 +171,12 @@ void FrameOutput::append_history(const Model& model, const SolutionState& s) {
   std::size_t k = 0;
   const Energies& e = s.energies;
   const MassScaling& scaling = model.blank.scaling;
-  for (double value : {s.time, s.dt, s.stable_dt, static_cast<double>(s.dt_element), e.kinetic,
-                       e.internal, e.hourglass, e.contact, e.damping, e.mass_scaling,
-                       e.plastic_work, e.friction_work, e.external_work, e.balance_error(),
-                       scaling.added_mass, 100.0 * scaling.added_mass / model.blank.physical_mass,
-                       static_cast<double>(scaling.scaled_elements)}) {
+  for (double value :
+       {s.time, s.dt, s.stable_dt, static_cast<double>(s.dt_element), e.kinetic, e.internal,
+        e.hourglass, e.contact, e.damping, e.mass_scaling, e.plastic_work, e.friction_work,
+        e.external_work, e.half_kick_change(), e.balance_error(), scaling.added_mass,
+        100.0 * scaling.added_mass / model.blank.physical_mass,
+        static_cast<double>(scaling.scaled_elements)}) {
     row_[k++] = value;
   }
   for (std::size_t t = 0; t < model.tools.size(); ++t) {

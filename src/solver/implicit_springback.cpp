@@ -67,6 +67,7 @@ ImplicitStepSummary run_implicit_springback(Model& model, SolutionState& s, Fram
                           }
                         });
   s.energies.internal += summary.report.internal_work;
+  s.energies.hourglass += summary.report.hourglass_work;
   s.energies.external_work += summary.report.external_work;
   summary.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -150,6 +150,7 @@ nlohmann::json implicit_step_json(const ImplicitStepSummary& step) {
           {"solve_seconds", r.solver.solve_seconds},
           {"wall_seconds", step.wall_seconds},
           {"internal_work_Nmm", r.internal_work},
+          {"hourglass_work_Nmm", r.hourglass_work},
           {"external_work_Nmm", r.external_work},
           {"prescribed_work_Nmm", r.prescribed_work},
           {"free_rigid_body_modes", step.free_modes},

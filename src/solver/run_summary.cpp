@@ -211,8 +211,8 @@ template <typename Add>
 void add_energy_lines(const RunSummary& r, const UnitSystem& u, const Add& add) {
   const Energies& e = r.energies;
   if (r.static_step) {
-    add(fmt::format("  energies [{}]     internal {:.4e}, external work {:.4e}", u.moment(),
-                    e.internal, e.external_work));
+    add(fmt::format("  energies [{}]     internal {:.4e}, hourglass {:.4e}, external work {:.4e}",
+                    u.moment(), e.internal, e.hourglass, e.external_work));
   } else {
     add(
         fmt::format("  energies [{}]     kinetic {:.4e}, internal {:.4e}, hourglass {:.4e}, "
@@ -329,6 +329,7 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
                      {"plastic_work", r.energies.plastic_work},
                      {"friction_work", r.energies.friction_work},
                      {"external_work", r.energies.external_work},
+                     {"half_kick", r.energies.half_kick_change()},
                      {"balance_error", r.energies.balance_error()}};
   j["kinetic_ratio_end"] = r.energies.kinetic_ratio();
   j["kinetic_ratio_peak"] = r.peak_kinetic_ratio;

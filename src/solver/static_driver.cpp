@@ -197,6 +197,7 @@ RunSummary run_static(Model& model, const RunOptions& options, SolutionState* fi
                             s.time = lambda * end_time;
                             s.cycle += 1;
                             s.energies.internal = report.internal_work;
+                            s.energies.hourglass = report.hourglass_work;
                             s.energies.external_work = report.external_work;
                             // The forces of the converged state, as the step's residual used
                             // them: f_int - f_ext is the reaction on held and prescribed dofs.

@@ -14,6 +14,7 @@ inline constexpr double kRho = 7.85e-9;  // tonne/mm^3
 inline ShellPart make_part(const QuadConn& quads, const Material& material, int n_points = 5,
                            double hourglass = 0.1) {
   ShellPart p;
+  p.formulation = ShellFormulation::belytschko_tsay;  // the element of these tests
   p.quads = quads;
   p.section = make_gauss_section(n_points);
   p.material = material;

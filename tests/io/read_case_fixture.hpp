@@ -53,6 +53,7 @@ thickness = 0.81
 integration_points = 7
 integration_rule = "lobatto"
 material = "aluminium"
+formulation = "belytschko_tsay"
 hourglass = 0.05
 hourglass_form = "stiffness"
 rolling_direction = [1, 1, 0]

@@ -31,6 +31,7 @@ TEST_F(ReadCase, MinimalCaseGetsEveryDocumentedDefault) {
   EXPECT_EQ(c.blank.integration_points, 5);
   EXPECT_EQ(c.blank.integration_rule, sf::BlankConfig::IntegrationRule::gauss);
   EXPECT_EQ(c.blank.material, "steel");
+  EXPECT_EQ(c.blank.formulation, sf::BlankConfig::Formulation::belytschko_tsay);
   EXPECT_EQ(c.blank.hourglass_coefficient, 0.1);
   EXPECT_EQ(c.blank.hourglass_form, sf::BlankConfig::HourglassForm::viscous);
   EXPECT_EQ(c.blank.rolling_direction, (std::array<double, 3>{1.0, 0.0, 0.0}));
@@ -294,7 +295,8 @@ TEST_F(ReadCase, OutOfRangeValuesAreErrors) {
       {"n = 0.2589", "n = 1", "materials.steel.hardening.n", "[0, 1)"},
       {"thickness = 0.81", "thickness = 0.81\nintegration_points = 10", "blank.integration_points",
        "[1, 9]"},
-      {"thickness = 0.81", "thickness = 0.81\nhourglass = 0.6", "blank.hourglass", "[0, 0.5]"},
+      {"thickness = 0.81", "thickness = 0.81\nformulation = \"belytschko_tsay\"\nhourglass = 0.6",
+       "blank.hourglass", "[0, 0.5]"},
       {"end_time = 0.002", "end_time = 0.002\ntime_step_safety = 0", "control.time_step_safety",
        "(0, 1]"},
       {"end_time = 0.002", "end_time = 0.002\nenergy_blowup_ratio = 1", "control.energy_blowup",
@@ -542,7 +544,12 @@ TEST_F(ReadCase, ResolvedCaseReadsBackToTheSameCase) {
     expect_contains(resolved,
                     fmt::format("\noutput_frames = {}\n", original.control.output_frames));
     expect_contains(resolved, "\nintegration_rule = \"");  // the new keys are written too
-    expect_contains(resolved, "\nhourglass_form = \"");
+    expect_contains(resolved, "\nformulation = \"");
+    if (original.blank.formulation == sf::BlankConfig::Formulation::belytschko_tsay) {
+      expect_contains(resolved, "\nhourglass_form = \"");  // its keys only with its element
+    } else {
+      EXPECT_EQ(resolved.find("hourglass"), std::string::npos);
+    }
     expect_contains(resolved, "\nrolling_direction = [");
     if (text == kFull) {  // written only when given
       expect_contains(resolved, "\nforming_limit_curve = [[-0.3, 0.5], [0.0, 0.22], [0.25, 0.35]]");

@@ -126,7 +126,8 @@ TEST_F(ReadCase, TabulatedHardeningFileIsRelativeToTheCaseAndMustExist) {
 TEST_F(ReadCase, SectionHourglassAndRollingDirectionValues) {
   const std::string text = replaced(kMinimal, "thickness = 0.81\n",
                                     "thickness = 0.81\nintegration_rule = \"lobatto\"\n"
-                                    "integration_points = 2\nhourglass_form = \"stiffness\"\n"
+                                    "integration_points = 2\nformulation = \"belytschko_tsay\"\n"
+                                    "hourglass_form = \"stiffness\"\n"
                                     "rolling_direction = [0, 2, 0]\n");
   const sf::BlankConfig b = sf::read_case(write_case(text)).blank;
   EXPECT_EQ(b.integration_rule, sf::BlankConfig::IntegrationRule::lobatto);
@@ -150,9 +151,14 @@ TEST_F(ReadCase, SectionHourglassAndRollingDirectionErrors) {
   expect_error(text, line_of(text, "integration_points"),
                {"blank.integration_points", "[2, 9]", "lobatto", "got 1"});
 
-  text = with("hourglass_form = \"viscuous\"\n");
+  text = with("formulation = \"belytschko_tsay\"\nhourglass_form = \"viscuous\"\n");
   expect_error(text, line_of(text, "hourglass_form"),
                {"blank.hourglass_form", "\"viscous\", \"stiffness\"", "\"viscuous\""});
+
+  // The assumed-strain element has no hourglass control to set.
+  text = with("formulation = \"assumed_strain\"\nhourglass = 0.05\n");
+  expect_error(text, line_of(text, "hourglass"),
+               {"blank.hourglass", "belytschko_tsay", "no coefficient"});
 
   text = with("rolling_direction = [0, 0, 0]\n");
   expect_error(text, line_of(text, "rolling_direction"),

@@ -41,6 +41,15 @@ TEST(UnitSystem, SiUnits) {
   EXPECT_EQ(u.density(), "kg/m^3");
 }
 
+TEST(UnitSystem, ConsistentSetWithoutNamesPrintsDimensions) {
+  // MacNeal-Harder's benchmarks give their data in no named system.
+  const sf::UnitSystem u = sf::parse_unit_system("consistent");
+  EXPECT_EQ(u.length, "[L]");
+  EXPECT_EQ(u.force, "[F]");
+  EXPECT_EQ(u.stress, "[F/L^2]");
+  EXPECT_EQ(u.moment(), "[F] [L]");
+}
+
 TEST(UnitSystem, ErrorsSayWhatIsWrong) {
   // tonne x m / s^2 = 1e3 N = kN: N is inconsistent, and the accepted name of the implied unit
   // is given.
@@ -56,7 +65,7 @@ TEST(UnitSystem, ErrorsSayWhatIsWrong) {
             "unknown length unit \"inch\" (accepted: m, cm, mm, um)");
   EXPECT_EQ(error_of("mm-s-tonne-N-MPa-K"),
             "expected five units LENGTH-TIME-MASS-FORCE-STRESS separated by '-' (e.g. "
-            "\"mm-s-tonne-N-MPa\" or \"m-s-kg-N-Pa\"), got 6 parts");
+            "\"mm-s-tonne-N-MPa\" or \"m-s-kg-N-Pa\"), or \"consistent\", got 6 parts");
 }
 
 }  // namespace

@@ -272,8 +272,14 @@ TEST(DynamicRelaxation, ElasticStripPressedByAPadSpringsBackFlat) {
 TEST(DynamicRelaxation, ReleasedLoadsAreTheFormedStatesStaticInternalForces) {
   const std::string name = "dynamic_relaxation_loads";
   Pressed p;
-  p.model = sf::build_model(
-      strip_case(name, pressing_case(2.2, 4.0 * first_period(), 1e-6, true), pad_geo));
+  sf::CaseConfig formed =
+      strip_case(name, pressing_case(2.2, 4.0 * first_period(), 1e-6, true), pad_geo);
+  // On the Belytschko-Tsay element, whose viscous hourglass control damps the one-element-wide
+  // strip's twist under the two-node press: with the undamped assumed-strain element the strip
+  // still rings at the end of the press (contact 17.4 N, internal 12.8 N at the tip), and the
+  // inertia would dominate the comparison below.
+  formed.blank.formulation = sf::BlankConfig::Formulation::belytschko_tsay;
+  p.model = sf::build_model(formed);
   const fs::path out = fs::path(SF_BINARY_DIR) / "test_output" / name / "results";
   std::unique_ptr<sf::FrameOutput> output;
   press(p, &output, out);

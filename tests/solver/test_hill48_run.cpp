@@ -78,7 +78,7 @@ TEST(Hill48Run, TabulatedHill48StripBuildsAndRunsStably) {
   const sf::CaseConfig config = sf::read_case(write_strip_case(
       "hill48_strip", kHill,
       "rolling_direction = [1, 1, 0]\nintegration_rule = \"lobatto\"\nintegration_points = 3\n"
-      "hourglass_form = \"stiffness\"\nhourglass = 0.05\n"));
+      "formulation = \"belytschko_tsay\"\nhourglass_form = \"stiffness\"\nhourglass = 0.05\n"));
   sf::Model model = sf::build_model(config);
   const sf::ShellPart& part = model.blank.part;
 

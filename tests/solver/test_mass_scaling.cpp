@@ -185,6 +185,7 @@ Physical Surface("left") = {1};
 )",
                                                R"(thickness = 2.0
 material = "steel"
+formulation = "belytschko_tsay"
 hourglass = 0.0
 [materials.steel]
 type = "elastic"

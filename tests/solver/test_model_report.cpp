@@ -30,20 +30,37 @@ sf::Model build(const std::string& name, const std::string& mesh, const std::str
 
 TEST(ModelReport, FormulationIsWhatTheShellPartHolds) {
   const sf::Model model = build("report_strip", "strip.geo", "");
-  // The default viscous form, coefficient 0.1; 5 Gauss points.
-  EXPECT_EQ(sf::describe_shell_formulation(model.blank.part, false),
-            "20 Belytschko-Lin-Tsay quadrilaterals (one in-plane point, viscous hourglass "
-            "control, coefficient 0.1); 5 Gauss points through the thickness");
-  // The static step replaces the viscous form by the stiffness form, and says so.
-  EXPECT_EQ(sf::describe_shell_formulation(model.blank.part, true),
-            "20 Belytschko-Lin-Tsay quadrilaterals (one in-plane point, stiffness hourglass "
-            "control, coefficient 0.1; the case's viscous form has no static stiffness); 5 Gauss "
-            "points through the thickness");
-  sf::ShellPart triangles = model.blank.part;  // a part of triangles only: no hourglass control
+  // Assumed strain: the same in explicit and static analyses.
+  sf::ShellPart as = model.blank.part;
+  as.formulation = sf::ShellFormulation::assumed_strain;
+  const std::string assumed_strain =
+      "20 assumed-strain quadrilaterals (one in-plane point, directors, MITC4 transverse shear, "
+      "physical hourglass stabilisation); 5 Gauss points through the thickness";
+  EXPECT_EQ(sf::describe_shell_formulation(as, false), assumed_strain);
+  EXPECT_EQ(sf::describe_shell_formulation(as, true), assumed_strain);
+  sf::ShellPart triangles = as;  // a part of triangles only
   triangles.quads.resize(4, 0);
   triangles.triangles.resize(3, 2);
   triangles.section = sf::make_section(3, sf::ThroughThicknessRule::lobatto);
   EXPECT_EQ(sf::describe_shell_formulation(triangles, false),
+            "2 assumed-strain triangles (directors, DSG3 transverse shear); 3 Lobatto points "
+            "through the thickness");
+
+  // The default: Belytschko-Tsay with the viscous form, coefficient 0.1.
+  sf::ShellPart bt = model.blank.part;
+  EXPECT_EQ(bt.formulation, sf::ShellFormulation::belytschko_tsay);
+  EXPECT_EQ(sf::describe_shell_formulation(bt, false),
+            "20 Belytschko-Lin-Tsay quadrilaterals (one in-plane point, viscous hourglass "
+            "control, coefficient 0.1); 5 Gauss points through the thickness");
+  // The static step replaces the viscous form by the stiffness form, and says so.
+  EXPECT_EQ(sf::describe_shell_formulation(bt, true),
+            "20 Belytschko-Lin-Tsay quadrilaterals (one in-plane point, stiffness hourglass "
+            "control, coefficient 0.1; the case's viscous form has no static stiffness); 5 Gauss "
+            "points through the thickness");
+  bt.quads.resize(4, 0);
+  bt.triangles.resize(3, 2);
+  bt.section = sf::make_section(3, sf::ThroughThicknessRule::lobatto);
+  EXPECT_EQ(sf::describe_shell_formulation(bt, false),
             "2 C0 triangles (DSG3 transverse shear); 3 Lobatto points through the thickness");
 }
 

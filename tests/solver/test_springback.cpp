@@ -29,6 +29,7 @@ sf::Model build_bend_case(const std::string& name, const std::string& material,
 mesh = ")" + data + R"(/bend_strip.geo"
 thickness = 1.0
 material = "steel"
+formulation = "belytschko_tsay"
 hourglass_form = "stiffness"
 [materials.steel]
 density = 7.85e-9

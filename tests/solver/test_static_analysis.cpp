@@ -33,13 +33,14 @@ constexpr double kInertia = kWidth * kThickness * kThickness * kThickness / 12.0
 // A static case around a mesh in tests/data: `extra` holds the boundaries, loads, [analysis] and
 // [implicit] tables.
 sf::Model build_static_case(const std::string& name, const std::string& mesh, double poisson,
-                            const std::string& extra) {
+                            const std::string& extra, const std::string& blank_keys = "") {
   const fs::path folder = fs::path(SF_BINARY_DIR) / "test_output" / name;
   fs::create_directories(folder);
   std::ofstream(folder / "case.toml")
       << "[blank]\nmesh = \"" + (fs::path(SF_TEST_DATA_DIR) / mesh).string() +
              "\"\nthickness = 2.0\nintegration_points = 5\n"
-             "material = \"steel\"\n"
+             "material = \"steel\"\n" +
+             blank_keys +
              "[materials.steel]\ntype = \"elastic\"\n"
              "density = 7.85e-9\nyoung = 210000.0\npoisson = " +
              std::to_string(poisson) + "\n[control]\nend_time = 1.0\n" + extra;
@@ -163,19 +164,21 @@ TEST(StaticAnalysis, LinearMembranePatchTestIsExact) {
   }
 }
 
-TEST(StaticAnalysis, LinearBendingPatchTestIsExactOnRectangles) {
+// The bending patch of LinearBendingPatchTest...: the largest deviation, as a fraction of the
+// surface stress 6 m / t^2, from m_x = m, m_y = m_xy = 0 and no membrane force in every element.
+double bending_patch_deviation(const std::string& formulation, double m) {
   // A uniform bending moment m per unit length about y on the right edge of unequal rectangles
   // (patch_rectangles.geo), consistent nodal moments m x the tributary lengths 3.05, 5.0 and
   // 1.95 mm: the plate bends cylindrically with m_x = m and m_y = 0 (free y edges) everywhere,
   // the outer-point stress 6 m / t^2 x zeta_5 and no membrane force, to round-off.
-  const double m = 100.0;  // N mm per mm
   std::string loads;
   for (const auto& [group, length] : {std::pair{"right_bottom", 3.05}, std::pair{"right_mid", 5.0},
                                       std::pair{"right_top", 1.95}}) {
     loads += fmt::format("[[load]]\ngroup = \"{}\"\ntype = \"moment\"\nvalue = [0.0, {}, 0.0]\n",
                          group, m * length);
   }
-  sf::Model model = build_static_case("static_patch_bending", "patch_rectangles.geo", 0.3, R"(
+  sf::Model model =
+      build_static_case("static_patch_bending_" + formulation, "patch_rectangles.geo", 0.3, R"(
 [[boundary]]
 group = "left"
 type = "symmetry"
@@ -187,7 +190,8 @@ axis = "y"
 [analysis]
 type = "static"
 geometry = "linear"
-)" + loads);
+)" + loads,
+                        "formulation = \"" + formulation + "\"\n");
   const sf::SolutionState s = run(model);
   sf::ShellStressOutput out;
   sf::compute_element_stress_output(model.blank.part, model.blank.mesh.nodes, s.shell, out);
@@ -195,13 +199,28 @@ geometry = "linear"
   // The outermost of the 5 Gauss points (zeta = 0.9062) carries that fraction of the surface
   // stress.
   const double at_point = model.blank.part.section.zeta[4] * surface;
+  double worst = 0.0;
   for (Eigen::Index e = 0; e < out.mid.cols(); ++e) {
-    EXPECT_NEAR(std::abs(out.top(0, e)), at_point, 1e-9 * surface) << "element " << e;
-    EXPECT_NEAR(out.top(0, e), -out.bottom(0, e), 1e-9 * surface) << "element " << e;
-    EXPECT_NEAR(out.top(1, e), 0.0, 1e-9 * surface) << "element " << e;
-    EXPECT_NEAR(out.top(3, e), 0.0, 1e-9 * surface) << "element " << e;
-    EXPECT_NEAR(out.mid(0, e), 0.0, 1e-9 * surface) << "no membrane force, element " << e;
+    worst = std::max({worst, std::abs(std::abs(out.top(0, e)) - at_point),
+                      std::abs(out.top(0, e) + out.bottom(0, e)), std::abs(out.top(1, e)),
+                      std::abs(out.top(3, e)), std::abs(out.mid(0, e))});
   }
+  return worst / surface;
+}
+
+TEST(StaticAnalysis, LinearBendingPatchTestIsExactOnRectangles) {
+  // Belytschko-Tsay: strain increments on the undeformed geometry, exact to round-off.
+  EXPECT_LT(bending_patch_deviation("belytschko_tsay", 100.0), 1e-9);
+  // Assumed strain: the director measures are centred on the undeformed geometry, which cancels
+  // their second-order terms but leaves a third-order one (relative error ~ rotation^2, the
+  // rotations here 7e-3 rad at m = 100 N mm/mm): exact to 1e-9 when it is negligible, and the
+  // deviation at larger moments is that term, 1000 times smaller for 10 times the moment
+  // (docs/static-analysis.md, linear analysis).
+  EXPECT_LT(bending_patch_deviation("assumed_strain", 1.0), 1e-9);
+  const double at_100 = bending_patch_deviation("assumed_strain", 100.0);
+  const double at_10 = bending_patch_deviation("assumed_strain", 10.0);
+  EXPECT_LT(at_100, 1e-5);
+  EXPECT_NEAR(at_100 / at_10, 100.0, 5.0) << at_100 << " at m = 100, " << at_10 << " at m = 10";
 }
 
 TEST(StaticAnalysis, NonlinearEndMomentRollsTheStripIntoTheElasticaArc) {
@@ -305,3 +324,36 @@ rigid_body_modes = "error"
 }
 
 }  // namespace
+
+namespace {
+
+// The summary of the bundled thick twisted beam (in-plane tip load, 4 x 24 warped quads; linear
+// static) with the given element.
+sf::RunSummary twisted_beam_summary(sf::BlankConfig::Formulation formulation) {
+  sf::CaseConfig config = sf::read_case(fs::path(SF_SOURCE_DIR) / "cases" /
+                                        "shell_twisted_beam_thick_in_plane" / "case.toml");
+  config.blank.formulation = formulation;
+  sf::Model model = sf::build_model(config);
+  sf::RunSummary summary;
+  run(model, &summary);
+  return summary;
+}
+
+}  // namespace
+
+TEST(StaticAnalysis, EnergyBalanceClosesOnWarpedQuadsWithEveryWorkCounted) {
+  // The work of the loads equals the internal work when every internal force's work is counted:
+  // the static drilling springs' (1/2 k (n . dtheta)^2 per node and increment) in the internal
+  // work, and the Belytschko-Tsay stiffness-form hourglass forces' apart. On the warped twisted
+  // beam both are large: before they were counted the balance was -0.70 with Belytschko-Tsay. The
+  // linear analysis's trapezoidal rule is exact for its linear forces; the bound 1e-6 is the
+  // solver's residual (measured 2.5e-8 and 2.0e-8).
+  const sf::RunSummary bt = twisted_beam_summary(sf::BlankConfig::Formulation::belytschko_tsay);
+  EXPECT_GT(bt.energies.hourglass, 0.01 * bt.energies.external_work);
+  EXPECT_LT(std::abs(bt.energies.balance_error()), 1e-6);
+  const sf::RunSummary as = twisted_beam_summary(sf::BlankConfig::Formulation::assumed_strain);
+  // Its physical stabilisation stores energy (>= 0), reported as hourglass energy as in explicit
+  // runs: 0.2 % of the work here.
+  EXPECT_GE(as.energies.hourglass, 0.0);
+  EXPECT_LT(std::abs(as.energies.balance_error()), 1e-6);
+}

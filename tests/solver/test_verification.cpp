@@ -86,6 +86,7 @@ Physical Curve("sides") = {1, 3};
                                                R"(thickness = 1.0
 integration_points = 3
 material = "steel"
+formulation = "belytschko_tsay"
 hourglass = 0.0
 [materials.steel]
 type = "elastic"
@@ -237,6 +238,7 @@ TEST(Verification, UndampedCantileverStripConservesEnergyOverTenPeriods) {
                              std::istreambuf_iterator<char>());
   sf::CaseConfig config = sf::test::write_case("energy_strip", geo_text, R"(thickness = 2.0
 material = "steel"
+formulation = "belytschko_tsay"
 hourglass = 0.1
 [materials.steel]
 type = "elastic"
@@ -279,6 +281,7 @@ Physical Curve("clamp") = {4};
 )",
                                                R"(thickness = 2.0
 material = "steel"
+formulation = "belytschko_tsay"
 hourglass = 0.1
 [materials.steel]
 type = "elastic"
