@@ -1,5 +1,6 @@
 #include "element/shell_quad_assumed_strain.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -57,12 +58,45 @@ BendingShearIncrements compute_increments(const Quad3& x_start, const Quad3& x_e
   return inc;
 }
 
+// The ratio (0..1] of the section's incremental stiffness to its elastic stiffness along the
+// step's own strain increment: int ds . de dz / int de . C de dz, C the plane-stress Hooke
+// matrix (de = dm - z dk: t dm.C dm + t^3/12 dk.C dk for a rule exact on quadratics; the
+// 1-point rule's bending part is 0 and so is its sum). 1 in a step without plastic flow, so
+// that elastic runs are unchanged to the bit.
+double incremental_stiffness_ratio(const Constants& c, double t, const Vec3& dm, const Vec3& dk,
+                                   const SectionResult& sr) {
+  if (sr.plastic_work <= 0.0) {
+    return 1.0;
+  }
+  const double plate = c.young / (1.0 - c.poisson * c.poisson);
+  const auto hooke = [&](const Vec3& e) {
+    return plate * (e(0) * e(0) + e(1) * e(1) + 2.0 * c.poisson * e(0) * e(1)) +
+           0.5 * c.young / (1.0 + c.poisson) * e(2) * e(2);
+  };
+  const double elastic = t * hooke(dm) + t * t * t / 12.0 * hooke(dk);
+  if (!(elastic > 0.0)) {
+    return 1.0;
+  }
+  return std::clamp(sr.stress_change_work / elastic, 0.0, 1.0);
+}
+
+// The factor of a stabilisation part's elastic increment: `ratio` while the step loads it (its
+// resultant does positive work on the increment), 1 while it unloads. So the part's stored
+// energy 1/2 R.K^-1.R rises by at most the work done on it and falls by exactly that work: the
+// stabilisation never gives back more than it stored (with the ratio on unloading too, a mode
+// loaded elastically and unloaded while its element yields would release energy it never held).
+double loading_factor(double ratio, double r0, double r1, const Vec2& increment) {
+  return r0 * increment(0) + r1 * increment(1) > 0.0 ? ratio : 1.0;
+}
+
 // Advances the stabilisation resultants hs (membrane 0, 1; bending 2, 3; shear 4, 5) by their
 // stiffnesses times the step's increments; returns the work of the step (trapezoidal, N mm).
-double update_stabilization(const StabilizationStiffness& k, const Vec2& membrane,
+// The membrane and bending parts follow the section's incremental stiffness (`ratio`) as they
+// load: in a yielding element they stiffen the hourglass modes as the material does.
+double update_stabilization(const StabilizationStiffness& k, double ratio, const Vec2& membrane,
                             const Vec2& bending, const Vec2& shear, double* hs) {
-  const Vec2 d_m = k.membrane * membrane;
-  const Vec2 d_b = k.bending * bending;
+  const Vec2 d_m = loading_factor(ratio, hs[0], hs[1], membrane) * (k.membrane * membrane);
+  const Vec2 d_b = loading_factor(ratio, hs[2], hs[3], bending) * (k.bending * bending);
   const Vec2 d_s = k.shear.cwiseProduct(shear);
   const double increment[kHourglassModes] = {d_m(0), d_m(1), d_b(0), d_b(1), d_s(0), d_s(1)};
   const double strain[kHourglassModes] = {membrane(0), membrane(1), bending(0),
@@ -160,8 +194,9 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     const StabilizationStiffness k = compute_stabilization_stiffness(basis_mid, map_mid, gm.frame,
                                                                      c.young, c.poisson, t, c.ks_g);
     double* hs = st.hourglass.data() + kHourglassModes * static_cast<std::ptrdiff_t>(e);
+    const double ratio = incremental_stiffness_ratio(c, t, dt * d_membrane, inc.curvature, sr);
     result.hourglass_work +=
-        update_stabilization(k, membrane_hg, inc.hourglass, inc.shear_linear, hs);
+        update_stabilization(k, ratio, membrane_hg, inc.hourglass, inc.shear_linear, hs);
 
     // 4. Nodal forces and moments on the end-of-step configuration (conjugate to step 1).
     ShellGeometry g;

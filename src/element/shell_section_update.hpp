@@ -51,6 +51,9 @@ struct SectionResult {
   double d_ezz_mean = 0.0;    ///< -, thickness strain increment averaged over the thickness
   double work = 0.0;          ///< N/mm, stress work of the step (trapezoidal in the stress)
   double plastic_work = 0.0;  ///< N/mm, its plastic part
+  /// N/mm, int (s_new - s_old) . d_eps dz: the stress change's work on the strain increment, the
+  /// step's incremental stiffness seen along its own strain increment (elastic: d_eps . C d_eps).
+  double stress_change_work = 0.0;
 };
 
 /// Updates the points of element e (state indices e * n_points + k) for the strain increments
@@ -95,6 +98,7 @@ inline SectionResult update_section(const Law& law, const SectionConstants& sc, 
     r.d_ezz_mean += sc.half_weight[k] * up.d_ezz;
     r.work += hw * 0.5 * (old.stress + up.stress).dot(d_eps);
     r.plastic_work += hw * up.d_plastic_work;
+    r.stress_change_work += hw * (up.stress - old.stress).dot(d_eps);
   }
   return r;
 }

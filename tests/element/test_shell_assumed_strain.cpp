@@ -449,6 +449,97 @@ TEST_P(AssumedStrain, RotationsAndStabilisationNeverLowerTheStableStep) {
   }
 }
 
+// The membrane stabilisation resultant of a flat 10 x 10 mm quad stretched along x (v_x = rate x,
+// v_y = -rate y / 2: the plastic flow of uniaxial tension) with a small membrane hourglass motion
+// superposed (v_x += a h, h = +1, -1, +1, -1), in steps of 2e-4 strain: its increment per step.
+std::vector<double> membrane_stabilisation_increments(const Material& material, int steps) {
+  Matrix3X x(3, 4);
+  x << 0.0, 10.0, 10.0, 0.0, 0.0, 0.0, 10.0, 10.0, 0.0, 0.0, 0.0, 0.0;
+  QuadConn q(4, 1);
+  q << 0, 1, 2, 3;
+  const ShellPart part = make_as_part(q, TriConn(3, 0), material, 3);
+  ShellState st = make_as_state(part, x, 1.0);
+  const double h[4] = {1.0, -1.0, 1.0, -1.0};
+  Matrix3X v = Matrix3X::Zero(3, 4);
+  for (int a = 0; a < 4; ++a) {
+    v(0, a) = 2e-4 * x(0, a) + 1e-4 * h[a];
+    v(1, a) = -1e-4 * x(1, a);
+  }
+  std::vector<double> increments;
+  for (int k = 0; k < steps; ++k) {
+    x += v;  // dt = 1
+    const double before = st.hourglass[0];
+    test::run_step(part, x, v, Matrix3X::Zero(3, 4), 1.0, st);
+    increments.push_back(std::abs(st.hourglass[0] - before));
+  }
+  return increments;
+}
+
+TEST(AssumedStrainQuad, MembraneStabilisationFollowsTheMaterialsIncrementalStiffness) {
+  // Elastic: every step adds the elastic stabilisation stiffness times the hourglass increment.
+  const std::vector<double> elastic =
+      membrane_stabilisation_increments(ElasticPlaneStress{kE, kNu}, 40);
+  EXPECT_GT(elastic.back(), 0.0);
+  // Perfectly plastic J2 (yield at 200 MPa, about 1e-3 strain, step 5): once the element flows in
+  // uniaxial tension its stresses stop changing, and so does its stabilisation, as the material
+  // resists no further motion; before yield the steps are the elastic ones, bit for bit. With the
+  // stabilisation at the elastic moduli the flowing element's hourglass modes kept the elastic
+  // stiffness: the isotropic cup drew in 5 % less at 45 degrees (docs/element-and-material.md).
+  const std::vector<double> plastic =
+      membrane_stabilisation_increments(J2PlaneStress{kE, kNu, LinearHardening{200.0, 0.0}}, 40);
+  EXPECT_EQ(plastic[0], elastic[0]);
+  EXPECT_EQ(plastic[2], elastic[2]);
+  EXPECT_LT(plastic.back(), 1e-2 * elastic.back());
+  std::printf("stabilisation increment: elastic %.3e, flowing %.3e (step 40)\n", elastic.back(),
+              plastic.back());
+}
+
+TEST(AssumedStrainQuad, StabilisationNeverGivesBackMoreThanItStored) {
+  // A flat quad, perfectly plastic J2: its membrane hourglass mode is loaded while the element is
+  // elastic, then brought back and beyond while the element flows in uniaxial tension. The
+  // stabilisation's work over the history stays non-negative: unloading is elastic, so it returns
+  // at most what it stored (scaling the unloading too gave a stabilisation energy of -0.065 % of
+  // the internal energy at the end of the U-channel).
+  Matrix3X x(3, 4);
+  x << 0.0, 10.0, 10.0, 0.0, 0.0, 0.0, 10.0, 10.0, 0.0, 0.0, 0.0, 0.0;
+  QuadConn q(4, 1);
+  q << 0, 1, 2, 3;
+  const ShellPart part =
+      make_as_part(q, TriConn(3, 0), J2PlaneStress{kE, kNu, LinearHardening{200.0, 0.0}}, 3);
+  ShellState st = make_as_state(part, x, 1.0);
+  const double h[4] = {1.0, -1.0, 1.0, -1.0};
+  const auto velocity = [&](double stretch, double hourglass) {
+    Matrix3X v = Matrix3X::Zero(3, 4);
+    for (int a = 0; a < 4; ++a) {
+      v(0, a) = stretch * x(0, a) + hourglass * h[a];
+      v(1, a) = -0.5 * stretch * x(1, a);
+    }
+    return v;
+  };
+  double work = 0.0;
+  double least = 0.0;
+  const auto step = [&](double stretch, double hourglass) {
+    const Matrix3X v = velocity(stretch, hourglass);
+    x += v;
+    work += test::run_step(part, x, v, Matrix3X::Zero(3, 4), 1.0, st).r.hourglass_work;
+    least = std::min(least, work);
+  };
+  for (int k = 0; k < 5; ++k) {
+    step(0.0, 2e-4);  // elastic loading of the hourglass mode
+  }
+  const double stored = work;
+  for (int k = 0; k < 40; ++k) {
+    step(2e-4, -5e-5);  // the element flows; the mode unloads, then loads the other way
+  }
+  // Bound: 1 % of the stored energy. The element stretches 4 % over the flow, which changes the
+  // stabilisation stiffness the stored resultant is measured against: the least work measured is
+  // -0.24 % of the stored energy. With the ratio applied to the unloading as well it was -214 %.
+  EXPECT_GT(stored, 0.0);
+  EXPECT_GE(least, -0.01 * stored);
+  std::printf("stabilisation work: stored %.4e N mm elastically, %.4e after the flow\n", stored,
+              work);
+}
+
 INSTANTIATE_TEST_SUITE_P(QuadsAndTriangles, AssumedStrain, ::testing::Bool(),
                          [](const auto& param) { return param.param ? "Triangles" : "Quads"; });
 
