@@ -19,7 +19,6 @@ import json
 import pathlib
 import subprocess
 import sys
-import time
 import tomllib
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
@@ -73,7 +72,7 @@ def load_overrides(bench, mesh):
 
 
 def run(sheetform, bench, mesh, formulation, work):
-    """One run; returns {metric: value} and the wall time, or None with the error."""
+    """One run; returns ({metric: value}, None), or (None, the last line of its error)."""
     label = "_".join(f"{k}{v}" for k, v in mesh.items())
     out = work / bench["case"] / f"{formulation}-{label}"
     command = [str(sheetform), "run", str(ROOT / "cases" / bench["case"] / "case.toml"), "-o",
@@ -81,14 +80,12 @@ def run(sheetform, bench, mesh, formulation, work):
     for key, value in mesh.items():
         command += ["--set", f"blank.parameters.{key}={value}"]
     command += load_overrides(bench, mesh)
-    start = time.monotonic()
     result = subprocess.run(command, capture_output=True, text=True)
-    wall = time.monotonic() - start
     if result.returncode != 0:
-        return None, wall, (result.stderr or result.stdout).strip().splitlines()[-1:]
+        return None, (result.stderr or result.stdout).strip().splitlines()[-1:]
     summary = json.loads((out / "summary.json").read_text())
     values = {m: summary["draw_in"][m]["computed_mm"] for m in bench["metrics"]}
-    return values, wall, None
+    return values, None
 
 
 def main():
@@ -112,8 +109,7 @@ def main():
         for mesh in meshes:
             row = {"mesh": bench["label"](mesh), "results": {}}
             for formulation in args.formulation:
-                values, wall, error = run(args.sheetform, bench, mesh, formulation, work)
-                row["results"][formulation] = (values, wall, error)
+                row["results"][formulation] = run(args.sheetform, bench, mesh, formulation, work)
             rows.append(row)
         header = ["mesh"] + [f"{f} {m} (ratio, error)" for f in args.formulation for m in bench["metrics"]]
         lines = [f"### {bench['title']} (`cases/{bench['case']}`)", "",
@@ -122,7 +118,7 @@ def main():
         for i, row in enumerate(rows):
             cells = [row["mesh"] + (" (customary)" if i == bench["customary"] else "")]
             for formulation in args.formulation:
-                values, wall, error = row["results"][formulation]
+                values, error = row["results"][formulation]
                 for metric, reference in bench["metrics"].items():
                     if values is None:
                         cells.append(f"failed: {' '.join(error)}")
@@ -134,7 +130,7 @@ def main():
         print("\n".join(lines), flush=True)
         markdown += lines
         if args.check and "assumed_strain" in args.formulation:
-            values, _, error = rows[-1]["results"]["assumed_strain"]
+            values, error = rows[-1]["results"]["assumed_strain"]
             for metric, reference in bench["metrics"].items():
                 if values is None:
                     failures.append(f"{bench['case']} {rows[-1]['mesh']}: {error}")
@@ -142,7 +138,7 @@ def main():
                     failures.append(f"{bench['case']} {metric} at {rows[-1]['mesh']}: "
                                     f"{100 * (values[metric] / reference - 1):+.2f} % (gate 1 %)")
             if bench["customary"] < len(rows):
-                values, _, _ = rows[bench["customary"]]["results"]["assumed_strain"]
+                values, _ = rows[bench["customary"]]["results"]["assumed_strain"]
                 for metric, reference in bench["metrics"].items():
                     if values is not None and abs(values[metric] / reference - 1) > 0.03:
                         print(f"note: {bench['case']} {metric} at the customary mesh: "

@@ -14,6 +14,7 @@
 #include "element/shell_quad_hourglass.hpp"
 #include "element/shell_quad_stabilization.hpp"
 #include "element/shell_section_update.hpp"
+#include "material/plane_stress.hpp"
 
 namespace sf {
 
@@ -24,6 +25,7 @@ struct Constants {
   double young = 0.0;    ///< MPa
   double poisson = 0.0;  ///< -
   double ks_g = 0.0;     ///< MPa, shear-corrected shear modulus (factor 5/6)
+  Mat3 hooke;            ///< MPa, plane-stress stiffness (engineering shear)
 };
 
 // The element's directors at the start and end of the step.
@@ -68,12 +70,7 @@ double incremental_stiffness_ratio(const Constants& c, double t, const Vec3& dm,
   if (sr.plastic_work <= 0.0) {
     return 1.0;
   }
-  const double plate = c.young / (1.0 - c.poisson * c.poisson);
-  const auto hooke = [&](const Vec3& e) {
-    return plate * (e(0) * e(0) + e(1) * e(1) + 2.0 * c.poisson * e(0) * e(1)) +
-           0.5 * c.young / (1.0 + c.poisson) * e(2) * e(2);
-  };
-  const double elastic = t * hooke(dm) + t * t * t / 12.0 * hooke(dk);
+  const double elastic = t * dm.dot(c.hooke * dm) + t * t * t / 12.0 * dk.dot(c.hooke * dk);
   if (!(elastic > 0.0)) {
     return 1.0;
   }
@@ -133,7 +130,8 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
                                 const Matrix3X& v, const Matrix3X& omega, double dt, ShellState& st,
                                 Matrix3X& f_int, Matrix3X& m_int) {
   const int n_el = static_cast<int>(part.quads.cols());
-  const Constants c{law.E, law.nu, 5.0 / 6.0 * 0.5 * law.E / (1.0 + law.nu)};
+  const Constants c{law.E, law.nu, 5.0 / 6.0 * 0.5 * law.E / (1.0 + law.nu),
+                    plane_stress_stiffness(law.E, law.nu)};
   const SectionConstants section = make_section_constants(part.section);
   const int* conn = part.quads.data();
   const double* material_angle = part.material_angle.empty() ? nullptr : part.material_angle.data();

@@ -27,9 +27,9 @@ struct UnitSystem {
 };
 
 /// Parses "LENGTH-TIME-MASS-FORCE-STRESS", or "consistent": a consistent set with no names (the
-/// data of a benchmark given in no named system), printed as [L], [T], [M], [F], [F/L^2]. Accepted
-/// names: length m, cm, mm, um; time s, ms,
-/// us; mass kg, g, mg, tonne; force N, kN, MN, mN, dyn; stress Pa, kPa, MPa, GPa, Ba. The five
+/// data of a benchmark given in no named system), printed as [L], [T], [M], [F], [F/L^2].
+/// Accepted names: length m, cm, mm, um; time s, ms, us; mass kg, g, mg, tonne; force N, kN, MN,
+/// mN, dyn; stress Pa, kPa, MPa, GPa, Ba. The five
 /// must be consistent to 1e-9: force = mass x length / time^2 and stress = force / length^2.
 /// Throws std::invalid_argument with a message saying which part is unknown (and the names
 /// accepted there) or which relation fails (and the unit that would satisfy it).
