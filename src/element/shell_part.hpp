@@ -85,6 +85,18 @@ enum class ShellFormulation {
   assumed_strain,
 };
 
+/// How the assumed strain's membrane and bending stabilisation unloads in an element that yields
+/// during the step (docs/element-and-material.md, section 3c).
+enum class StabilizationUnloading {
+  /// Elastically: a mode follows the incremental stiffness only while it loads, so it never gives
+  /// back more than it stored (the explicit loop).
+  elastic,
+  /// Along the incremental stiffness, as it loads: the force is then continuous in the increment,
+  /// which the static step's Newton iteration needs (the switch between loading and unloading
+  /// made its differenced tangent jump; the work is still counted, so the energy balance holds).
+  as_loading,
+};
+
 /// A shell part: connectivity (node indices, counter-clockwise seen from the +normal side) of its
 /// quads and triangles, section, material and the hourglass control (quads only). A part may hold
 /// quads, triangles or both; its elements are numbered quads first, then triangles: element e <
@@ -95,12 +107,14 @@ struct ShellPart {
   TriConn triangles;  ///< 3-node C0 shell triangles (DSG3 transverse shear)
   ShellSection section = make_gauss_section(5);
   Material material = ElasticPlaneStress{};
-  double density = 0.0;                                              ///< tonne/mm^3
-  ShellFormulation formulation = ShellFormulation::belytschko_tsay;  ///< of the quads
+  double density = 0.0;                                             ///< tonne/mm^3
+  ShellFormulation formulation = ShellFormulation::assumed_strain;  ///< of the quads
   /// -, viscous: fraction (x 4) of critical damping; stiffness: hourglass mode stiffness as a
   /// fraction of the element's membrane / bending stiffness. See docs/element-and-material.md.
   double hourglass_coefficient = 0.1;
   HourglassForm hourglass_form = HourglassForm::viscous;
+  StabilizationUnloading stabilization_unloading =
+      StabilizationUnloading::elastic;  ///< assumed strain
   /// rad, one per element: the angle from the element's corotational e1 axis to the rolling
   /// direction (counter-clockwise about e3), fixed at the start (compute_material_angles). Read
   /// only by laws with material axes (Hill48): the material axes turn with e1. Empty = 0 for

@@ -82,7 +82,12 @@ double incremental_stiffness_ratio(const Constants& c, double t, const Vec3& dm,
 // energy 1/2 R.K^-1.R rises by at most the work done on it and falls by exactly that work: the
 // stabilisation never gives back more than it stored (with the ratio on unloading too, a mode
 // loaded elastically and unloaded while its element yields would release energy it never held).
-double loading_factor(double ratio, double r0, double r1, const Vec2& increment) {
+// With StabilizationUnloading::as_loading the factor is `ratio` either way.
+double loading_factor(StabilizationUnloading unloading, double ratio, double r0, double r1,
+                      const Vec2& increment) {
+  if (unloading == StabilizationUnloading::as_loading) {
+    return ratio;
+  }
   return r0 * increment(0) + r1 * increment(1) > 0.0 ? ratio : 1.0;
 }
 
@@ -90,10 +95,12 @@ double loading_factor(double ratio, double r0, double r1, const Vec2& increment)
 // stiffnesses times the step's increments; returns the work of the step (trapezoidal, N mm).
 // The membrane and bending parts follow the section's incremental stiffness (`ratio`) as they
 // load: in a yielding element they stiffen the hourglass modes as the material does.
-double update_stabilization(const StabilizationStiffness& k, double ratio, const Vec2& membrane,
-                            const Vec2& bending, const Vec2& shear, double* hs) {
-  const Vec2 d_m = loading_factor(ratio, hs[0], hs[1], membrane) * (k.membrane * membrane);
-  const Vec2 d_b = loading_factor(ratio, hs[2], hs[3], bending) * (k.bending * bending);
+double update_stabilization(const StabilizationStiffness& k, StabilizationUnloading unloading,
+                            double ratio, const Vec2& membrane, const Vec2& bending,
+                            const Vec2& shear, double* hs) {
+  const Vec2 d_m =
+      loading_factor(unloading, ratio, hs[0], hs[1], membrane) * (k.membrane * membrane);
+  const Vec2 d_b = loading_factor(unloading, ratio, hs[2], hs[3], bending) * (k.bending * bending);
   const Vec2 d_s = k.shear.cwiseProduct(shear);
   const double increment[kHourglassModes] = {d_m(0), d_m(1), d_b(0), d_b(1), d_s(0), d_s(1)};
   const double strain[kHourglassModes] = {membrane(0), membrane(1), bending(0),
@@ -193,8 +200,8 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
                                                                      c.young, c.poisson, t, c.ks_g);
     double* hs = st.hourglass.data() + kHourglassModes * static_cast<std::ptrdiff_t>(e);
     const double ratio = incremental_stiffness_ratio(c, t, dt * d_membrane, inc.curvature, sr);
-    result.hourglass_work +=
-        update_stabilization(k, ratio, membrane_hg, inc.hourglass, inc.shear_linear, hs);
+    result.hourglass_work += update_stabilization(k, part.stabilization_unloading, ratio,
+                                                  membrane_hg, inc.hourglass, inc.shear_linear, hs);
 
     // 4. Nodal forces and moments on the end-of-step configuration (conjugate to step 1).
     ShellGeometry g;

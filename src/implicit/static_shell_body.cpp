@@ -11,6 +11,8 @@ namespace sf {
 
 StaticShellBody::StaticShellBody(const ShellPart& part, const Matrix3X& x, const ShellState& state)
     : part_(part), x_(x), state_(state), x_trial_(3, x.cols()) {
+  // The assumed strain's stabilisation must be continuous in the increment for Newton.
+  part_.stabilization_unloading = StabilizationUnloading::as_loading;
   if (part_.hourglass_form == HourglassForm::viscous) {
     part_.hourglass_form = HourglassForm::stiffness;
     state_.hourglass.assign(

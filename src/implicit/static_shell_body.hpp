@@ -18,7 +18,8 @@ inline constexpr double kDrillingStiffnessFraction = 1e-4;
 class StaticShellBody {
  public:
   /// part: the blank's elements (a viscous hourglass form is replaced by the stiffness form with
-  /// the same coefficient: viscous forces have no static stiffness); x: committed coordinates
+  /// the same coefficient: viscous forces have no static stiffness; the assumed strain's
+  /// stabilisation unloads as it loads, StabilizationUnloading); x: committed coordinates
   /// (mm); state: committed integration-point state (a viscous run's state gets stiffness-form
   /// hourglass resultants starting at zero).
   StaticShellBody(const ShellPart& part, const Matrix3X& x, const ShellState& state);

@@ -267,7 +267,8 @@ void read_blank(const TomlSection& top, const fs::path& folder, const CaseConfig
       if (s.find(key)) {
         s.fail_at(*s.find(key), s.key_path(key),
                   "applies to formulation = \"belytschko_tsay\" only: the assumed-strain "
-                  "formulation's stabilisation is physical and has no coefficient");
+                  "formulation (the default) has a physical stabilisation with no coefficient; "
+                  "set formulation = \"belytschko_tsay\" to use the hourglass keys");
       }
     }
   }

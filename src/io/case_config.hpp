@@ -81,10 +81,10 @@ struct BlankConfig {
   int integration_points = 5;  ///< through the thickness: gauss 1..9, lobatto 2..9
   IntegrationRule integration_rule = IntegrationRule::gauss;  ///< through-thickness rule
   std::string material;                                       ///< name of a [materials.NAME] table
-  /// The quadrilaterals' formulation: "belytschko_tsay" (one point, Flanagan-Belytschko hourglass
-  /// control, the two keys below) or "assumed_strain" (one point, directors, MITC4 transverse
-  /// shear, physical stabilisation: no hourglass keys). docs/element-and-material.md
-  Formulation formulation = Formulation::belytschko_tsay;
+  /// The quadrilaterals' formulation: "assumed_strain" (the default: one point, directors, MITC4
+  /// transverse shear, physical stabilisation: no hourglass keys) or "belytschko_tsay" (one point,
+  /// Flanagan-Belytschko hourglass control, the two keys below). docs/element-and-material.md
+  Formulation formulation = Formulation::assumed_strain;
   /// -, hourglass coefficient (Flanagan-Belytschko), (0, 0.5]; belytschko_tsay only
   double hourglass_coefficient = 0.1;
   HourglassForm hourglass_form = HourglassForm::viscous;  ///< belytschko_tsay only

@@ -90,8 +90,8 @@ output_frames = 2'
 expect "check static: valid" 0 "Case is valid" -- "$sheetform" check "$static_case"
 expect_not "check static: no time step, cycles or mass lines" "^(Time step|Cycles|Mass|End time) " -- "$sheetform" check "$static_case"
 expect "check static: the analysis and the units" 0 "Units       mm-s-tonne-N-MPa: length mm, time s, mass tonne, force N, stress MPa" -- "$sheetform" check "$static_case"
-expect "check static: the stiffness hourglass form the step uses" 0 "^Elements    20 Belytschko-Lin-Tsay quadrilaterals \(one in-plane point, stiffness hourglass control" -- "$sheetform" check "$static_case"
-expect "check static: the assumed-strain element" 0 "^Elements    20 assumed-strain quadrilaterals \(one in-plane point, directors, MITC4 transverse shear, physical hourglass stabilisation\)" -- "$sheetform" check "$static_case" --set 'blank.formulation="assumed_strain"'
+expect "check static: the assumed-strain element (the default)" 0 "^Elements    20 assumed-strain quadrilaterals \(one in-plane point, directors, MITC4 transverse shear, physical hourglass stabilisation\)" -- "$sheetform" check "$static_case"
+expect "check static: the stiffness hourglass form the step uses" 0 "^Elements    20 Belytschko-Lin-Tsay quadrilaterals \(one in-plane point, stiffness hourglass control" -- "$sheetform" check "$static_case" --set 'blank.formulation="belytschko_tsay"'
 expect "check static: the history groups" 0 "^History     'tip_corner' \(1 nodes\): mean displacement, mean rotation, summed reaction" -- "$sheetform" check "$static_case"
 # The same case declared in SI: check names those units (the numbers are not converted).
 expect "check: the case's units, not mm-MPa" 0 "E = 210000 Pa" -- "$sheetform" check "$static_case" --set 'units="m-s-kg-N-Pa"'
@@ -181,7 +181,7 @@ rows = len(f["history/time"])
 print("ok" if times == [0.0, 0.25, 0.5, 0.75, 1.0] and rows == 9 else f"frame times {times}, {rows} rows")' "$work/roll_cut/results.h5"
 # One 360-degree increment without line search diverges: the message gives the growth of the
 # residual against the documented limit (docs/static-analysis.md), and the step stops (exit 4).
-# Belytschko-Tsay (the default): its residual grows past the limit; the assumed-strain element
+# Belytschko-Tsay: its residual grows past the limit; the assumed-strain element
 # inverts first, which is the other documented reason an iteration fails.
 expect "static divergence message" 4 "the residual diverged: [0-9.e+]+ times its norm at the start of the increment, beyond the limit 1e\+06" -- \
   "$sheetform" run "$work/roll/case.toml" -o "$work/roll_diverged" --set implicit.increments=1 --set implicit.line_search=false --set implicit.max_cuts=1 --set implicit.max_iterations=40 --set 'blank.formulation="belytschko_tsay"'

@@ -31,7 +31,7 @@ TEST_F(ReadCase, MinimalCaseGetsEveryDocumentedDefault) {
   EXPECT_EQ(c.blank.integration_points, 5);
   EXPECT_EQ(c.blank.integration_rule, sf::BlankConfig::IntegrationRule::gauss);
   EXPECT_EQ(c.blank.material, "steel");
-  EXPECT_EQ(c.blank.formulation, sf::BlankConfig::Formulation::belytschko_tsay);
+  EXPECT_EQ(c.blank.formulation, sf::BlankConfig::Formulation::assumed_strain);
   EXPECT_EQ(c.blank.hourglass_coefficient, 0.1);
   EXPECT_EQ(c.blank.hourglass_form, sf::BlankConfig::HourglassForm::viscous);
   EXPECT_EQ(c.blank.rolling_direction, (std::array<double, 3>{1.0, 0.0, 0.0}));

@@ -160,6 +160,11 @@ TEST_F(ReadCase, SectionHourglassAndRollingDirectionErrors) {
   expect_error(text, line_of(text, "hourglass"),
                {"blank.hourglass", "belytschko_tsay", "no coefficient"});
 
+  // ... nor has the default formulation: the message says how to get the hourglass keys.
+  text = with("hourglass_form = \"stiffness\"\n");
+  expect_error(text, line_of(text, "hourglass_form"),
+               {"blank.hourglass_form", "(the default)", "set formulation = \"belytschko_tsay\""});
+
   text = with("rolling_direction = [0, 0, 0]\n");
   expect_error(text, line_of(text, "rolling_direction"),
                {"blank.rolling_direction", "not all zero", "got [0, 0, 0]"});
