@@ -1,0 +1,175 @@
+#include "solver/energy_balance.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <string>
+
+#include "core/errors.hpp"
+
+namespace sf {
+
+double kinetic_energy(const Model& model, const SolutionState& s) {
+  double e = 0.0;
+  const Eigen::Index n = s.v.cols();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    e += model.blank.mass[i] * s.v.col(i).squaredNorm() +
+         model.blank.rotational_inertia[i] * s.omega.col(i).squaredNorm();
+  }
+  return 0.5 * e;
+}
+
+// The velocity change of node i over half a kick: with the state at time n (s.v, s.omega the
+// half-step velocities v(n-1/2) or, before the first step, v(0); the forces at time n), the
+// central-difference update v(n+1/2) = v(n-1/2) + (dt(n-1/2) + dt(n+1/2)) / 2 (a(n) - c v(n-1/2))
+// is split into two half kicks, v(n) = v(n-1/2) + dt(n-1/2) / 2 u and v(n+1/2) = v(n) +
+// dt(n+1/2) / 2 u, with u the rate returned here (mm/s^2, rad/s^2): the same force sum, damping
+// and current (possibly mass-scaled) masses as update_velocities; zero in the components the
+// constraints hold at zero and those a prescribed velocity holds (there the velocity stays at the
+// value the prescription gave it).
+// mass (tonne) and inertia (tonne mm^2) are the node's.
+void half_kick_rate(const Model& model, const SolutionState& s, Eigen::Index i, double mass,
+                    double inertia, Vec3& u, Vec3& u_omega) {
+  const double c = model.loads.damping;
+  u = (1.0 / mass) * (s.f_ext.col(i) + s.f_contact.col(i) - s.f_int.col(i)) - c * s.v.col(i);
+  u_omega = (1.0 / inertia) * (s.m_ext.col(i) - s.m_int.col(i)) - c * s.omega.col(i);
+  const NodalConstraints& constraints = model.constraints;
+  const unsigned held = constraints.constrained_bits(static_cast<std::size_t>(i));
+  if (held != 0) {
+    constraints.zero_components(static_cast<int>(i), held, u, u_omega);
+  }
+}
+
+// Kinetic energy (N mm) at the end of the step just taken, t(n+1), from the whole-step velocity
+//   v(n+1) = v(n+1/2) + dt(n+1/2) / 2 (a(n+1) - c v(n+1/2)),
+// a(n+1) from the forces just computed, without storing v(n+1). The half step used is the one
+// just taken, dt(n+1/2) / 2, not the next one: the next velocity update, whatever its step, is
+// then exactly v(n+1) followed by a second half kick dt(n+3/2) / 2 a(n+1) (half_kick_rate), so
+// the reported v(n+1) is the one the scheme passes through, and the step it will take need not
+// be known (it is cut to land on the end time). A constrained component is zero, a
+// prescribed one stays at its prescribed value of the step (v(n+1/2)).
+// With the trapezoidal work increments this balance is exact up to the half-kick energy
+//   D(n+1) = 1/2 sum m |dt/2 u(n+1)|^2 = dt^2 / 8 F.M^-1.F (undamped),
+// which is second order in dt: total - supplied = D(n+1) - D(0) at a constant step, for any
+// forces (docs/time-integration.md).
+KineticEnergy whole_step_kinetic_energy(const Model& model, const SolutionState& s, double dt) {
+  const double h = 0.5 * dt;
+  KineticEnergy e;
+  const Eigen::Index n = s.v.cols();
+  Vec3 u, u_omega;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double m = model.blank.mass[i];
+    const double j = model.blank.rotational_inertia[i];
+    half_kick_rate(model, s, i, m, j, u, u_omega);
+    e.kinetic +=
+        m * (s.v.col(i) + h * u).squaredNorm() + j * (s.omega.col(i) + h * u_omega).squaredNorm();
+    e.half_kick += h * h * (m * u.squaredNorm() + j * u_omega.squaredNorm());
+  }
+  e.kinetic *= 0.5;
+  e.half_kick *= 0.5;
+  return e;
+}
+
+void update_half_kick_reference(const Model& model, SolutionState& s, double dt,
+                                double dt_previous) {
+  // D(0) from the forces at time 0; where the step changes, the kick about to be taken differs
+  // from the reported D by the ratio of the squared steps, and that jump is taken out of the
+  // reference (docs/time-integration.md).
+  if (s.cycle == 0) {
+    s.energies.half_kick_reference = whole_step_kinetic_energy(model, s, dt).half_kick;
+  } else if (dt != dt_previous && dt_previous > 0.0) {
+    const double ratio = dt / dt_previous;
+    s.energies.half_kick_reference -= s.energies.half_kick * (1.0 - ratio * ratio);
+  }
+}
+
+void account_step_energies(const Model& model, SolutionState& s,
+                           const ShellForceResult& element_result, double prescribed_work,
+                           double time_before, double dt) {
+  // The work increments by the trapezoidal rule.
+  Energies& e = s.energies;
+  double element_work = 0.0;
+  double load_work = 0.0;
+  double damping_power = 0.0;
+  double contact_work = 0.0;  // of the contact forces on the blank
+  const Eigen::Index n = s.x.cols();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    element_work += 0.5 * dt *
+                    ((s.f_int.col(i) + s.f_int_previous.col(i)).dot(s.v.col(i)) +
+                     (s.m_int.col(i) + s.m_int_previous.col(i)).dot(s.omega.col(i)));
+    contact_work += 0.5 * dt * (s.f_contact.col(i) + s.f_contact_previous.col(i)).dot(s.v.col(i));
+    load_work += 0.5 * dt *
+                 ((s.f_ext.col(i) + s.f_ext_previous.col(i)).dot(s.v.col(i)) +
+                  (s.m_ext.col(i) + s.m_ext_previous.col(i)).dot(s.omega.col(i)));
+    damping_power += model.blank.mass[i] * s.v.col(i).squaredNorm() +
+                     model.blank.rotational_inertia[i] * s.omega.col(i).squaredNorm();
+  }
+  e.external_work += load_work + prescribed_work;
+  e.damping += model.loads.damping * damping_power * dt;
+  const double hourglass_work = element_result.hourglass_work;
+  e.plastic_work += element_result.plastic_work;
+  e.hourglass += hourglass_work;
+  e.internal += element_work - hourglass_work;
+  // The contact energy is the work done against the contact forces, on the blank and on the tools
+  // (for the frictionless penalty: the spring energy 1/2 k g^2 up to the trapezoidal rule).
+  e.contact -= contact_work;
+  double tool_kinetic = 0.0;
+  for (std::size_t t = 0; t < s.tools.size(); ++t) {
+    ToolState& tool = s.tools[t];
+    // Work of the blank's force F on the tool over the step.
+    const Vec3 step = tool.displacement - tool.previous_displacement;
+    const double reaction_work = 0.5 * (tool.force + tool.previous_force).dot(step);
+    e.contact -= reaction_work;
+    if (const auto& driven = model.tools[t].force_control) {
+      // The press does the work of the applied force along the travel; the tool's damping
+      // dissipates c M v^2 dt (on v(n+1/2), as for the blank); its kinetic energy is taken at
+      // the step end, like the blank's.
+      const double travel_step = dt * tool.velocity;
+      e.external_work +=
+          0.5 * (driven->applied_force(time_before) + driven->applied_force(s.time)) * travel_step;
+      e.damping += driven->damping() * driven->mass() * tool.velocity * tool.velocity * dt;
+      tool.speed = driven->whole_step_velocity(s.time, tool.force, tool.velocity, dt);
+      tool_kinetic += 0.5 * driven->mass() * tool.speed * tool.speed;
+    } else {
+      // The press holds the tool against F on its prescribed path: it does -F . du of work.
+      e.external_work -= reaction_work;
+      tool.speed = model.tools[t].motion.speed(s.time);
+    }
+    // A moving tool's peak is its largest push against its motion; a fixed tool's direction is
+    // only the default axis, so its peak is the largest force along that axis either way.
+    const double pushing = -tool.force.dot(model.tools[t].direction());
+    const bool fixed = !model.tools[t].force_control && !model.tools[t].motion.moves();
+    tool.peak_force = std::max(tool.peak_force, fixed ? std::abs(pushing) : pushing);
+  }
+  const KineticEnergy kinetic = whole_step_kinetic_energy(model, s, dt);
+  e.kinetic = kinetic.kinetic + tool_kinetic;
+  e.half_kick = kinetic.half_kick;
+}
+
+void check_energy_blowup(const Model& model, const SolutionState& s, double energy_scale,
+                         std::string_view where, std::string_view remedy_text) {
+  const Energies& e = s.energies;
+  const double ratio = model.config.control.energy_blowup_ratio;
+  // Nothing to compare with while no work has been supplied and no tool moves (energy_scale 0):
+  // a run loaded from rest does no work in its first step (v(1/2) = 0), while the kinetic energy
+  // at its end already holds the first half kick, 1/2 m |dt/2 a(1)|^2 > 0.
+  const double reference = std::max(e.supplied(), energy_scale);
+  if (reference > 0.0 && e.total() > ratio * reference) {
+    // Mass-proportional damping applied explicitly (on v(n-1/2)) amplifies for c dt > 2.
+    const double c_dt = model.loads.damping * s.dt;
+    const std::string remedy =
+        c_dt >= 2.0 ? fmt::format(
+                          "control.damping = {} 1/s times the step {:.4e} s is {:.3g}, "
+                          "beyond the explicit damping's stability limit 2: lower it",
+                          model.loads.damping, s.dt, c_dt)
+                    : std::string(remedy_text);
+    throw InstabilityError(fmt::format(
+        "energy blow-up{} at t = {:.6e} s, cycle {}: total energy {:.6e} N mm exceeds {} x "
+        "{:.6e} N mm (the work supplied, {:.6e} N mm, or the run's energy scale if larger; "
+        "kinetic {:.4e}, internal {:.4e}, hourglass {:.4e}, contact {:.4e}, damping {:.4e}); {}",
+        where, s.time, s.cycle, e.total(), ratio, reference, e.supplied(), e.kinetic, e.internal,
+        e.hourglass, e.contact, e.damping, remedy));
+  }
+}
+
+}  // namespace sf

@@ -1,0 +1,47 @@
+#include "solver/initial_state.hpp"
+
+#include "element/shell_directors.hpp"
+#include "solver/energy_balance.hpp"
+
+namespace sf {
+
+SolutionState make_initial_state(const Model& model) {
+  SolutionState s;
+  const Eigen::Index n = model.blank.mesh.nodes.cols();
+  s.x = model.blank.mesh.nodes;
+  for (Matrix3X* field : {&s.v, &s.omega, &s.rotation, &s.f_int, &s.m_int, &s.f_contact,
+                          &s.f_contact_previous, &s.f_ext, &s.m_ext, &s.f_ext_previous,
+                          &s.m_ext_previous, &s.f_int_previous, &s.m_int_previous}) {
+    *field = Matrix3X::Zero(3, n);
+  }
+  s.half_thickness = VectorX::Zero(n);
+  if (model.blank.scaling.enabled()) {
+    s.mass_before = model.blank.mass;
+    s.inertia_before = model.blank.rotational_inertia;
+  }
+  s.shell = make_shell_state(element_count(model.blank.part), model.config.blank.integration_points,
+                             model.config.blank.thickness);
+  initialize_directors(model.blank.part, model.blank.mesh.nodes, s.shell);
+  s.tools.resize(model.tools.size());
+  for (const InitialVelocityConfig& iv : model.config.initial_velocities) {
+    const Vec3 velocity(iv.velocity[0], iv.velocity[1], iv.velocity[2]);
+    if (iv.group.empty()) {
+      s.v.colwise() = velocity;
+    } else {
+      for (int node : model.blank.group(iv.group).nodes) {
+        s.v.col(node) = velocity;
+      }
+    }
+  }
+  model.constraints.apply(s.v, s.omega);
+  // The initial velocities are the whole-step velocities v(0) (constraints applied): the same
+  // definition as the kinetic energy reported after every step. The forces at time 0 only enter
+  // the first half kick, v(1/2) = v(0) + dt/2 a(0).
+  s.energies.kinetic = kinetic_energy(model, s);
+  s.energies.initial_kinetic = s.energies.kinetic;
+  s.stable_dt = model.time_step;
+  s.dt_element = model.limiting_element;
+  return s;
+}
+
+}  // namespace sf

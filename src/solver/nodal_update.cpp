@@ -1,0 +1,100 @@
+#include "solver/nodal_update.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+
+#include "core/errors.hpp"
+
+namespace sf {
+namespace {
+
+// Accelerations from the nodal force balance, straight into the half-step velocity update.
+// Returns false if any value is not finite (the caller then finds and names the node).
+// Mass-proportional damping acts on the old half-step velocity (force -c m v), which keeps the
+// update explicit; it is stable for c dt < 2.
+bool add_force_kicks(const Model& model, SolutionState& s, double weight) {
+  const Eigen::Index n = s.v.cols();
+  const double c = model.loads.damping;
+  double check = 0.0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double inv_m = 1.0 / model.blank.mass[i];
+    const double inv_i = 1.0 / model.blank.rotational_inertia[i];
+    s.v.col(i) += (weight * inv_m) * (s.f_ext.col(i) + s.f_contact.col(i) - s.f_int.col(i)) -
+                  (weight * c) * s.v.col(i);
+    s.omega.col(i) +=
+        (weight * inv_i) * (s.m_ext.col(i) - s.m_int.col(i)) - (weight * c) * s.omega.col(i);
+    check += s.v.col(i).sum() + s.omega.col(i).sum();
+  }
+  model.constraints.apply(s.v, s.omega);
+  return std::isfinite(check);
+}
+
+[[noreturn]] void throw_non_finite(const Model& model, const SolutionState& s) {
+  for (Eigen::Index i = 0; i < s.v.cols(); ++i) {
+    if (!s.v.col(i).allFinite() || !s.omega.col(i).allFinite()) {
+      throw InstabilityError(fmt::format(
+          "non-finite velocity at blank node {} (gmsh node {}) at t = {:.6e} s, cycle {}; "
+          "forces there: internal ({}, {}, {}) N, contact ({}, {}, {}) N",
+          i, model.blank.mesh.gmsh_node_tags[static_cast<std::size_t>(i)], s.time, s.cycle,
+          s.f_int(0, i), s.f_int(1, i), s.f_int(2, i), s.f_contact(0, i), s.f_contact(1, i),
+          s.f_contact(2, i)));
+    }
+  }
+  throw InstabilityError(
+      fmt::format("non-finite state at t = {:.6e} s, cycle {}", s.time, s.cycle));
+}
+
+}  // namespace
+
+void update_velocities(const Model& model, SolutionState& s, double weight) {
+  if (!add_force_kicks(model, s, weight)) {
+    throw_non_finite(model, s);
+  }
+}
+
+// Holds the prescribed components (in each node's axes) at their velocities over the step [t, t +
+// dt]: a prescribed velocity at its value at mid-step, a prescribed displacement (or rotation) at
+// the velocity that reaches its value at the step end, (d(t + dt) - d(t)) / dt (central
+// difference). Returns the work (N mm) of the reactions that do so over the step: reaction = m
+// (v_prescribed - v_free) / weight (the rotational inertia for a rotation), times v_prescribed dt.
+double apply_velocity_conditions(const Model& model, SolutionState& s, double weight, double dt) {
+  double work = 0.0;
+  const double t0 = s.time;
+  const NodeFrames& frames = model.constraints.frames;
+  for (const PrescribedMotion& p : model.prescribed_motions) {
+    const double target = p.kind == PrescribedMotion::Kind::velocity
+                              ? p.target(t0 + 0.5 * dt)
+                              : (p.target(t0 + dt) - p.target(t0)) / dt;
+    const VectorX& mass = p.rotation ? model.blank.rotational_inertia : model.blank.mass;
+    Matrix3X& field = p.rotation ? s.omega : s.v;
+    for (std::size_t k = 0; k < p.nodes.size(); ++k) {
+      const int node = p.nodes[k];
+      const int component = p.component[k];
+      const double value = p.sign[k] * target;
+      double free = 0.0;
+      if (!frames.has(node)) {
+        double& held = field(component % 3, node);
+        free = held;
+        held = value;
+      } else {
+        const Vec3 axis = frames.axis(node, component);
+        free = axis.dot(field.col(node));
+        field.col(node) += (value - free) * axis;
+      }
+      const double reaction = mass[node] * (value - free) / weight;
+      work += reaction * value * dt;
+    }
+  }
+  return work;
+}
+
+void update_positions(SolutionState& s, double dt) {
+  s.x += dt * s.v;
+  s.rotation += dt * s.omega;
+  s.time += dt;
+  s.cycle += 1;
+  s.dt = dt;
+}
+
+}  // namespace sf

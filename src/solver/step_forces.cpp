@@ -1,0 +1,92 @@
+#include "solver/step_forces.hpp"
+
+#include <fmt/core.h>
+
+#include <chrono>
+
+#include "core/errors.hpp"
+#include "model/external_loads.hpp"
+
+namespace sf {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The elements' internal forces and moments into state.f_int, m_int (zeroed here).
+ShellForceResult compute_internal_forces(const Model& model, SolutionState& s, double dt) {
+  s.f_int.setZero();
+  s.m_int.setZero();
+  try {
+    return compute_shell_internal_forces(model.blank.part, s.x, s.v, s.omega, dt, s.shell, s.f_int,
+                                         s.m_int);
+  } catch (const InstabilityError& e) {
+    throw InstabilityError(fmt::format("{} at t = {:.6e} s, cycle {}", e.what(), s.time, s.cycle));
+  }
+}
+
+// The contact offset of every node: half the mean thickness of the elements around it (mm).
+void update_contact_offsets(const Model& model, SolutionState& s) {
+  s.half_thickness.setZero();
+  const QuadConn& quads = model.blank.part.quads;
+  const TriConn& triangles = model.blank.part.triangles;
+  for (Eigen::Index e = 0; e < quads.cols(); ++e) {
+    for (int a = 0; a < 4; ++a) {
+      s.half_thickness[quads(a, e)] += 0.5 * s.shell.thickness[static_cast<std::size_t>(e)];
+    }
+  }
+  for (Eigen::Index k = 0; k < triangles.cols(); ++k) {
+    const double half = 0.5 * s.shell.thickness[static_cast<std::size_t>(quads.cols() + k)];
+    for (int a = 0; a < 3; ++a) {
+      s.half_thickness[triangles(a, k)] += half;
+    }
+  }
+  s.half_thickness.array() *= model.blank.inverse_element_count.array();
+}
+
+// The penalty contact of every pair into state.f_contact (zeroed here), the tools' reactions and
+// contact counts, the spring energy and the friction work.
+void compute_contact_forces(Model& model, SolutionState& s, double dt) {
+  s.f_contact.setZero();
+  s.contact_spring_energy = 0.0;
+  for (ToolState& t : s.tools) {
+    t.force.setZero();
+    t.nodes_in_contact = 0;
+  }
+  for (ContactInterface& c : model.contacts) {
+    ToolState& tool = s.tools[static_cast<std::size_t>(c.tool)];
+    // s.v is the mid-step velocity of the step dt just taken (dt = 0 on the first call).
+    const Vec3 tool_step =
+        dt > 0.0 ? Vec3(tool.displacement - tool.previous_displacement) : Vec3::Zero();
+    const ContactKinematics kinematics{.x = s.x,
+                                       .v = s.v,
+                                       .half_thickness = s.half_thickness,
+                                       .tool_displacement = tool.displacement,
+                                       .tool_displacement_increment = tool_step,
+                                       .dt = dt};
+    const ContactResult r = compute_penalty_contact(c.pair, kinematics, s.f_contact);
+    tool.force += r.force_on_tool;
+    tool.nodes_in_contact += r.nodes_in_contact;
+    s.contact_spring_energy += r.energy;
+    s.energies.friction_work += r.friction_work;
+  }
+}
+
+}  // namespace
+
+ShellForceResult compute_forces(Model& model, SolutionState& s, double dt) {
+  compute_external_forces(model, s.time, s.x, s.f_ext, s.m_ext);
+  const Clock::time_point element_start = Clock::now();
+  const ShellForceResult elements = compute_internal_forces(model, s, dt);
+  s.element_seconds += seconds_since(element_start);
+  const Clock::time_point contact_start = Clock::now();
+  update_contact_offsets(model, s);
+  compute_contact_forces(model, s, dt);
+  s.contact_seconds += seconds_since(contact_start);
+  return elements;
+}
+
+}  // namespace sf

@@ -1,0 +1,97 @@
+#include "solver/time_step_control.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+
+#include "core/errors.hpp"
+#include "model/mass_scaling.hpp"
+#include "solver/energy_balance.hpp"
+
+namespace sf {
+namespace {
+
+// Mass was added at some nodes (blank.mass against s.mass_before): their half-step velocities are
+// lowered to keep the momentum, v' = r v with r = m_old / m_new (likewise the angular velocities).
+// The half kicks scale the same way (r u, half_kick_rate: the force over m_new, the damping on
+// r v), so the whole-step velocity at this time n becomes r v(n) too: momentum is kept at the
+// whole step as well, and the reported kinetic energy drops by (1 - r) K(n), K(n) = 1/2 m_old
+// |v(n)|^2 with v(n) = v(n-1/2) + dt(n-1/2) / 2 u (what the last step reported).
+// The energy counted in energies.mass_scaling is the one that keeps the balance's exact
+// invariant, total - supplied - D (D the half-kick energy 1/2 m |dt/2 u|^2 of the coming step,
+// whole_step_kinetic_energy), unchanged across the mass change: D drops too, to r D, so
+//   dE = (1 - r) (1/2 m_old |v(n)|^2 - 1/2 m_old |dt/2 u|^2),
+// which at a constant step equals 1/2 (1 - r) m_old v(n-1/2) . v*(n+1/2), v* the next half-step
+// velocity at the old mass: the product form of the kinetic energy at time n. Counting only the
+// kinetic-energy drop (1 - r) K(n) would leave (1 - r) D in the balance at every change.
+// dt: the step about to be taken (s); s.dt: the last one taken (0 before the first step).
+void keep_momentum(const Model& model, SolutionState& s, double dt) {
+  const Eigen::Index n = s.v.cols();
+  const double h_last = 0.5 * s.dt;
+  const double h_next = 0.5 * dt;
+  double removed = 0.0;
+  double kinetic_drop = 0.0;
+  Vec3 u, u_omega;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double m_new = model.blank.mass[i];
+    const double m_old = s.mass_before[i];
+    const double i_new = model.blank.rotational_inertia[i];
+    const double i_old = s.inertia_before[i];
+    if (m_new == m_old && i_new == i_old) {
+      continue;
+    }
+    half_kick_rate(model, s, i, m_old, i_old, u, u_omega);
+    if (m_new != m_old) {
+      const double r = m_old / m_new;
+      const double drop = 0.5 * (1.0 - r) * m_old * (s.v.col(i) + h_last * u).squaredNorm();
+      kinetic_drop += drop;
+      removed += drop - 0.5 * (1.0 - r) * m_old * h_next * h_next * u.squaredNorm();
+      s.v.col(i) *= r;
+    }
+    if (i_new != i_old) {
+      const double r = i_old / i_new;
+      const double drop =
+          0.5 * (1.0 - r) * i_old * (s.omega.col(i) + h_last * u_omega).squaredNorm();
+      kinetic_drop += drop;
+      removed += drop - 0.5 * (1.0 - r) * i_old * h_next * h_next * u_omega.squaredNorm();
+      s.omega.col(i) *= r;
+    }
+  }
+  s.energies.mass_scaling += removed;
+  s.energies.kinetic -= kinetic_drop;
+}
+
+}  // namespace
+
+double compute_time_step(Model& model, SolutionState& s) {
+  Blank& blank = model.blank;
+  if (blank.scaling.enabled()) {
+    s.mass_before = blank.mass;  // same size: no allocation
+    s.inertia_before = blank.rotational_inertia;
+  }
+  const TimeStepCheck check =
+      scale_mass_to_time_step(blank.part, s.x, blank.scaling, blank.mass, blank.rotational_inertia);
+  if (check.mass_added > 0.0) {
+    keep_momentum(model, s, check.dt);
+  }
+  const double limit = model.config.control.mass_scaling_max_added;
+  if (check.mass_added > 0.0 && limit > 0.0 &&
+      blank.scaling.added_mass > limit * blank.physical_mass) {
+    throw InstabilityError(fmt::format(
+        "added mass {:.3f} % of the blank's mass passed control.mass_scaling_max_added = {:.3f} % "
+        "at t = {:.6e} s, cycle {} ({} elements scaled; element {} limits the step): elements "
+        "are being crushed below the target step {:.4e} s",
+        100.0 * blank.scaling.added_mass / blank.physical_mass, 100.0 * limit, s.time, s.cycle,
+        blank.scaling.scaled_elements, check.element, blank.scaling.target_dt));
+  }
+  s.stable_dt = check.dt;
+  s.dt_element = check.element;
+  if (s.min_stable_dt == 0.0 || check.dt < s.min_stable_dt) {
+    s.min_stable_dt = check.dt;
+    s.min_dt_element = check.element;
+  }
+  s.max_stable_dt = std::max(s.max_stable_dt, check.dt);
+  return check.dt;
+}
+
+}  // namespace sf

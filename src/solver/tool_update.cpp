@@ -1,0 +1,23 @@
+#include "solver/tool_update.hpp"
+
+namespace sf {
+
+// A force-controlled tool's travel at t(n+1) is found in the same cycle as the blank's positions,
+// so the contact at t(n+1) sees both at t(n+1).
+void move_tools(const Model& model, SolutionState& s, double time_before, double weight,
+                double dt) {
+  for (std::size_t t = 0; t < s.tools.size(); ++t) {
+    ToolState& tool = s.tools[t];
+    tool.previous_displacement = tool.displacement;
+    tool.previous_force = tool.force;
+    if (const auto& driven = model.tools[t].force_control) {
+      driven->step(time_before, tool.force, weight, dt, tool.velocity, tool.travel);
+      tool.displacement = tool.travel * driven->direction();
+    } else {
+      tool.travel = model.tools[t].motion.travel(s.time);
+      tool.displacement = model.tools[t].motion.displacement(s.time);
+    }
+  }
+}
+
+}  // namespace sf
