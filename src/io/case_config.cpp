@@ -111,6 +111,7 @@ void read_hardening(const TomlSection& s, const fs::path& folder, HardeningConfi
                 {{"swift", Law::swift},
                  {"linear", Law::linear},
                  {"voce", Law::voce},
+                 {"ludwik", Law::ludwik},
                  {"tabulated", Law::tabulated}});
   switch (hardening.law) {
     case Law::swift:
@@ -130,6 +131,12 @@ void read_hardening(const TomlSection& s, const fs::path& folder, HardeningConfi
       s.read_number("sigma0", hardening.voce_sigma0, greater_than(0.0, "MPa"), Presence::required);
       s.read_number("Q", hardening.voce_q, at_least(0.0, "MPa"), Presence::required);
       s.read_number("b", hardening.voce_b, greater_than(0.0), Presence::required);
+      return;
+    case Law::ludwik:
+      s.check_keys({"law", "A", "B", "n"});
+      s.read_number("A", hardening.ludwik_a, greater_than(0.0, "MPa"), Presence::required);
+      s.read_number("B", hardening.ludwik_b, at_least(0.0, "MPa"), Presence::required);
+      s.read_number("n", hardening.ludwik_n, interval(0.0, true, 1.0, false), Presence::required);
       return;
     case Law::tabulated:
       s.check_keys({"law", "file"});

@@ -21,7 +21,7 @@ struct CurveConfig {
 
 /// Isotropic hardening: flow stress as a function of equivalent plastic strain.
 struct HardeningConfig {
-  enum class Law { swift, linear, voce, tabulated };
+  enum class Law { swift, linear, voce, ludwik, tabulated };
   Law law = Law::swift;
   // swift: sigma_y = K * (eps0 + eps_p)^n
   double swift_k = 0.0;     ///< MPa
@@ -34,6 +34,10 @@ struct HardeningConfig {
   double voce_sigma0 = 0.0;  ///< MPa, initial yield stress
   double voce_q = 0.0;       ///< MPa, saturation increase
   double voce_b = 0.0;       ///< -, saturation rate
+  // ludwik: sigma_y = A + B * eps_p^n
+  double ludwik_a = 0.0;  ///< MPa, initial yield stress
+  double ludwik_b = 0.0;  ///< MPa
+  double ludwik_n = 0.0;  ///< -
   /// tabulated: a CSV file of (equivalent plastic strain -, true stress MPa) rows, absolute
   /// (resolved against the case file's folder); read by build_model (read_hardening_csv).
   std::filesystem::path table_file;

@@ -151,6 +151,12 @@ void write_hardening(TomlWriter& w, const HardeningConfig& h) {
       w.number("Q", h.voce_q, "MPa");
       w.number("b", h.voce_b);
       return;
+    case HardeningConfig::Law::ludwik:
+      w.string("law", "ludwik");
+      w.number("A", h.ludwik_a, "MPa; sigma_y = A + B eps_p^n");
+      w.number("B", h.ludwik_b, "MPa");
+      w.number("n", h.ludwik_n);
+      return;
     case HardeningConfig::Law::tabulated:
       w.string("law", "tabulated");
       w.string("file", h.table_file.string());

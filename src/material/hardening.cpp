@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <string>
 
 #include "core/errors.hpp"
@@ -21,6 +22,15 @@ double SwiftHardening::slope(double eps_p) const {
 FlowStress VoceHardening::evaluate(double eps_p) const {
   const double x = Q * std::exp(-b * eps_p);
   return {sigma0 + Q - x, b * x};
+}
+
+FlowStress LudwikHardening::evaluate(double eps_p) const {
+  if (!(eps_p > 0.0)) {
+    const double slope = n < 1.0 ? std::numeric_limits<double>::infinity() : (n == 1.0 ? B : 0.0);
+    return {A, B == 0.0 ? 0.0 : slope};
+  }
+  const double hardening = B * std::pow(eps_p, n);
+  return {A + hardening, n * hardening / eps_p};
 }
 
 FlowStress TabulatedHardening::evaluate(double e) const {
@@ -112,6 +122,12 @@ void check_hardening(const Hardening& hardening, const char* what) {
         !all_finite({v->sigma0, v->Q, v->b})) {
       throw InputError(name + ": Voce hardening needs sigma0 > 0, Q >= 0 and b > 0 (got " +
                        num(v->sigma0) + ", " + num(v->Q) + ", " + num(v->b) + ")");
+    }
+  } else if (const auto* h = std::get_if<LudwikHardening>(&hardening)) {
+    if (!(h->A > 0.0) || !(h->B >= 0.0) || !(h->n > 0.0 && h->n <= 1.0) ||
+        !all_finite({h->A, h->B, h->n})) {
+      throw InputError(name + ": Ludwik hardening needs A > 0, B >= 0 and 0 < n <= 1 (got A = " +
+                       num(h->A) + ", B = " + num(h->B) + ", n = " + num(h->n) + ")");
     }
   } else {
     const auto& t = std::get<TabulatedHardening>(hardening);

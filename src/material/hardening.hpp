@@ -71,6 +71,20 @@ struct VoceHardening {
   FlowStress evaluate(double eps_p) const;
 };
 
+/// Ludwik (1909) hardening, also written Hollomon with an offset: sigma_y = A + B eps_p^n. Needs
+/// A > 0, B >= 0, 0 < n <= 1. For n < 1 the slope n B eps_p^(n-1) is infinite at eps_p = 0
+/// (returned as +inf; the return mapping's bracketed Newton then bisects its first step).
+struct LudwikHardening {
+  double A = 0.0;  ///< MPa, initial yield stress
+  double B = 0.0;  ///< MPa, hardening coefficient
+  double n = 0.0;  ///< -, hardening exponent
+
+  double flow_stress(double eps_p) const { return evaluate(eps_p).stress; }
+  double slope(double eps_p) const { return evaluate(eps_p).slope; }
+  /// Both at once (one pow).
+  FlowStress evaluate(double eps_p) const;
+};
+
 /// Tabulated hardening: points (eps_p[i], stress[i]) of true stress (MPa) against equivalent
 /// plastic strain (-), interpolated linearly and extrapolated beyond the last point with the last
 /// segment's slope (a single point: perfect plasticity). Valid tables (check_hardening): at least
@@ -87,7 +101,8 @@ struct TabulatedHardening {
 };
 
 /// A hardening law, chosen once per material.
-using Hardening = std::variant<SwiftHardening, LinearHardening, VoceHardening, TabulatedHardening>;
+using Hardening = std::variant<SwiftHardening, LinearHardening, VoceHardening, LudwikHardening,
+                               TabulatedHardening>;
 
 /// Flow stress (MPa) of any hardening law at eps_p (-).
 double flow_stress(const Hardening& hardening, double eps_p);

@@ -27,6 +27,8 @@ Hardening make_hardening(const CaseConfig& config, const MaterialConfig& m) {
       return LinearHardening{h.yield_stress, h.modulus};
     case HardeningConfig::Law::voce:
       return VoceHardening{h.voce_sigma0, h.voce_q, h.voce_b};
+    case HardeningConfig::Law::ludwik:
+      return LudwikHardening{h.ludwik_a, h.ludwik_b, h.ludwik_n};
     case HardeningConfig::Law::tabulated:
       try {
         return read_hardening_csv(h.table_file);

@@ -60,7 +60,7 @@ void print_material(const CaseConfig& config, const UnitSystem& units) {
     law = "von Mises";
   }
   if (m.type != Type::elastic) {
-    static constexpr const char* names[] = {"Swift", "linear", "Voce", "tabulated"};
+    static constexpr const char* names[] = {"Swift", "linear", "Voce", "Ludwik", "tabulated"};
     law += fmt::format(", {} hardening", names[static_cast<int>(m.hardening.law)]);
     if (m.hardening.law == Law::tabulated) {
       law += fmt::format(" ({})", m.hardening.table_file.string());

@@ -97,6 +97,16 @@ sigma0 = 180.0
 Q = 250
 b = 12.5
 
+[materials.steel_ludwik]
+density = 7.85e-9
+young = 210000.0
+poisson = 0.3
+[materials.steel_ludwik.hardening]
+law = "ludwik"
+A = 200.0
+B = 500
+n = 0.3
+
 [[tools]]
 name = "die"
 mesh = "die.msh"

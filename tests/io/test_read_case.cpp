@@ -90,7 +90,7 @@ TEST_F(ReadCase, FullCaseReadsEveryValue) {
   EXPECT_NEAR(c.blank.rolling_direction[1], std::sqrt(0.5), 1e-15);
   EXPECT_EQ(c.blank.rolling_direction[2], 0.0);
 
-  ASSERT_EQ(c.materials.size(), 4u);
+  ASSERT_EQ(c.materials.size(), 5u);
   const sf::MaterialConfig& al = c.blank_material();
   EXPECT_EQ(al.name, "aluminium");
   EXPECT_EQ(al.type, sf::MaterialConfig::Type::von_mises);
@@ -132,6 +132,12 @@ TEST_F(ReadCase, FullCaseReadsEveryValue) {
   EXPECT_EQ(voce->hardening.voce_sigma0, 180.0);
   EXPECT_EQ(voce->hardening.voce_q, 250.0);
   EXPECT_EQ(voce->hardening.voce_b, 12.5);
+  const sf::MaterialConfig* ludwik = find("steel_ludwik");
+  ASSERT_NE(ludwik, nullptr);
+  EXPECT_EQ(ludwik->hardening.law, sf::HardeningConfig::Law::ludwik);
+  EXPECT_EQ(ludwik->hardening.ludwik_a, 200.0);
+  EXPECT_EQ(ludwik->hardening.ludwik_b, 500.0);  // an integer where a float is expected
+  EXPECT_EQ(ludwik->hardening.ludwik_n, 0.3);
 
   ASSERT_EQ(c.tools.size(), 3u);
   const sf::ToolConfig& die = c.tools[0];
@@ -472,6 +478,9 @@ void expect_same_case(const sf::CaseConfig& a, const sf::CaseConfig& b) {
     EXPECT_EQ(x.hardening.voce_sigma0, y.hardening.voce_sigma0);
     EXPECT_EQ(x.hardening.voce_q, y.hardening.voce_q);
     EXPECT_EQ(x.hardening.voce_b, y.hardening.voce_b);
+    EXPECT_EQ(x.hardening.ludwik_a, y.hardening.ludwik_a);
+    EXPECT_EQ(x.hardening.ludwik_b, y.hardening.ludwik_b);
+    EXPECT_EQ(x.hardening.ludwik_n, y.hardening.ludwik_n);
     EXPECT_EQ(x.hardening.table_file, y.hardening.table_file);
     EXPECT_EQ(x.r0, y.r0);
     EXPECT_EQ(x.r45, y.r45);

@@ -73,6 +73,30 @@ TEST_F(ReadCase, UnknownMaterialTypeListsHill48) {
 
 const std::string_view kSwiftTable = "K = 565.3\neps0 = 0.007117\nn = 0.2589\n";
 
+TEST_F(ReadCase, LudwikHardeningValuesAndErrors) {
+  std::string text =
+      replaced(kMinimal, kSwiftTable, "law = \"ludwik\"\nA = 200\nB = 500\nn = 0.3\n");
+  const sf::HardeningConfig h = sf::read_case(write_case(text)).blank_material().hardening;
+  EXPECT_EQ(h.law, sf::HardeningConfig::Law::ludwik);
+  EXPECT_EQ(h.ludwik_a, 200.0);
+  EXPECT_EQ(h.ludwik_b, 500.0);
+  EXPECT_EQ(h.ludwik_n, 0.3);
+
+  text = replaced(kMinimal, kSwiftTable, "law = \"ludwik\"\nA = 0\nB = 500\nn = 0.3\n");
+  expect_error(text, line_of(text, "A = 0"), {"materials.steel.hardening.A", "> 0 (MPa)", "got 0"});
+
+  text = replaced(kMinimal, kSwiftTable, "law = \"ludwik\"\nA = 200\nB = 500\nn = 1.5\n");
+  expect_error(text, line_of(text, "n = 1.5"), {"materials.steel.hardening.n", "got 1.5"});
+
+  text = replaced(kMinimal, kSwiftTable, "law = \"ludwik\"\nA = 200\nn = 0.3\n");
+  expect_error(text, line_of(text, "[materials.steel.hardening]"),
+               {"materials.steel.hardening.B", "missing required key"});
+
+  text = replaced(kMinimal, kSwiftTable, "law = \"ludwik\"\nA = 200\nB = 500\nn = 0.3\nK = 1\n");
+  expect_error(text, line_of(text, "K = 1"),
+               {"materials.steel.hardening.K", "unknown key", "A, B, n"});
+}
+
 TEST_F(ReadCase, VoceHardeningValuesAndErrors) {
   std::string text =
       replaced(kMinimal, kSwiftTable, "law = \"voce\"\nsigma0 = 200\nQ = 150.5\nb = 9.0\n");

@@ -1,9 +1,11 @@
-// Voce and tabulated hardening, the hardening-table reader, and J2 with a tabulated Swift curve.
+// Voce, Ludwik and tabulated hardening, the hardening-table reader, and J2 with a tabulated Swift
+// curve and with Ludwik from the virgin state.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 
 #include "core/errors.hpp"
@@ -45,6 +47,55 @@ TEST(Hardening, VoceAgainstClosedForm) {
   EXPECT_THROW(check_hardening(Hardening{VoceHardening{200.0, -1.0, 12.0}}, "m"), InputError);
   EXPECT_THROW(check_hardening(Hardening{VoceHardening{200.0, 10.0, 0.0}}, "m"), InputError);
   EXPECT_NO_THROW(check_hardening(Hardening{v}, "m"));
+}
+
+TEST(Hardening, LudwikAgainstClosedForm) {
+  // sigma_y = A + B e^n, slope n B e^(n-1) (Ludwik 1909); the plate deck's law (issue 16):
+  // A 200 MPa, B 500 MPa, n 0.3. Tolerance 1e-13 relative (round-off); the slope also against a
+  // central difference (h = 1e-7 e, O(h^2) error ~ 1e-13, cancellation ~ 1e-9 relative).
+  const LudwikHardening l{200.0, 500.0, 0.3};
+  for (const double e : {1e-6, 1e-4, 0.01, 0.1, 0.5}) {
+    const double s = 200.0 + 500.0 * std::pow(e, 0.3);
+    EXPECT_NEAR(flow_stress(Hardening{l}, e) / s, 1.0, 1e-13);
+    EXPECT_NEAR(hardening_slope(Hardening{l}, e) / (150.0 * std::pow(e, -0.7)), 1.0, 1e-13);
+    const double h = 1e-7 * e;
+    const double fd = (l.flow_stress(e + h) - l.flow_stress(e - h)) / (2 * h);
+    EXPECT_NEAR(l.slope(e) / fd, 1.0, 1e-7);
+  }
+  // At e = 0: the initial yield stress A; the slope is infinite for n < 1, B for n = 1.
+  EXPECT_EQ(l.flow_stress(0.0), 200.0);
+  EXPECT_EQ(l.slope(0.0), std::numeric_limits<double>::infinity());
+  EXPECT_EQ((LudwikHardening{200.0, 500.0, 1.0}.slope(0.0)), 500.0);
+  EXPECT_EQ((LudwikHardening{200.0, 0.0, 0.3}.slope(0.0)), 0.0);  // perfectly plastic
+  EXPECT_NO_THROW(check_hardening(Hardening{l}, "m"));
+  for (const LudwikHardening& bad :
+       {LudwikHardening{0.0, 500.0, 0.3}, LudwikHardening{200.0, -1.0, 0.3},
+        LudwikHardening{200.0, 500.0, 0.0}, LudwikHardening{200.0, 500.0, 1.5}}) {
+    EXPECT_NE(input_error([&] { check_hardening(Hardening{bad}, "m"); }).find("Ludwik hardening"),
+              std::string::npos);
+  }
+}
+
+TEST(Hardening, J2WithLudwikFromTheVirginStateStaysOnTheCurve) {
+  // The first plastic step starts where the slope is infinite (e = 0, n < 1): the return
+  // mapping's bracketed Newton must still land on the curve. A mixed strain path of 100 steps:
+  // after every plastic step the von Mises stress equals A + B eps_p^n to 1e-9 relative (the
+  // return's tolerance 1e-10 plus round-off), and eps_p grows.
+  const LudwikHardening l{200.0, 500.0, 0.3};
+  const J2PlaneStress j2{210000.0, 0.3, l};
+  PlaneStressState state;
+  for (int i = 0; i < 100; ++i) {
+    const PlaneStressUpdate u = j2.update(state, Vec3(2e-4, -1e-4, 2e-5));
+    const Vec3& s = u.stress;
+    const double mises = std::sqrt(s(0) * s(0) - s(0) * s(1) + s(1) * s(1) + 3.0 * s(2) * s(2));
+    if (u.eps_p > state.eps_p) {
+      EXPECT_NEAR(mises / l.flow_stress(u.eps_p), 1.0, 1e-9) << "step " << i;
+    } else {
+      EXPECT_LE(mises, l.flow_stress(u.eps_p) * (1.0 + 1e-12)) << "step " << i;
+    }
+    state = {u.stress, u.eps_p};
+  }
+  EXPECT_GT(state.eps_p, 0.01);
 }
 
 TEST(Hardening, TabulatedInterpolatesAndExtrapolates) {
