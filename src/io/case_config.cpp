@@ -487,13 +487,19 @@ void read_loads(const TomlSection& top, std::vector<LoadConfig>& loads) {
 
 void read_initial_velocities(const TomlSection& top, std::vector<InitialVelocityConfig>& out) {
   for (const TomlSection& s : top.table_array("initial_velocity")) {
-    s.check_keys({"group", "velocity"});
+    s.check_keys({"group", "velocity", "angular_velocity"});
     InitialVelocityConfig iv;
     s.read_string("group", iv.group);
-    if (!s.has("velocity")) {
-      s.fail_missing("velocity", "an array of 3 numbers (mm/s)");
+    if (!s.has("velocity") && !s.has("angular_velocity")) {
+      s.fail_missing("velocity",
+                     "an array of 3 numbers (mm/s), or angular_velocity (rad/s), or both");
     }
-    read_vector(s, "velocity", iv.velocity);
+    if (s.has("velocity")) {
+      read_vector(s, "velocity", iv.velocity);
+    }
+    if (s.has("angular_velocity")) {
+      read_vector(s, "angular_velocity", iv.angular_velocity);
+    }
     out.push_back(std::move(iv));
   }
 }

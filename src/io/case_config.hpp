@@ -203,7 +203,8 @@ struct LoadConfig {
 /// A velocity given to blank nodes at time 0 (mm/s). An empty group means every blank node.
 struct InitialVelocityConfig {
   std::string group;
-  std::array<double, 3> velocity{0.0, 0.0, 0.0};
+  std::array<double, 3> velocity{0.0, 0.0, 0.0};          ///< mm/s, global axes
+  std::array<double, 3> angular_velocity{0.0, 0.0, 0.0};  ///< rad/s of the nodes' rotations
 };
 
 /// Velocity components held at prescribed values (mm/s) on blank nodes, scaled by a curve.

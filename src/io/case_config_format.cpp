@@ -362,6 +362,7 @@ void write_initial_velocity(TomlWriter& w, const InitialVelocityConfig& iv) {
     w.string("group", iv.group);
   }
   w.vector("velocity", iv.velocity, "mm/s");
+  w.vector("angular_velocity", iv.angular_velocity, "rad/s, of the nodes' rotations");
 }
 
 void write_prescribed_velocity(TomlWriter& w, const PrescribedVelocityConfig& pv) {

@@ -25,11 +25,14 @@ SolutionState make_initial_state(const Model& model) {
   s.tools.resize(model.tools.size());
   for (const InitialVelocityConfig& iv : model.config.initial_velocities) {
     const Vec3 velocity(iv.velocity[0], iv.velocity[1], iv.velocity[2]);
+    const Vec3 angular(iv.angular_velocity[0], iv.angular_velocity[1], iv.angular_velocity[2]);
     if (iv.group.empty()) {
       s.v.colwise() = velocity;
+      s.omega.colwise() = angular;
     } else {
       for (int node : model.blank.group(iv.group).nodes) {
         s.v.col(node) = velocity;
+        s.omega.col(node) = angular;
       }
     }
   }

@@ -159,9 +159,14 @@ void print_loads(const Model& model, const UnitSystem& units) {
              describe_scale(config, pv.curve, units));
   }
   for (const InitialVelocityConfig& iv : config.initial_velocities) {
-    log_info("Initial     {}: velocity {} {}\n",
+    const auto& w = iv.angular_velocity;
+    const std::string angular =
+        w[0] != 0.0 || w[1] != 0.0 || w[2] != 0.0
+            ? fmt::format(", angular velocity {} rad/{}", format_vector(w), units.time)
+            : std::string();
+    log_info("Initial     {}: velocity {} {}{}\n",
              iv.group.empty() ? std::string("every node") : fmt::format("'{}'", iv.group),
-             format_vector(iv.velocity), units.velocity());
+             format_vector(iv.velocity), units.velocity(), angular);
   }
   const auto& g = config.control.gravity;
   if (g[0] != 0.0 || g[1] != 0.0 || g[2] != 0.0) {

@@ -51,6 +51,9 @@ type = "pressure"
 pressure = 0.3
 [[initial_velocity]]
 velocity = [0.0, 0.0, -1000.0]
+[[initial_velocity]]
+group = "edge"
+angular_velocity = [0.0, 50.0, 0.0]
 [[prescribed_velocity]]
 group = "edge"
 velocity = [10.0, 0.0, 0.0]
@@ -69,9 +72,13 @@ TEST(ReadCaseLoads, ReadsEveryValue) {
   EXPECT_EQ(c.loads[0].curve.times.size(), 2u);
   EXPECT_EQ(c.loads[1].type, sf::LoadConfig::Type::pressure);
   EXPECT_EQ(c.loads[1].pressure, 0.3);
-  ASSERT_EQ(c.initial_velocities.size(), 1u);
+  ASSERT_EQ(c.initial_velocities.size(), 2u);
   EXPECT_TRUE(c.initial_velocities[0].group.empty());
   EXPECT_EQ(c.initial_velocities[0].velocity[2], -1000.0);
+  EXPECT_EQ(c.initial_velocities[0].angular_velocity, (std::array<double, 3>{0.0, 0.0, 0.0}));
+  EXPECT_EQ(c.initial_velocities[1].group, "edge");
+  EXPECT_EQ(c.initial_velocities[1].velocity, (std::array<double, 3>{0.0, 0.0, 0.0}));
+  EXPECT_EQ(c.initial_velocities[1].angular_velocity[1], 50.0);
   ASSERT_EQ(c.prescribed_velocities.size(), 1u);
   EXPECT_TRUE(c.prescribed_velocities[0].components[0]);
   EXPECT_FALSE(c.prescribed_velocities[0].components[1]);
@@ -90,6 +97,7 @@ TEST(ReadCaseLoads, ResolvedCaseRoundTrips) {
   EXPECT_EQ(b.loads[0].curve.values, a.loads[0].curve.values);
   EXPECT_EQ(b.loads[1].pressure, a.loads[1].pressure);
   EXPECT_EQ(b.initial_velocities[0].velocity, a.initial_velocities[0].velocity);
+  EXPECT_EQ(b.initial_velocities[1].angular_velocity, a.initial_velocities[1].angular_velocity);
   EXPECT_EQ(b.prescribed_velocities[0].components, a.prescribed_velocities[0].components);
   EXPECT_EQ(b.control.gravity, a.control.gravity);
   EXPECT_EQ(b.control.damping, a.control.damping);
@@ -117,6 +125,11 @@ TEST(ReadCaseLoads, ErrorsNameTheKey) {
                                     control))
                 .find("prescribed_velocity[0].components"),
             std::string::npos);
+  // Neither a velocity nor an angular velocity: the message offers both.
+  const std::string no_velocity =
+      error_of(write_case("no_velocity", "[[initial_velocity]]\ngroup = \"a\"\n" + control));
+  EXPECT_NE(no_velocity.find("initial_velocity[0].velocity"), std::string::npos) << no_velocity;
+  EXPECT_NE(no_velocity.find("angular_velocity"), std::string::npos) << no_velocity;
   EXPECT_NE(error_of(write_case("negative_damping", "[control]\nend_time = 0.01\ndamping = -1.0\n"))
                 .find("control.damping"),
             std::string::npos);
