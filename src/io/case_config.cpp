@@ -485,6 +485,37 @@ void read_loads(const TomlSection& top, std::vector<LoadConfig>& loads) {
   }
 }
 
+// An array of 3 components, each a finite number or a string holding an expression of x, y, z
+// (core/expression.hpp); absent: left as it is.
+void read_field_vector(const TomlSection& s, std::string_view key,
+                       std::array<Expression, 3>& value) {
+  const toml::node* node = s.find(key);
+  if (!node) {
+    return;
+  }
+  const toml::array* array = node->as_array();
+  if (!array || array->size() != 3) {
+    s.fail_value(key, "an array of 3 numbers or expressions of x, y, z in quotes");
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    const toml::node& component = *array->get(i);
+    if (const std::optional<double> v = number_of(component)) {
+      if (!std::isfinite(*v)) {
+        s.fail_value(key, "finite numbers");
+      }
+      value[i] = Expression::constant(*v);
+    } else if (const auto* text = component.as_string()) {
+      try {
+        value[i] = Expression::parse(text->get());
+      } catch (const InputError& e) {
+        s.fail_at(component, s.key_path(key), e.what());
+      }
+    } else {
+      s.fail_value(key, "an array of 3 numbers or expressions of x, y, z in quotes");
+    }
+  }
+}
+
 void read_initial_velocities(const TomlSection& top, std::vector<InitialVelocityConfig>& out) {
   for (const TomlSection& s : top.table_array("initial_velocity")) {
     s.check_keys({"group", "velocity", "angular_velocity"});
@@ -494,12 +525,8 @@ void read_initial_velocities(const TomlSection& top, std::vector<InitialVelocity
       s.fail_missing("velocity",
                      "an array of 3 numbers (mm/s), or angular_velocity (rad/s), or both");
     }
-    if (s.has("velocity")) {
-      read_vector(s, "velocity", iv.velocity);
-    }
-    if (s.has("angular_velocity")) {
-      read_vector(s, "angular_velocity", iv.angular_velocity);
-    }
+    read_field_vector(s, "velocity", iv.velocity);
+    read_field_vector(s, "angular_velocity", iv.angular_velocity);
     out.push_back(std::move(iv));
   }
 }

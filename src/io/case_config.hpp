@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/expression.hpp"
 #include "io/geo_parameter.hpp"
 
 namespace sf {
@@ -201,10 +202,12 @@ struct LoadConfig {
 };
 
 /// A velocity given to blank nodes at time 0 (mm/s). An empty group means every blank node.
+/// Initial velocities of a group's nodes (every node without a group). Each component is a
+/// number or an expression of the node's initial coordinates x, y, z (mm): a velocity field.
 struct InitialVelocityConfig {
   std::string group;
-  std::array<double, 3> velocity{0.0, 0.0, 0.0};          ///< mm/s, global axes
-  std::array<double, 3> angular_velocity{0.0, 0.0, 0.0};  ///< rad/s of the nodes' rotations
+  std::array<Expression, 3> velocity;          ///< mm/s, global axes
+  std::array<Expression, 3> angular_velocity;  ///< rad/s of the nodes' rotations
 };
 
 /// Velocity components held at prescribed values (mm/s) on blank nodes, scaled by a curve.

@@ -356,13 +356,24 @@ void write_load(TomlWriter& w, const LoadConfig& load) {
   }
 }
 
+// [a, b, c]: a constant component as its number, an expression as a quoted string.
+std::string format_field_vector(const std::array<Expression, 3>& v) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < 3; ++i) {
+    out += i ? ", " : "";
+    out += v[i].is_constant() ? v[i].text() : quote_toml_string(v[i].text());
+  }
+  return out + "]";
+}
+
 void write_initial_velocity(TomlWriter& w, const InitialVelocityConfig& iv) {
   w.array_header("initial_velocity");
   if (!iv.group.empty()) {
     w.string("group", iv.group);
   }
-  w.vector("velocity", iv.velocity, "mm/s");
-  w.vector("angular_velocity", iv.angular_velocity, "rad/s, of the nodes' rotations");
+  w.raw("velocity", format_field_vector(iv.velocity) + "   # mm/s");
+  w.raw("angular_velocity",
+        format_field_vector(iv.angular_velocity) + "   # rad/s, of the nodes' rotations");
 }
 
 void write_prescribed_velocity(TomlWriter& w, const PrescribedVelocityConfig& pv) {

@@ -24,15 +24,20 @@ SolutionState make_initial_state(const Model& model) {
   initialize_directors(model.blank.part, model.blank.mesh.nodes, s.shell);
   s.tools.resize(model.tools.size());
   for (const InitialVelocityConfig& iv : model.config.initial_velocities) {
-    const Vec3 velocity(iv.velocity[0], iv.velocity[1], iv.velocity[2]);
-    const Vec3 angular(iv.angular_velocity[0], iv.angular_velocity[1], iv.angular_velocity[2]);
+    const auto set = [&](int node) {
+      const Vec3 p = model.blank.mesh.nodes.col(node);  // mm, the initial coordinates
+      for (int c = 0; c < 3; ++c) {
+        s.v(c, node) = iv.velocity[c].evaluate(p(0), p(1), p(2));
+        s.omega(c, node) = iv.angular_velocity[c].evaluate(p(0), p(1), p(2));
+      }
+    };
     if (iv.group.empty()) {
-      s.v.colwise() = velocity;
-      s.omega.colwise() = angular;
+      for (int node = 0; node < static_cast<int>(n); ++node) {
+        set(node);
+      }
     } else {
       for (int node : model.blank.group(iv.group).nodes) {
-        s.v.col(node) = velocity;
-        s.omega.col(node) = angular;
+        set(node);
       }
     }
   }

@@ -159,14 +159,22 @@ void print_loads(const Model& model, const UnitSystem& units) {
              describe_scale(config, pv.curve, units));
   }
   for (const InitialVelocityConfig& iv : config.initial_velocities) {
-    const auto& w = iv.angular_velocity;
+    // A component is a number or an expression of the initial coordinates (a field).
+    const auto text = [](const std::array<Expression, 3>& v) {
+      return fmt::format("({}, {}, {})", v[0].text(), v[1].text(), v[2].text());
+    };
+    const auto zero = [](const std::array<Expression, 3>& v) {
+      return std::all_of(v.begin(), v.end(), [](const Expression& e) {
+        return e.is_constant() && e.evaluate(0.0, 0.0, 0.0) == 0.0;
+      });
+    };
     const std::string angular =
-        w[0] != 0.0 || w[1] != 0.0 || w[2] != 0.0
-            ? fmt::format(", angular velocity {} rad/{}", format_vector(w), units.time)
-            : std::string();
+        zero(iv.angular_velocity)
+            ? std::string()
+            : fmt::format(", angular velocity {} rad/{}", text(iv.angular_velocity), units.time);
     log_info("Initial     {}: velocity {} {}{}\n",
              iv.group.empty() ? std::string("every node") : fmt::format("'{}'", iv.group),
-             format_vector(iv.velocity), units.velocity(), angular);
+             text(iv.velocity), units.velocity(), angular);
   }
   const auto& g = config.control.gravity;
   if (g[0] != 0.0 || g[1] != 0.0 || g[2] != 0.0) {

@@ -53,7 +53,7 @@ pressure = 0.3
 velocity = [0.0, 0.0, -1000.0]
 [[initial_velocity]]
 group = "edge"
-angular_velocity = [0.0, 50.0, 0.0]
+angular_velocity = [0.0, 50.0, "2 * x + z"]
 [[prescribed_velocity]]
 group = "edge"
 velocity = [10.0, 0.0, 0.0]
@@ -74,11 +74,13 @@ TEST(ReadCaseLoads, ReadsEveryValue) {
   EXPECT_EQ(c.loads[1].pressure, 0.3);
   ASSERT_EQ(c.initial_velocities.size(), 2u);
   EXPECT_TRUE(c.initial_velocities[0].group.empty());
-  EXPECT_EQ(c.initial_velocities[0].velocity[2], -1000.0);
-  EXPECT_EQ(c.initial_velocities[0].angular_velocity, (std::array<double, 3>{0.0, 0.0, 0.0}));
+  const auto value = [](const sf::Expression& e) { return e.evaluate(1.0, 2.0, 3.0); };
+  EXPECT_EQ(value(c.initial_velocities[0].velocity[2]), -1000.0);
+  EXPECT_EQ(value(c.initial_velocities[0].angular_velocity[1]), 0.0);  // default
   EXPECT_EQ(c.initial_velocities[1].group, "edge");
-  EXPECT_EQ(c.initial_velocities[1].velocity, (std::array<double, 3>{0.0, 0.0, 0.0}));
-  EXPECT_EQ(c.initial_velocities[1].angular_velocity[1], 50.0);
+  EXPECT_EQ(value(c.initial_velocities[1].velocity[0]), 0.0);  // default
+  EXPECT_EQ(value(c.initial_velocities[1].angular_velocity[1]), 50.0);
+  EXPECT_EQ(value(c.initial_velocities[1].angular_velocity[2]), 2.0 * 1.0 + 3.0);  // 2 x + z
   ASSERT_EQ(c.prescribed_velocities.size(), 1u);
   EXPECT_TRUE(c.prescribed_velocities[0].components[0]);
   EXPECT_FALSE(c.prescribed_velocities[0].components[1]);
@@ -96,8 +98,14 @@ TEST(ReadCaseLoads, ResolvedCaseRoundTrips) {
   EXPECT_EQ(b.loads[0].value, a.loads[0].value);
   EXPECT_EQ(b.loads[0].curve.values, a.loads[0].curve.values);
   EXPECT_EQ(b.loads[1].pressure, a.loads[1].pressure);
-  EXPECT_EQ(b.initial_velocities[0].velocity, a.initial_velocities[0].velocity);
-  EXPECT_EQ(b.initial_velocities[1].angular_velocity, a.initial_velocities[1].angular_velocity);
+  for (std::size_t k = 0; k < 2; ++k) {
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_EQ(b.initial_velocities[k].velocity[c].text(),
+                a.initial_velocities[k].velocity[c].text());
+      EXPECT_EQ(b.initial_velocities[k].angular_velocity[c].text(),
+                a.initial_velocities[k].angular_velocity[c].text());
+    }
+  }
   EXPECT_EQ(b.prescribed_velocities[0].components, a.prescribed_velocities[0].components);
   EXPECT_EQ(b.control.gravity, a.control.gravity);
   EXPECT_EQ(b.control.damping, a.control.damping);
@@ -125,6 +133,12 @@ TEST(ReadCaseLoads, ErrorsNameTheKey) {
                                     control))
                 .find("prescribed_velocity[0].components"),
             std::string::npos);
+  // An expression that does not parse: the key, the character and what was expected.
+  const std::string bad_expression = error_of(write_case(
+      "bad_expression", "[[initial_velocity]]\nvelocity = [0, 0, \"sin(x\"]\n" + control));
+  EXPECT_NE(bad_expression.find("initial_velocity[0].velocity"), std::string::npos)
+      << bad_expression;
+  EXPECT_NE(bad_expression.find("expected ')'"), std::string::npos) << bad_expression;
   // Neither a velocity nor an angular velocity: the message offers both.
   const std::string no_velocity =
       error_of(write_case("no_velocity", "[[initial_velocity]]\ngroup = \"a\"\n" + control));

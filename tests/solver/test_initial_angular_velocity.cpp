@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
+#include <string>
 
 #include "case_fixture.hpp"
 
@@ -74,6 +76,41 @@ TEST(InitialAngularVelocity, KineticEnergyAndBalanceIncludeTheRotations) {
       e0, max_internal, max_invariant, state.cycle);
   EXPECT_GT(max_internal, 0.1 * e0);  // the spin does deform the plate
   EXPECT_LT(max_invariant, 1e-10);    // round-off over the cycles
+}
+
+}  // namespace
+
+namespace {
+
+// A velocity field: the first plate mode w' = V sin(pi x / L) sin(pi y / L) with the matching
+// rotational velocities (theta_x' = dw'/dy, theta_y' = -dw'/dx), each node given the field's
+// value at its initial coordinates, exactly as the library evaluates the same formula.
+TEST(InitialVelocityField, EveryNodeTakesTheFieldAtItsCoordinates) {
+  const std::string geo_case = std::string(kCase).replace(
+      std::string(kCase).find("[[initial_velocity]]"), std::string::npos,
+      "[[initial_velocity]]\n"
+      "velocity = [0, 0, \"2e4 * sin(pi * x / 10) * sin(pi * y / 10)\"]\n"
+      "angular_velocity = [\"2e4 * pi / 10 * sin(pi * x / 10) * cos(pi * y / 10)\",\n"
+      "                    \"-2e4 * pi / 10 * cos(pi * x / 10) * sin(pi * y / 10)\", 0]\n"
+      "[control]\nend_time = 2.0e-4\n");
+  sf::Model model = sf::build_model(sf::test::write_case("initial_velocity_field", kGeo, geo_case));
+  const sf::SolutionState state = sf::make_initial_state(model);
+  const std::vector<int>& left = model.blank.group("left").nodes;
+  const double pi = std::numbers::pi;
+  double kinetic = 0.0;
+  for (Eigen::Index i = 0; i < state.v.cols(); ++i) {
+    const double x = model.blank.mesh.nodes(0, i), y = model.blank.mesh.nodes(1, i);
+    const double w = 2e4 * std::sin(pi * x / 10) * std::sin(pi * y / 10);
+    const double rx = 2e4 * pi / 10 * std::sin(pi * x / 10) * std::cos(pi * y / 10);
+    const double ry = -2e4 * pi / 10 * std::cos(pi * x / 10) * std::sin(pi * y / 10);
+    const bool held = std::find(left.begin(), left.end(), static_cast<int>(i)) != left.end();
+    EXPECT_EQ(state.v(2, i), w) << "node " << i;
+    EXPECT_EQ(state.omega(0, i), held ? 0.0 : rx) << "node " << i;  // rx held on the left edge
+    EXPECT_EQ(state.omega(1, i), ry) << "node " << i;
+    kinetic += 0.5 * model.blank.mass[i] * w * w +
+               0.5 * model.blank.rotational_inertia[i] * ((held ? 0.0 : rx * rx) + ry * ry);
+  }
+  EXPECT_NEAR(state.energies.initial_kinetic / kinetic, 1.0, 1e-14);
 }
 
 }  // namespace
