@@ -201,7 +201,6 @@ struct LoadConfig {
   CurveConfig curve;      ///< scale factor against time; empty = 1
 };
 
-/// A velocity given to blank nodes at time 0 (mm/s). An empty group means every blank node.
 /// Initial velocities of a group's nodes (every node without a group). Each component is a
 /// number or an expression of the node's initial coordinates x, y, z (mm): a velocity field.
 struct InitialVelocityConfig {

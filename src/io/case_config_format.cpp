@@ -31,7 +31,9 @@ class TomlWriter {
   void integer(std::string_view key, long long value, std::string_view unit = {}) {
     entry(key, fmt::format("{}", value), unit);
   }
-  void raw(std::string_view key, std::string_view value) { entry(key, value, {}); }
+  void raw(std::string_view key, std::string_view value, std::string_view unit = {}) {
+    entry(key, value, unit);
+  }
   void boolean(std::string_view key, bool value) { entry(key, value ? "true" : "false", {}); }
   void vector(std::string_view key, const std::array<double, 3>& v,
               std::string_view unit = "unit vector") {
@@ -361,7 +363,8 @@ std::string format_field_vector(const std::array<Expression, 3>& v) {
   std::string out = "[";
   for (std::size_t i = 0; i < 3; ++i) {
     out += i ? ", " : "";
-    out += v[i].is_constant() ? v[i].text() : quote_toml_string(v[i].text());
+    out += v[i].is_constant() ? format_toml_number(v[i].evaluate(0.0, 0.0, 0.0))
+                              : quote_toml_string(v[i].text());
   }
   return out + "]";
 }
@@ -371,9 +374,9 @@ void write_initial_velocity(TomlWriter& w, const InitialVelocityConfig& iv) {
   if (!iv.group.empty()) {
     w.string("group", iv.group);
   }
-  w.raw("velocity", format_field_vector(iv.velocity) + "   # mm/s");
-  w.raw("angular_velocity",
-        format_field_vector(iv.angular_velocity) + "   # rad/s, of the nodes' rotations");
+  w.raw("velocity", format_field_vector(iv.velocity), "mm/s");
+  w.raw("angular_velocity", format_field_vector(iv.angular_velocity),
+        "rad/s, of the nodes' rotations");
 }
 
 void write_prescribed_velocity(TomlWriter& w, const PrescribedVelocityConfig& pv) {

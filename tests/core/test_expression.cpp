@@ -40,9 +40,9 @@ TEST(Expression, ArithmeticFollowsTheUsualPrecedence) {
 
 TEST(Expression, FunctionsAndPiMatchTheLibrary) {
   const double x = 37.0, y = 12.5;
-  EXPECT_EQ(eval("20000 * sin(pi * x / 100) * sin(pi * y / 100)", x, y),
-            20000.0 * std::sin(std::numbers::pi * x / 100.0) *
-                std::sin(std::numbers::pi * y / 100.0));
+  EXPECT_EQ(
+      eval("20000 * sin(pi * x / 100) * sin(pi * y / 100)", x, y),
+      20000.0 * std::sin(std::numbers::pi * x / 100.0) * std::sin(std::numbers::pi * y / 100.0));
   EXPECT_EQ(eval("sqrt(abs(-16)) + exp(0) + log(1) + cos(0) + tan(0)"), 6.0);
   EXPECT_EQ(eval("atan(1) * 4"), std::atan(1.0) * 4.0);
   EXPECT_EQ(eval("asin(1) + acos(1)"), std::asin(1.0));
