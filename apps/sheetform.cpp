@@ -79,29 +79,35 @@ fs::path output_directory(const Arguments& args, const sf::CaseConfig& config) {
   return config.file.parent_path() / config.output.directory;
 }
 
-sf::Model load(const Arguments& args) {
+// A case read and the model built from it.
+struct LoadedCase {
+  sf::CaseConfig config;
+  sf::Model model;
+};
+
+LoadedCase load(const Arguments& args) {
   // 1. Read and validate the case file.
   sf::CaseConfig config = sf::read_case(args.case_file, args.set);
   apply_overrides(args, config);
   // 2. Mesh every part and build the model.
-  return sf::build_model(config);
+  sf::Model model = sf::build_model(config);
+  return {std::move(config), std::move(model)};
 }
 
 int run(const Arguments& args) {
-  sf::Model model = load(args);
-  sf::print_model(model);
+  LoadedCase loaded = load(args);
+  sf::Model& model = loaded.model;
+  sf::print_model(loaded.config, model);
   // 3. Prepare the results folder and keep the resolved case beside the results.
-  const fs::path out = output_directory(args, model.config);
+  const fs::path out = output_directory(args, loaded.config);
   fs::create_directories(out);
-  std::ofstream(out / "case.resolved.toml") << sf::format_resolved_case(model.config);
+  std::ofstream(out / "case.resolved.toml") << model.output.resolved_case;
   sf::log_info("Results     {}\n\n", out.string());
   // 4. Run the explicit time loop (and springback when the case asks), or the static analysis.
   sf::RunOptions options;
   options.output_directory = out;
-  const sf::RunSummary summary =
-      model.config.analysis.type == sf::AnalysisConfig::Type::static_equilibrium
-          ? sf::run_static(model, options)
-          : sf::run_explicit(model, options);
+  const sf::RunSummary summary = model.analysis.is_static() ? sf::run_static(model, options)
+                                                            : sf::run_explicit(model, options);
   // 5. Report.
   sf::write_run_summary_json(summary, out / "summary.json");
   sf::log_info("\n{}", sf::format_run_summary(summary));
@@ -112,16 +118,17 @@ int run(const Arguments& args) {
 }
 
 int check(const Arguments& args) {
-  const sf::Model model = load(args);
-  sf::print_model(model);
+  const LoadedCase loaded = load(args);
+  sf::print_model(loaded.config, loaded.model);
   sf::log_info("Case is valid.\n");
   return sf::exit_ok;
 }
 
 int mesh(const Arguments& args) {
-  sf::Model model = load(args);
-  sf::print_model(model);
-  const fs::path out = output_directory(args, model.config);
+  const LoadedCase loaded = load(args);
+  const sf::Model& model = loaded.model;
+  sf::print_model(loaded.config, model);
+  const fs::path out = output_directory(args, loaded.config);
   fs::create_directories(out);
   sf::FrameOutput output(model, out);
   sf::SolutionState state = sf::make_initial_state(model);
@@ -129,7 +136,7 @@ int mesh(const Arguments& args) {
   output.flush();
   // Each part meshed from a .geo is also written as the .msh it made (gmsh ASCII 4.1), so a case
   // folder can keep its meshes beside their .geo files (scripts/update_case_meshes.sh).
-  const sf::CaseConfig& c = model.config;
+  const sf::CaseConfig& c = loaded.config;
   auto write_msh_of = [&out](const std::string& part, const sf::MeshSourceConfig& mesh,
                              bool recombine) {
     if (mesh.file.extension() == ".geo") {

@@ -218,6 +218,23 @@ LoadCurve make_scale_curve(const CurveConfig& curve) {
   return curve.times.empty() ? LoadCurve({0.0}, {1.0}) : LoadCurve(curve.times, curve.values);
 }
 
+// A static analysis: a load without a curve ramps from zero at time 0 to its value at end_time (in
+// an explicit run it would be constant), and so does gravity: the static step follows the load
+// from the unloaded state.
+void ramp_loads_without_curves(const CaseConfig& config, double end_time, ExternalLoads& loads) {
+  const LoadCurve ramp({0.0, end_time}, {0.0, 1.0});
+  std::size_t nodal = 0;
+  std::size_t pressure = 0;
+  for (const LoadConfig& lc : config.loads) {  // the loads are in the case's order
+    LoadCurve& scale = lc.type == LoadConfig::Type::pressure ? loads.pressures.at(pressure++).scale
+                                                             : loads.nodal.at(nodal++).scale;
+    if (lc.curve.times.empty()) {
+      scale = ramp;
+    }
+  }
+  loads.gravity_scale = ramp;
+}
+
 void set_up_loads(const CaseConfig& config, Model& model) {
   ExternalLoads& loads = model.loads;
   const Blank& blank = model.blank;
@@ -264,6 +281,9 @@ void set_up_loads(const CaseConfig& config, Model& model) {
   loads.gravity =
       Vec3(config.control.gravity[0], config.control.gravity[1], config.control.gravity[2]);
   loads.damping = config.control.damping;
+  if (config.analysis.type == AnalysisConfig::Type::static_equilibrium) {
+    ramp_loads_without_curves(config, model.time.end_time, loads);
+  }
 }
 
 // Selective mass scaling (docs/time-integration.md): every element whose stable step is below
@@ -287,14 +307,16 @@ void set_mass_and_time_step(const CaseConfig& config, Model& model, const ShellS
         config.file.string(), control.mass_scaling_dt,
         100.0 * blank.scaling.added_mass / blank.physical_mass, 100.0 * limit));
   }
-  model.time_step = step.dt;
-  model.limiting_element = step.element;
+  model.time.time_step = step.dt;
+  model.time.limiting_element = step.element;
 }
 
 void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& state) {
   const MaterialConfig& material = config.blank_material();
   for (const ContactConfig& cc : config.contacts) {
     ContactInterface contact;
+    contact.search = cc.search;
+    contact.audit = cc.audit;
     const auto found = std::find_if(model.tools.begin(), model.tools.end(),
                                     [&](const Tool& t) { return t.name == cc.tool; });
     contact.tool = static_cast<int>(found - model.tools.begin());
@@ -318,7 +340,7 @@ void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& s
       contact.pair.stiffness =
           VectorX::Constant(model.blank.mesh.nodes.cols(), cc.penalty_stiffness);
       const int capped = cap_penalty_stiffness(contact.pair.stiffness, model.blank.mass,
-                                               model.time_step, contact_cap_factor);
+                                               model.time.time_step, contact_cap_factor);
       if (capped > 0) {
         log_info(
             "contact with tool '{}': penalty_stiffness = {} N/mm lowered at {} of {} blank nodes "
@@ -328,8 +350,8 @@ void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& s
     } else {
       contact.pair.stiffness = compute_penalty_stiffness(
           model.blank.mesh.nodes, model.blank.mesh.quads, model.blank.mesh.triangles,
-          model.blank.mass, material.young, material.poisson, cc.penalty_scale, model.time_step,
-          contact_cap_factor);
+          model.blank.mass, material.young, material.poisson, cc.penalty_scale,
+          model.time.time_step, contact_cap_factor);
     }
     contact.pair.projection = cc.projection == ContactConfig::Projection::interpolated
                                   ? ContactProjection::interpolated
@@ -353,7 +375,7 @@ void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& s
 // (w_c / dt)^2 sum m. The damping must keep c dt < 1 at the initial step (the explicit update is
 // stable for c dt < 2: a factor 2 of margin for the step to grow in the run).
 void set_up_force_controlled_tools(const CaseConfig& config, Model& model) {
-  const double dt = model.time_step;
+  const double dt = model.time.time_step;
   const double safety = config.control.time_step_safety;
   const double w_c = std::sqrt(std::max(4.0 - 4.0 * safety * safety, 0.0));
   const double default_mass = model.blank.mass.sum();
@@ -392,8 +414,6 @@ void set_up_force_controlled_tools(const CaseConfig& config, Model& model) {
     model.tools[t].force_control = ForceControlledTool(
         Vec3(d[0], d[1], d[2]), LoadCurve(tc.motion.curve.times, tc.motion.curve.values), mass,
         tc.motion.damping);
-    // The resolved case (written from model.config) holds the mass used.
-    model.config.tools[t].motion.mass = mass;
   }
 }
 
@@ -402,12 +422,12 @@ void set_end_time(const CaseConfig& config, Model& model) {
   if (!control.stroke_tool.empty()) {
     for (std::size_t i = 0; i < model.tools.size(); ++i) {
       if (model.tools[i].name == control.stroke_tool) {
-        model.stroke_tool = static_cast<int>(i);
+        model.time.stroke_tool = static_cast<int>(i);
       }
     }
   }
   if (control.stroke > 0.0) {
-    const Tool& tool = model.tools[static_cast<std::size_t>(model.stroke_tool)];
+    const Tool& tool = model.tools[static_cast<std::size_t>(model.time.stroke_tool)];
     if (tool.force_control) {
       // read_case refuses it too; a configuration made in code may not have been read.
       throw InputError(fmt::format(
@@ -415,10 +435,61 @@ void set_end_time(const CaseConfig& config, Model& model) {
           "force), so it cannot define the stroke",
           config.file.string(), tool.name));
     }
-    model.end_time = tool.motion.time_at_travel(control.stroke, tool.name);
+    model.time.end_time = tool.motion.time_at_travel(control.stroke, tool.name);
   } else {
-    model.end_time = control.end_time;
+    model.time.end_time = control.end_time;
   }
+}
+
+std::vector<ReactionEntry> make_reaction_entries(const CaseConfig& config) {
+  std::vector<ReactionEntry> out;
+  for (std::size_t i = 0; i < config.boundaries.size(); ++i) {
+    const BoundaryConfig& b = config.boundaries[i];
+    ReactionEntry r{fmt::format("boundary[{}]", i), b.group, std::nullopt, -1};
+    if (b.normal) {
+      r.axes = make_plane_frame(Vec3((*b.normal)[0], (*b.normal)[1], (*b.normal)[2]));
+    } else if (b.axes) {
+      r.axes = make_frame(*b.axes);
+    }
+    out.push_back(std::move(r));
+  }
+  for (std::size_t i = 0; i < config.prescribed_velocities.size(); ++i) {
+    out.push_back({fmt::format("prescribed_velocity[{}]", i), config.prescribed_velocities[i].group,
+                   std::nullopt, -1});
+  }
+  for (std::size_t i = 0; i < config.prescribed_motions.size(); ++i) {
+    const PrescribedMotionConfig& pm = config.prescribed_motions[i];
+    ReactionEntry r{fmt::format("prescribed_motion[{}]", i), pm.group, std::nullopt, pm.dof};
+    if (pm.axes) {
+      r.axes = make_frame(*pm.axes);
+    }
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+// The parts of the model that are the case's settings as they are.
+void copy_plans(const CaseConfig& config, Model& model) {
+  model.case_file = config.file;
+  model.initial.integration_points = config.blank.integration_points;
+  model.initial.thickness = config.blank.thickness;
+  model.initial.velocities = config.initial_velocities;
+  TimeControl& time = model.time;
+  time.progress_interval = config.control.progress_interval;
+  time.energy_blowup_ratio = config.control.energy_blowup_ratio;
+  time.mass_scaling_max_added = config.control.mass_scaling_max_added;
+  OutputPlan& output = model.output;
+  output.frames = config.control.output_frames;
+  output.history_interval = config.control.history_interval;
+  output.stress_layers = config.output.stress_layers;
+  output.units = config.units;
+  output.draw_ins = config.draw_ins;
+  output.history_groups = config.history_groups;
+  output.reactions = make_reaction_entries(config);
+  model.analysis.type = config.analysis.type;
+  model.analysis.linear = config.analysis.linear;
+  model.analysis.implicit = config.implicit;
+  model.springback = config.springback;
 }
 
 }  // namespace
@@ -432,9 +503,19 @@ const NodeGroup& Blank::group(const std::string& name) const {
   throw std::logic_error("node group '" + name + "' was not read by build_model");
 }
 
+CaseConfig resolve_case(const CaseConfig& config, const Model& model) {
+  CaseConfig resolved = config;
+  for (std::size_t t = 0; t < model.tools.size() && t < resolved.tools.size(); ++t) {
+    if (model.tools[t].force_control) {
+      resolved.tools[t].motion.mass = model.tools[t].force_control->mass();  // tonne
+    }
+  }
+  return resolved;
+}
+
 Model build_model(const CaseConfig& config) {
   Model model;
-  model.config = config;
+  copy_plans(config, model);
   read_blank(config, model);
   read_tools(config, model);
   const ShellState state = make_shell_state(
@@ -443,12 +524,13 @@ Model build_model(const CaseConfig& config) {
   set_up_contacts(config, model, state);
   set_up_force_controlled_tools(config, model);
   set_end_time(config, model);
-  assemble_constraints(config, model.blank, model.end_time, model);
+  assemble_constraints(config, model.blank, model.time.end_time, model);
   set_up_loads(config, model);
   // The contact pairs point at the tools' surfaces: the tools vector must not move again.
   for (ContactInterface& c : model.contacts) {
     c.pair.surface = &model.tools[static_cast<std::size_t>(c.tool)].surface;
   }
+  model.output.resolved_case = format_resolved_case(resolve_case(config, model));
   return model;
 }
 

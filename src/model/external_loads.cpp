@@ -2,8 +2,23 @@
 
 namespace sf {
 
+namespace {
+
+void add_nodal_loads(std::span<const NodalLoad> loads, double time, Matrix3X& f_ext,
+                     Matrix3X& m_ext) {
+  for (const NodalLoad& load : loads) {
+    const Vec3 value = load.scale.value(time) * load.value;
+    Matrix3X& target = load.moment ? m_ext : f_ext;
+    for (int node : load.nodes) {
+      target.col(node) += value;
+    }
+  }
+}
+
+}  // namespace
+
 void compute_external_forces(const Model& model, double time, const Matrix3X& x, Matrix3X& f_ext,
-                             Matrix3X& m_ext) {
+                             Matrix3X& m_ext, std::span<const NodalLoad> released) {
   const ExternalLoads& loads = model.loads;
   f_ext.setZero();
   m_ext.setZero();
@@ -14,13 +29,8 @@ void compute_external_forces(const Model& model, double time, const Matrix3X& x,
       f_ext.col(i) = model.blank.physical_nodal_mass[i] * g;
     }
   }
-  for (const NodalLoad& load : loads.nodal) {
-    const Vec3 value = load.scale.value(time) * load.value;
-    Matrix3X& target = load.moment ? m_ext : f_ext;
-    for (int node : load.nodes) {
-      target.col(node) += value;
-    }
-  }
+  add_nodal_loads(loads.nodal, time, f_ext, m_ext);
+  add_nodal_loads(released, time, f_ext, m_ext);
   const ShellPart& part = model.blank.part;
   const Eigen::Index n_quads = part.quads.cols();
   for (const PressureLoad& load : loads.pressures) {

@@ -2,14 +2,16 @@
 // The applied loads on the blank (gravity, nodal forces and moments, pressures following the
 // deforming surface) at a time and configuration: shared by the explicit loop and the static
 // analysis (which runs its load curves over a pseudo-time).
+#include <span>
+
 #include "model/model.hpp"
 
 namespace sf {
 
 /// Sets f_ext (N) and m_ext (N mm), 3 x nodes, to the model's loads at `time` (s) on the
-/// coordinates x (mm).
+/// coordinates x (mm), and the `released` nodal loads (summed after the model's nodal loads).
 void compute_external_forces(const Model& model, double time, const Matrix3X& x, Matrix3X& f_ext,
-                             Matrix3X& m_ext);
+                             Matrix3X& m_ext, std::span<const NodalLoad> released = {});
 
 /// The vector area (mm^2) of blank element e (quads, then triangles, as in ShellPart) on the
 /// coordinates x: along the element's normal, which points to its top side (the +normal side a

@@ -1,6 +1,8 @@
 #pragma once
-// The model: everything the time loop needs, built once from the case and the meshes by
-// build_model (the one place that sees both).
+// The model: everything the run needs, built once from the case and the meshes by build_model (the
+// one place that sees both), in typed parts; const during the run (what changes lives in the run
+// state, SolutionState). It keeps no copy of the case.
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -22,10 +24,12 @@ namespace sf {
 struct Blank {
   PartMesh mesh;
   ShellPart part;
-  VectorX mass;                   ///< tonne per node (after any mass scaling; grows in the run)
-  VectorX rotational_inertia;     ///< tonne mm^2 per node (likewise)
+  /// tonne per node at time 0, after the initial mass scaling (the run's masses, which grow under
+  /// mass scaling, are SolutionState::mass)
+  VectorX mass;
+  VectorX rotational_inertia;     ///< tonne mm^2 per node at time 0 (likewise)
   double physical_mass = 0.0;     ///< tonne, before mass scaling
-  MassScaling scaling;            ///< per-element density factors and the added mass
+  MassScaling scaling;            ///< at time 0: per-element density factors and the added mass
   VectorX inverse_element_count;  ///< per node, 1 / (elements sharing it), for nodal averages
   VectorX physical_nodal_mass;    ///< tonne per node before mass scaling (for gravity)
   std::vector<NodeGroup> groups;  ///< every node group the case names, each once
@@ -97,22 +101,73 @@ struct Tool {
 
 /// A contact pair between all blank nodes and one tool's triangles.
 struct ContactInterface {
-  int tool = -1;  ///< index into Model::tools
+  int tool = -1;       ///< index into Model::tools
+  std::string search;  ///< the search's name ("standard", "modified", "cached")
+  bool audit = false;  ///< the output counts, per frame, the nodes where the search is not exact
   ContactPair pair;
 };
 
+/// How the run steps and when it ends.
+struct TimeControl {
+  double end_time = 0.0;      ///< s, from control.end_time or the stroke
+  int stroke_tool = -1;       ///< index of the tool whose travel is the stroke, or -1
+  double time_step = 0.0;     ///< s, the initial stable step with the safety factor (after scaling)
+  int limiting_element = -1;  ///< the element limiting time_step
+  int progress_interval = 0;  ///< cycles between progress lines; 0 = about every 2 s of wall time
+  double energy_blowup_ratio = 10.0;  ///< stop when total energy exceeds this x external work (+1)
+  /// -, largest added mass as a fraction of the physical mass; the run stops beyond it; 0 = none
+  double mass_scaling_max_added = 0.0;
+};
+
+/// A constraint entry of the case ([[boundary]], [[prescribed_velocity]], [[prescribed_motion]])
+/// whose total reaction the summary reports.
+struct ReactionEntry {
+  std::string entry;         ///< e.g. "boundary[0]", "prescribed_motion[1]"
+  std::string group;         ///< its node group
+  std::optional<Mat3> axes;  ///< the entry's own axes (columns), when it has them
+  int dof = -1;              ///< a [[prescribed_motion]]'s degree of freedom (0..5), else -1
+};
+
+/// What the run writes, and when.
+struct OutputPlan {
+  int frames = 20;             ///< frames at evenly spaced times after the initial one
+  int history_interval = 100;  ///< cycles between history rows (explicit)
+  bool stress_layers = true;   ///< mid, top and bottom stress per element
+  std::string units;           ///< the case's unit system ("mm-s-tonne-N-MPa")
+  std::vector<DrawInConfig> draw_ins;
+  std::vector<HistoryGroupConfig> history_groups;
+  std::vector<ReactionEntry> reactions;  ///< in the case's order: boundaries, velocities, motions
+  std::string resolved_case;  ///< the resolved case as TOML (kept in results.h5 and beside it)
+};
+
+/// The blank's state at time 0 besides its mesh.
+struct InitialConditions {
+  int integration_points = 5;                     ///< through the thickness
+  double thickness = 0.0;                         ///< mm
+  std::vector<InitialVelocityConfig> velocities;  ///< in the case's order
+};
+
+/// What the case runs, and how the implicit steps solve.
+struct AnalysisPlan {
+  AnalysisConfig::Type type = AnalysisConfig::Type::explicit_dynamic;
+  bool linear = false;  ///< static: one linear solve
+  ImplicitConfig implicit;
+  bool is_static() const { return type == AnalysisConfig::Type::static_equilibrium; }
+};
+
 struct Model {
-  CaseConfig config;
+  std::filesystem::path case_file;  ///< absolute; names the case in messages
   Blank blank;
   std::vector<Tool> tools;
   std::vector<ContactInterface> contacts;
   NodalConstraints constraints;  ///< held and prescribed degrees of freedom, node frames
   std::vector<PrescribedMotion> prescribed_motions;  ///< what drives the prescribed ones
   ExternalLoads loads;
-  double end_time = 0.0;      ///< s, from control.end_time or the stroke
-  int stroke_tool = -1;       ///< index of the tool whose travel is the stroke, or -1
-  double time_step = 0.0;     ///< s, the initial stable step with the safety factor (after scaling)
-  int limiting_element = -1;  ///< the element limiting time_step
+  InitialConditions initial;
+  TimeControl time;
+  OutputPlan output;
+  AnalysisPlan analysis;
+  std::optional<SpringbackConfig> springback;  ///< the springback plan, when the case asks
 };
 
 }  // namespace sf

@@ -89,8 +89,7 @@ double reset_velocities(const Model& model, SolutionState& s) {
     constraints.zero_components(static_cast<int>(i), ~prescribed & 0x3fu, v, omega);
     s.v.col(i) = v;
     s.omega.col(i) = omega;
-    after += 0.5 * (model.blank.mass[i] * v.squaredNorm() +
-                    model.blank.rotational_inertia[i] * omega.squaredNorm());
+    after += 0.5 * (s.mass[i] * v.squaredNorm() + s.rotational_inertia[i] * omega.squaredNorm());
   }
   const double removed = before - after;
   s.energies.kinetic = after;
@@ -135,7 +134,7 @@ FrozenLoads freeze_tool_forces(Model& model, SolutionState& s, double release_ti
       load.value = value;
       load.moment = moment;
       load.scale = release;
-      model.loads.nodal.push_back(std::move(load));
+      s.released_loads.push_back(std::move(load));
     }
     if (!f.isZero(0.0) || !m.isZero(0.0)) {
       ++frozen.nodes;
@@ -150,41 +149,25 @@ FrozenLoads freeze_tool_forces(Model& model, SolutionState& s, double release_ti
   return frozen;
 }
 
-/// Switches the contact off. The contact pairs are removed, except when the output audits one of
-/// them (its recorder addresses Model::contacts by index): then every pair stays but exerts no
-/// force (zero penalty stiffness, no friction); its search still runs.
-void switch_contact_off(Model& model, const FrameOutput* output) {
-  if (output && !output->search_audits().empty()) {
-    for (ContactInterface& c : model.contacts) {
-      c.pair.stiffness.setZero();
-      c.pair.friction = FrictionParameters{};
-      c.pair.stick_force.setZero();
-    }
-    return;
-  }
-  model.contacts.clear();
+/// Switches the contact off for the rest of the run (no contact forces, no searches; the search
+/// audits, if any, stop with it).
+void switch_contact_off(SolutionState& s) {
+  s.contact_off = true;
 }
 
 /// Holds every tool where it is for the rest of the run (a displacement curve held at its present
 /// travel): a force-controlled tool becomes a fixed one and its kinetic energy, taken out with its
 /// velocity, is counted in energies.damping. Returns that energy (N mm).
-double hold_tools(Model& model, SolutionState& s) {
+double hold_tools(const Model& model, SolutionState& s) {
   double removed = 0.0;
   for (std::size_t t = 0; t < model.tools.size(); ++t) {
-    Tool& tool = model.tools[t];
+    const Tool& tool = model.tools[t];
     ToolState& state = s.tools[t];
-    const Vec3 direction = tool.direction();
-    if (tool.force_control) {
+    if (tool.force_control && !state.held) {
       removed += 0.5 * tool.force_control->mass() * state.speed * state.speed;
-      tool.force_control.reset();
     }
-    MotionConfig held;
-    held.type = MotionConfig::Type::displacement;
-    held.direction = {direction[0], direction[1], direction[2]};
-    held.curve.times = {0.0};
-    held.curve.values = {state.travel};
-    tool.motion = RigidToolMotion(held);
-    state.displacement = tool.motion.displacement(s.time);
+    state.held = true;
+    state.displacement = state.travel * tool.direction();
     state.previous_displacement = state.displacement;
     state.speed = 0.0;
     state.velocity = 0.0;
@@ -321,7 +304,7 @@ class RelaxationProgress {
                                   : fmt::format("D{:>6.1f}%", 100.0 * relax_fraction);
     log_info("{:>9} {:>12.5e} {:>8} {:>11.3e} {:>9.2e} {:>9.1e} {:>7.2f}% {:>7}\n", s.cycle, s.time,
              phase, s.stable_dt, kinetic_ratio, s.energies.balance_error(),
-             100.0 * model.blank.scaling.added_mass / model.blank.physical_mass, resets);
+             100.0 * s.scaling.added_mass / model.blank.physical_mass, resets);
   }
 
  private:
@@ -345,7 +328,6 @@ DynamicRelaxationResult run_dynamic_relaxation(Model& model, SolutionState& stat
         fmt::format("springback by dynamic relaxation: kinetic_tolerance must be > 0 (got {})",
                     config.kinetic_tolerance));
   }
-  const ControlConfig& control = model.config.control;
   const double t0 = s.time;
   const double release_time = config.release_time;
   const double max_time = config.max_time > 0.0 ? config.max_time : 10.0 * release_time;
@@ -364,7 +346,7 @@ DynamicRelaxationResult run_dynamic_relaxation(Model& model, SolutionState& stat
   // the run goes on from its present motion.
   const Matrix3X contact_force = s.f_contact;
   const bool formed = !contact_force.isZero(0.0);
-  switch_contact_off(model, output);
+  switch_contact_off(s);
   result.damping_energy += hold_tools(model, s);
   FrozenLoads frozen;
   if (formed) {
@@ -378,7 +360,7 @@ DynamicRelaxationResult run_dynamic_relaxation(Model& model, SolutionState& stat
   const Energies& e = s.energies;
   const double entry_internal = e.internal + e.hourglass;
   const double energy_scale = std::max(0.0, e.total());
-  const double initial_dt = model.time_step;
+  const double initial_dt = model.time.time_step;
 
   log_info(
       "springback by dynamic relaxation from t = {:.6e} s: the formed state's static internal "
@@ -389,13 +371,13 @@ DynamicRelaxationResult run_dynamic_relaxation(Model& model, SolutionState& stat
       config.kinetic_tolerance, max_time);
 
   // Frames: release_frames evenly over the release, one at the end.
-  const int release_frames = std::max(2, control.output_frames / 4);
+  const int release_frames = std::max(2, model.output.frames / 4);
   const double frame_interval = release_time / release_frames;
   int frames_done = 0;
   double next_frame_time = t0 + frame_interval;
   double last_frame_time = t0;
 
-  RelaxationProgress progress(control.progress_interval);
+  RelaxationProgress progress(model.time.progress_interval);
   KineticDamping damping(config.kinetic_tolerance, entry_internal, t0, e.kinetic);
   double dt_previous = s.dt;  // the last forming step (0 from a fresh state: v(0) then)
   bool restart = formed;      // the last step ended with a reset (a formed part starts at rest)
@@ -439,7 +421,7 @@ DynamicRelaxationResult run_dynamic_relaxation(Model& model, SolutionState& stat
       result.at_rest = outcome == KineticDamping::Outcome::at_rest;
 
       const bool frame_due = releasing && s.time >= next_frame_time * (1.0 - 1e-12);
-      if (output && (s.cycle % control.history_interval == 0 || frame_due)) {
+      if (output && (s.cycle % model.output.history_interval == 0 || frame_due)) {
         output->append_history(model, s);
       }
       if (frame_due) {

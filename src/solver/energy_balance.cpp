@@ -13,8 +13,8 @@ double kinetic_energy(const Model& model, const SolutionState& s) {
   double e = 0.0;
   const Eigen::Index n = s.v.cols();
   for (Eigen::Index i = 0; i < n; ++i) {
-    e += model.blank.mass[i] * s.v.col(i).squaredNorm() +
-         model.blank.rotational_inertia[i] * s.omega.col(i).squaredNorm();
+    e += s.mass[i] * s.v.col(i).squaredNorm() +
+         s.rotational_inertia[i] * s.omega.col(i).squaredNorm();
   }
   return 0.5 * e;
 }
@@ -58,8 +58,8 @@ KineticEnergy whole_step_kinetic_energy(const Model& model, const SolutionState&
   const Eigen::Index n = s.v.cols();
   Vec3 u, u_omega;
   for (Eigen::Index i = 0; i < n; ++i) {
-    const double m = model.blank.mass[i];
-    const double j = model.blank.rotational_inertia[i];
+    const double m = s.mass[i];
+    const double j = s.rotational_inertia[i];
     half_kick_rate(model, s, i, m, j, u, u_omega);
     e.kinetic +=
         m * (s.v.col(i) + h * u).squaredNorm() + j * (s.omega.col(i) + h * u_omega).squaredNorm();
@@ -101,8 +101,8 @@ void account_step_energies(const Model& model, SolutionState& s,
     load_work += 0.5 * dt *
                  ((s.f_ext.col(i) + s.f_ext_previous.col(i)).dot(s.v.col(i)) +
                   (s.m_ext.col(i) + s.m_ext_previous.col(i)).dot(s.omega.col(i)));
-    damping_power += model.blank.mass[i] * s.v.col(i).squaredNorm() +
-                     model.blank.rotational_inertia[i] * s.omega.col(i).squaredNorm();
+    damping_power += s.mass[i] * s.v.col(i).squaredNorm() +
+                     s.rotational_inertia[i] * s.omega.col(i).squaredNorm();
   }
   e.external_work += load_work + prescribed_work;
   e.damping += model.loads.damping * damping_power * dt;
@@ -120,7 +120,10 @@ void account_step_energies(const Model& model, SolutionState& s,
     const Vec3 step = tool.displacement - tool.previous_displacement;
     const double reaction_work = 0.5 * (tool.force + tool.previous_force).dot(step);
     e.contact -= reaction_work;
-    if (const auto& driven = model.tools[t].force_control) {
+    const Tool& model_tool = model.tools[t];
+    if (tool.held) {
+      tool.speed = 0.0;  // held where it is: no work, as a fixed tool's (no contact either)
+    } else if (const auto& driven = model_tool.force_control) {
       // The press does the work of the applied force along the travel; the tool's damping
       // dissipates c M v^2 dt (on v(n+1/2), as for the blank); its kinetic energy is taken at
       // the step end, like the blank's.
@@ -133,12 +136,12 @@ void account_step_energies(const Model& model, SolutionState& s,
     } else {
       // The press holds the tool against F on its prescribed path: it does -F . du of work.
       e.external_work -= reaction_work;
-      tool.speed = model.tools[t].motion.speed(s.time);
+      tool.speed = model_tool.motion.speed(s.time);
     }
     // A moving tool's peak is its largest push against its motion; a fixed tool's direction is
     // only the default axis, so its peak is the largest force along that axis either way.
-    const double pushing = -tool.force.dot(model.tools[t].direction());
-    const bool fixed = !model.tools[t].force_control && !model.tools[t].motion.moves();
+    const double pushing = -tool.force.dot(model_tool.direction());
+    const bool fixed = !tool.held && !model_tool.force_control && !model_tool.motion.moves();
     tool.peak_force = std::max(tool.peak_force, fixed ? std::abs(pushing) : pushing);
   }
   const KineticEnergy kinetic = whole_step_kinetic_energy(model, s, dt);
@@ -149,7 +152,7 @@ void account_step_energies(const Model& model, SolutionState& s,
 void check_energy_blowup(const Model& model, const SolutionState& s, double energy_scale,
                          std::string_view where, std::string_view remedy_text) {
   const Energies& e = s.energies;
-  const double ratio = model.config.control.energy_blowup_ratio;
+  const double ratio = model.time.energy_blowup_ratio;
   // Nothing to compare with while no work has been supplied and no tool moves (energy_scale 0):
   // a run loaded from rest does no work in its first step (v(1/2) = 0), while the kinetic energy
   // at its end already holds the first half kick, 1/2 m |dt/2 a(1)|^2 > 0.

@@ -16,7 +16,6 @@ namespace sf {
 
 RunSummary run_explicit(Model& model, const RunOptions& options, SolutionState* final_state) {
   const auto wall_start = std::chrono::steady_clock::now();
-  const ControlConfig& control = model.config.control;
   SolutionState s = make_initial_state(model);
   for (std::size_t t = 0; t < s.tools.size(); ++t) {
     s.tools[t].displacement = model.tools[t].motion.displacement(0.0);
@@ -39,35 +38,35 @@ RunSummary run_explicit(Model& model, const RunOptions& options, SolutionState* 
   double max_speed = 0.0;
   for (const Tool& t : model.tools) {
     for (int k = 0; k <= 100; ++k) {
-      max_speed = std::max(max_speed, std::abs(t.motion.speed(model.end_time * k / 100.0)));
+      max_speed = std::max(max_speed, std::abs(t.motion.speed(model.time.end_time * k / 100.0)));
     }
   }
-  const double energy_scale = 1e-3 * 0.5 * model.blank.mass.sum() * max_speed * max_speed;
+  const double energy_scale = 1e-3 * 0.5 * s.mass.sum() * max_speed * max_speed;
 
-  const double frame_interval = model.end_time / control.output_frames;
+  const double frame_interval = model.time.end_time / model.output.frames;
   double next_frame_time = frame_interval;
-  const double initial_dt = model.time_step;
+  const double initial_dt = model.time.time_step;
   double dt_previous = 0.0;
   double last_frame_time = 0.0;  // s, of the last frame written (the first is at t = 0)
-  Progress progress(model, control.progress_interval);
+  Progress progress(model, model.time.progress_interval);
   // Added mass above this share of the physical mass is worth a warning (once).
   constexpr double warn_fraction = 0.05;
   bool warned = false;
   auto warn_about_added_mass = [&]() {
-    const double fraction = model.blank.scaling.added_mass / model.blank.physical_mass;
+    const double fraction = s.scaling.added_mass / model.blank.physical_mass;
     if (!warned && fraction > warn_fraction) {
       warned = true;
       log_warning(
           "mass scaling has added {:.2f} % of the blank's mass by t = {:.6e} s, cycle {} ({} "
           "elements scaled); check that the inertia forces stay small (kinetic / internal energy) "
           "or set control.mass_scaling_max_added\n",
-          100.0 * fraction, s.time, s.cycle, model.blank.scaling.scaled_elements);
+          100.0 * fraction, s.time, s.cycle, s.scaling.scaled_elements);
     }
   };
   warn_about_added_mass();
 
   try {
-    while (s.time < model.end_time * (1.0 - 1e-12)) {
+    while (s.time < model.time.end_time * (1.0 - 1e-12)) {
       double dt = compute_time_step(model, s);
       if (dt < 1e-3 * initial_dt) {
         throw InstabilityError(fmt::format(
@@ -80,10 +79,10 @@ RunSummary run_explicit(Model& model, const RunOptions& options, SolutionState* 
       // change the amplitude of the modes near the stability limit (the contact springs, capped
       // at w dt = 0.87), and frame after frame that pumped energy into the flange's contact
       // chatter (the U-channel's energy balance grew 2x per frame, to 1.5e-4 at 10 mm).
-      dt = std::min(dt, model.end_time - s.time);
+      dt = std::min(dt, model.time.end_time - s.time);
       advance_one_step(model, s, dt, dt_previous);
       dt_previous = dt;
-      if (s.time > 0.1 * model.end_time) {
+      if (s.time > 0.1 * model.time.end_time) {
         s.peak_kinetic_ratio = std::max(s.peak_kinetic_ratio, s.energies.kinetic_ratio());
       }
       check_energy_blowup(model, s, energy_scale, "",
@@ -93,7 +92,7 @@ RunSummary run_explicit(Model& model, const RunOptions& options, SolutionState* 
       const bool frame_due = s.time >= next_frame_time * (1.0 - 1e-12);
       // A history row every history_interval cycles and at every frame (the frame's added mass,
       // time step, energies).
-      if (output && (s.cycle % control.history_interval == 0 || frame_due)) {
+      if (output && (s.cycle % model.output.history_interval == 0 || frame_due)) {
         output->append_history(model, s);
       }
       if (frame_due) {
@@ -132,7 +131,7 @@ RunSummary run_explicit(Model& model, const RunOptions& options, SolutionState* 
     }
   }
   // The forming summary above is the state with the tools in place; springback goes on from it.
-  if (model.config.springback) {
+  if (model.springback) {
     summary.springback = run_springback(model, s, output.get());
     if (output) {
       output->flush();

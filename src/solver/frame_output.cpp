@@ -10,7 +10,7 @@
 namespace sf {
 
 std::vector<HistoryColumn> history_columns(const Model& model) {
-  const UnitSystem units = parse_unit_system(model.config.units);
+  const UnitSystem units = parse_unit_system(model.output.units);
   const std::string energy = units.moment();
   std::vector<HistoryColumn> columns = {{"time", units.time},
                                         {"time_step", units.time},
@@ -36,11 +36,11 @@ std::vector<HistoryColumn> history_columns(const Model& model) {
     columns.push_back({t.name + "_force", units.force});
     columns.push_back({t.name + "_nodes_in_contact", "-"});
   }
-  for (const DrawInConfig& d : model.config.draw_ins) {
+  for (const DrawInConfig& d : model.output.draw_ins) {
     columns.push_back({"draw_in_" + d.name, units.length});
   }
   for (std::size_t c = 0; c < model.contacts.size(); ++c) {
-    if (model.config.contacts[c].audit) {
+    if (model.contacts[c].audit) {
       columns.push_back(
           {model.tools[static_cast<std::size_t>(model.contacts[c].tool)].name + "_search_misses",
            "-"});
@@ -87,14 +87,14 @@ FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& direct
   row_.resize(names.size());
   writer_ = std::make_unique<ResultsWriter>(directory, std::move(parts), std::move(names),
                                             std::move(units));
-  writer_->write_run_info("resolved_case", format_resolved_case(model.config));
+  writer_->write_run_info("resolved_case", model.output.resolved_case);
   writer_->write_run_info("version", build_info::version);
   writer_->write_run_info("git_hash", build_info::git_hash);
   writer_->write_run_info("build", std::string(build_info::build_type) + ", " +
                                        build_info::compiler + ", flags: " + build_info::cxx_flags);
   const Eigen::Index n_elements = element_count(model.blank.part);
   displacement_.resize(3, model.blank.mesh.nodes.cols());
-  has_springback_field_ = model.config.springback.has_value();
+  has_springback_field_ = model.springback.has_value();
   if (has_springback_field_) {
     springback_displacement_ = Matrix3X::Zero(3, model.blank.mesh.nodes.cols());
   }
@@ -111,7 +111,9 @@ FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& direct
 }
 
 void FrameOutput::write_frame(const Model& model, const SolutionState& s) {
-  audits_.record(model, s);
+  if (!s.contact_off) {
+    audits_.record(model, s);  // no audit with the contact off (springback)
+  }
   displacement_ = s.x - model.blank.mesh.nodes;
   compute_element_stress_output(model.blank.part, stress_geometry_ ? *stress_geometry_ : s.x,
                                 s.shell, stress_mid_, stress_top_, stress_bottom_, plastic_strain_);
@@ -131,16 +133,16 @@ void FrameOutput::write_frame(const Model& model, const SolutionState& s) {
     blank.fields.push_back(
         {"springback_displacement", FieldCenter::node, 3, springback_displacement_.data()});
   }
-  if (model.blank.scaling.enabled()) {
+  if (s.scaling.enabled()) {
     // Per element: 100 (rho_e / rho - 1), the share of its own mass that scaling added.
-    const MassScaling& scaling = model.blank.scaling;
+    const MassScaling& scaling = s.scaling;
     for (Eigen::Index e = 0; e < added_mass_percent_.size(); ++e) {
       added_mass_percent_[e] = 100.0 * (scaling.density_factor[static_cast<std::size_t>(e)] - 1.0);
     }
     blank.fields.push_back(
         {"added_mass_percent", FieldCenter::cell, 1, added_mass_percent_.data()});
   }
-  if (model.config.output.stress_layers) {
+  if (model.output.stress_layers) {
     blank.fields.push_back({"stress_mid", FieldCenter::cell, 6, stress_mid_.data()});
     blank.fields.push_back({"stress_top", FieldCenter::cell, 6, stress_top_.data()});
     blank.fields.push_back({"stress_bottom", FieldCenter::cell, 6, stress_bottom_.data()});
@@ -167,10 +169,12 @@ void FrameOutput::append_history(const Model& model, const SolutionState& s) {
     return;  // this cycle's row is there already
   }
   last_history_cycle_ = s.cycle;
-  audits_.record(model, s);
+  if (!s.contact_off) {
+    audits_.record(model, s);  // no audit with the contact off (springback)
+  }
   std::size_t k = 0;
   const Energies& e = s.energies;
-  const MassScaling& scaling = model.blank.scaling;
+  const MassScaling& scaling = s.scaling;
   for (double value :
        {s.time, s.dt, s.stable_dt, static_cast<double>(s.dt_element), e.kinetic, e.internal,
         e.hourglass, e.contact, e.damping, e.mass_scaling, e.plastic_work, e.friction_work,
@@ -186,7 +190,7 @@ void FrameOutput::append_history(const Model& model, const SolutionState& s) {
     row_[k++] = -s.tools[t].force.dot(model.tools[t].direction());
     row_[k++] = s.tools[t].nodes_in_contact;
   }
-  for (const DrawInConfig& d : model.config.draw_ins) {
+  for (const DrawInConfig& d : model.output.draw_ins) {
     row_[k++] = measure_draw_in(model, d, s.x);
   }
   for (const SearchAuditRecord& r : audits_.records()) {

@@ -29,7 +29,7 @@ std::vector<HistoryColumn> history_group_columns(const Model& model, const UnitS
       columns.push_back({stem + axis, unit});
     }
   };
-  for (const HistoryGroupConfig& h : model.config.history_groups) {
+  for (const HistoryGroupConfig& h : model.output.history_groups) {
     if (h.displacement) {
       add(h.group + "_displacement", units.length);
     }
@@ -55,7 +55,7 @@ std::size_t record_history_groups(const Model& model, const SolutionState& s,
       row[k++] = v[c];
     }
   };
-  for (const HistoryGroupConfig& h : model.config.history_groups) {
+  for (const HistoryGroupConfig& h : model.output.history_groups) {
     const GroupMeasures m = measure_group(model, s, model.blank.group(h.group).nodes, reactions);
     if (h.displacement) {
       put(m.displacement);
@@ -75,7 +75,7 @@ std::size_t record_history_groups(const Model& model, const SolutionState& s,
 }
 
 bool history_needs_reactions(const Model& model) {
-  for (const HistoryGroupConfig& h : model.config.history_groups) {
+  for (const HistoryGroupConfig& h : model.output.history_groups) {
     if (h.reaction) {
       return true;
     }

@@ -10,7 +10,8 @@
 
 namespace sf {
 
-ImplicitStepSummary run_implicit_springback(Model& model, SolutionState& s, FrameOutput* output) {
+ImplicitStepSummary run_implicit_springback(const Model& model, SolutionState& s,
+                                            FrameOutput* output) {
   const auto start = std::chrono::steady_clock::now();
   const auto node_name = blank_node_namer(model);
   StaticShellBody body(model.blank.part, s.x, s.shell);
@@ -18,7 +19,7 @@ ImplicitStepSummary run_implicit_springback(Model& model, SolutionState& s, Fram
   // The case's holds stay; prescribed degrees of freedom stay where forming left them (the tools
   // are released, not the blank's grips).
   StaticConstraints constraints = make_static_constraints(
-      s.x, model.constraints.held_or_prescribed(), model.config.implicit.rigid_body_modes,
+      s.x, model.constraints.held_or_prescribed(), model.analysis.implicit.rigid_body_modes,
       node_name, model.constraints.frames);
   summary.free_modes = constraints.free_modes;
   summary.added_constraints = constraints.added;
@@ -40,14 +41,13 @@ ImplicitStepSummary run_implicit_springback(Model& model, SolutionState& s, Fram
       std::sqrt(f_release.squaredNorm() + m_release.squaredNorm() / (length * length));
 
   StaticStepOptions options;
-  options.controls = model.config.implicit;
+  options.controls = model.analysis.implicit;
   options.node_name = node_name;
-  options.stabilization = model.config.springback
-                              ? model.config.springback->stabilization * body.membrane_stiffness()
-                              : 0.0;
+  options.stabilization =
+      model.springback ? model.springback->stabilization * body.membrane_stiffness() : 0.0;
   const double t_formed = s.time;
   const Matrix3X rotation_formed = s.rotation;
-  const double frame_interval = model.end_time / model.config.control.output_frames;
+  const double frame_interval = model.time.end_time / model.output.frames;
   s.v.setZero();
   s.omega.setZero();
   s.f_contact.setZero();

@@ -15,15 +15,18 @@ SolutionState make_initial_state(const Model& model) {
     *field = Matrix3X::Zero(3, n);
   }
   s.half_thickness = VectorX::Zero(n);
-  if (model.blank.scaling.enabled()) {
-    s.mass_before = model.blank.mass;
-    s.inertia_before = model.blank.rotational_inertia;
+  s.mass = model.blank.mass;
+  s.rotational_inertia = model.blank.rotational_inertia;
+  s.scaling = model.blank.scaling;
+  if (s.scaling.enabled()) {
+    s.mass_before = s.mass;
+    s.inertia_before = s.rotational_inertia;
   }
-  s.shell = make_shell_state(element_count(model.blank.part), model.config.blank.integration_points,
-                             model.config.blank.thickness);
+  s.shell = make_shell_state(element_count(model.blank.part), model.initial.integration_points,
+                             model.initial.thickness);
   initialize_directors(model.blank.part, model.blank.mesh.nodes, s.shell);
   s.tools.resize(model.tools.size());
-  for (const InitialVelocityConfig& iv : model.config.initial_velocities) {
+  for (const InitialVelocityConfig& iv : model.initial.velocities) {
     const auto set = [&](int node) {
       const Vec3 p = model.blank.mesh.nodes.col(node);  // mm, the initial coordinates
       for (int c = 0; c < 3; ++c) {
@@ -47,8 +50,8 @@ SolutionState make_initial_state(const Model& model) {
   // the first half kick, v(1/2) = v(0) + dt/2 a(0).
   s.energies.kinetic = kinetic_energy(model, s);
   s.energies.initial_kinetic = s.energies.kinetic;
-  s.stable_dt = model.time_step;
-  s.dt_element = model.limiting_element;
+  s.stable_dt = model.time.time_step;
+  s.dt_element = model.time.limiting_element;
   return s;
 }
 

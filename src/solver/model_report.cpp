@@ -82,8 +82,8 @@ void print_mass(const Model& model, const UnitSystem& units) {
   }
 }
 
-void print_boundaries(const Model& model, const UnitSystem& units) {
-  for (const BoundaryConfig& b : model.config.boundaries) {
+void print_boundaries(const CaseConfig& config, const Model& model, const UnitSystem& units) {
+  for (const BoundaryConfig& b : config.boundaries) {
     log_info("Boundary    '{}': {} nodes, {}\n", b.group, model.blank.group(b.group).nodes.size(),
              describe_boundary(b));
   }
@@ -120,24 +120,23 @@ std::string describe_scale(const CaseConfig& config, const CurveConfig& curve,
   return "constant";
 }
 
-void print_pressure(const Model& model, const LoadConfig& lc, const PressureLoad& load,
-                    const UnitSystem& units) {
+void print_pressure(const CaseConfig& config, const Model& model, const LoadConfig& lc,
+                    const PressureLoad& load, const UnitSystem& units) {
   const PressureDirection d = compute_pressure_direction(model, load, model.blank.mesh.nodes);
   log_info(
       "Load        '{}': pressure {} {} on the top side of {} elements ({:.6g} {}), {}\n"
       "            their top side's mean normal {}; the pressure pushes along {}: resultant {} "
       "{} at full value\n",
       lc.group, lc.pressure, units.stress, load.elements.size(), d.area, units.area(),
-      describe_scale(model.config, lc.curve, units), format_vector(d.top_normal),
-      format_vector(d.push), format_vector(d.resultant), units.force);
+      describe_scale(config, lc.curve, units), format_vector(d.top_normal), format_vector(d.push),
+      format_vector(d.resultant), units.force);
 }
 
-void print_loads(const Model& model, const UnitSystem& units) {
-  const CaseConfig& config = model.config;
+void print_loads(const CaseConfig& config, const Model& model, const UnitSystem& units) {
   std::size_t pressure = 0;
   for (const LoadConfig& lc : config.loads) {
     if (lc.type == LoadConfig::Type::pressure) {
-      print_pressure(model, lc, model.loads.pressures.at(pressure++), units);
+      print_pressure(config, model, lc, model.loads.pressures.at(pressure++), units);
       continue;
     }
     const bool moment = lc.type == LoadConfig::Type::moment;
@@ -203,7 +202,7 @@ void print_tools(const Model& model, const UnitSystem& units) {
           "{:.3f}",
           format_vector(t.direction()), t.force_control->mass(), units.mass,
           t.force_control->damping(), units.rate(),
-          std::sqrt(k_sum / t.force_control->mass()) * model.time_step);
+          std::sqrt(k_sum / t.force_control->mass()) * model.time.time_step);
     } else if (t.motion.moves()) {
       motion = fmt::format("moves along {}", format_vector(t.direction()));
     }
@@ -223,10 +222,10 @@ std::string describe_friction(const ContactConfig& c, const UnitSystem& units) {
                      c.friction_dynamic, c.friction_decay, units.time, units.length);
 }
 
-void print_contacts(const Model& model, const UnitSystem& units) {
+void print_contacts(const CaseConfig& config, const Model& model, const UnitSystem& units) {
   for (std::size_t k = 0; k < model.contacts.size(); ++k) {
     const ContactInterface& c = model.contacts[k];
-    const ContactConfig& cc = model.config.contacts[k];  // build_model keeps the case's order
+    const ContactConfig& cc = config.contacts[k];  // build_model keeps the case's order
     log_info(
         "Contact     blank nodes vs '{}': search '{}', {} projection, penalty {} {:.4g} to "
         "{:.4g} {}, {}\n",
@@ -256,8 +255,8 @@ void print_mesh_parameters(const CaseConfig& config) {
   }
 }
 
-void print_history_groups(const Model& model) {
-  for (const HistoryGroupConfig& h : model.config.history_groups) {
+void print_history_groups(const CaseConfig& config, const Model& model) {
+  for (const HistoryGroupConfig& h : model.output.history_groups) {
     std::string quantities;
     const std::pair<bool, const char*> flags[] = {{h.displacement, "mean displacement"},
                                                   {h.velocity, "mean velocity"},
@@ -273,22 +272,22 @@ void print_history_groups(const Model& model) {
   }
 }
 
-void print_time_control(const Model& model, const UnitSystem& units) {
-  const ControlConfig& control = model.config.control;
-  if (is_static(model.config)) {
+void print_time_control(const CaseConfig& config, const Model& model, const UnitSystem& units) {
+  const ControlConfig& control = config.control;
+  if (is_static(config)) {
     log_info(
         "Output      {} frames at the load factors k / {}, k = 1 .. {} (each at the first "
         "converged increment at or past it), a history row per converged increment\n",
         control.output_frames, control.output_frames, control.output_frames);
     return;
   }
-  log_info("Time step   {:.4e} {} (safety {} x critical, limited by element {})\n", model.time_step,
-           units.time, control.time_step_safety, model.limiting_element);
-  log_info("End time    {:.6e} {}{}\n", model.end_time, units.time,
+  log_info("Time step   {:.4e} {} (safety {} x critical, limited by element {})\n",
+           model.time.time_step, units.time, control.time_step_safety, model.time.limiting_element);
+  log_info("End time    {:.6e} {}{}\n", model.time.end_time, units.time,
            control.stroke > 0.0 ? fmt::format(" (stroke {} {} of '{}')", control.stroke,
                                               units.length, control.stroke_tool)
                                 : std::string());
-  log_info("Cycles      about {:.0f}\n", model.end_time / model.time_step);
+  log_info("Cycles      about {:.0f}\n", model.time.end_time / model.time.time_step);
   log_info("Output      {} frames, a history row every {} cycles\n", control.output_frames,
            control.history_interval);
 }
@@ -327,8 +326,7 @@ std::string describe_shell_formulation(const ShellPart& part, bool static_step) 
                             s.rule == ThroughThicknessRule::lobatto ? "Lobatto" : "Gauss");
 }
 
-void print_model(const Model& model) {
-  const CaseConfig& config = model.config;
+void print_model(const CaseConfig& config, const Model& model) {
   const UnitSystem units = parse_unit_system(config.units);
   log_info("Case        {}\n", config.file.string());
   if (!config.title.empty()) {
@@ -346,12 +344,12 @@ void print_model(const Model& model) {
   if (!is_static(config)) {
     print_mass(model, units);
   }
-  print_boundaries(model, units);
-  print_loads(model, units);
+  print_boundaries(config, model, units);
+  print_loads(config, model, units);
   print_tools(model, units);
-  print_contacts(model, units);
-  print_history_groups(model);
-  print_time_control(model, units);
+  print_contacts(config, model, units);
+  print_history_groups(config, model);
+  print_time_control(config, model, units);
 }
 
 }  // namespace sf

@@ -16,7 +16,7 @@ namespace sf {
 /// stiffness).
 std::string describe_shell_formulation(const ShellPart& part, bool static_step);
 
-/// Prints the model (log_info), in the case's units.
-void print_model(const Model& model);
+/// Prints the case and the model built from it (log_info), in the case's units.
+void print_model(const CaseConfig& config, const Model& model);
 
 }  // namespace sf

@@ -18,8 +18,8 @@ bool add_force_kicks(const Model& model, SolutionState& s, double weight) {
   const double c = model.loads.damping;
   double check = 0.0;
   for (Eigen::Index i = 0; i < n; ++i) {
-    const double inv_m = 1.0 / model.blank.mass[i];
-    const double inv_i = 1.0 / model.blank.rotational_inertia[i];
+    const double inv_m = 1.0 / s.mass[i];
+    const double inv_i = 1.0 / s.rotational_inertia[i];
     s.v.col(i) += (weight * inv_m) * (s.f_ext.col(i) + s.f_contact.col(i) - s.f_int.col(i)) -
                   (weight * c) * s.v.col(i);
     s.omega.col(i) +=
@@ -66,7 +66,7 @@ double apply_velocity_conditions(const Model& model, SolutionState& s, double we
     const double target = p.kind == PrescribedMotion::Kind::velocity
                               ? p.target(t0 + 0.5 * dt)
                               : (p.target(t0 + dt) - p.target(t0)) / dt;
-    const VectorX& mass = p.rotation ? model.blank.rotational_inertia : model.blank.mass;
+    const VectorX& mass = p.rotation ? s.rotational_inertia : s.mass;
     Matrix3X& field = p.rotation ? s.omega : s.v;
     for (std::size_t k = 0; k < p.nodes.size(); ++k) {
       const int node = p.nodes[k];

@@ -18,13 +18,13 @@ void Progress::report(const Model& model, const SolutionState& s, bool final) {
     return;
   }
   last_ = now;
-  const double fraction = model.end_time > 0.0 ? s.time / model.end_time : 1.0;
+  const double fraction = model.time.end_time > 0.0 ? s.time / model.time.end_time : 1.0;
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   const double eta = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
   log_info("{:>9} {:>12.5e} {:>6.1f}% {:>11.3e} {:>8.4f} {:>8.1e} {:>7.2f}% {:>7.0f}s\n", s.cycle,
            s.time, 100.0 * fraction, s.stable_dt, s.energies.kinetic_ratio(),
-           s.energies.balance_error(),
-           100.0 * model.blank.scaling.added_mass / model.blank.physical_mass, eta);
+           s.energies.balance_error(), 100.0 * s.scaling.added_mass / model.blank.physical_mass,
+           eta);
 }
 
 }  // namespace sf

@@ -41,10 +41,9 @@ void compute_reactions(const Model& model, const SolutionState& s, Matrix3X& for
       continue;
     }
     // What the support adds so that the node's acceleration is zero (held) in its components.
-    Vec3 f = s.f_int.col(i) - s.f_ext.col(i) - s.f_contact.col(i) +
-             damping * model.blank.mass[i] * s.v.col(i);
-    Vec3 m = s.m_int.col(i) - s.m_ext.col(i) +
-             damping * model.blank.rotational_inertia[i] * s.omega.col(i);
+    Vec3 f =
+        s.f_int.col(i) - s.f_ext.col(i) - s.f_contact.col(i) + damping * s.mass[i] * s.v.col(i);
+    Vec3 m = s.m_int.col(i) - s.m_ext.col(i) + damping * s.rotational_inertia[i] * s.omega.col(i);
     c.zero_components(static_cast<int>(i), ~bits & 0x3fu, f, m);
     force.col(i) = f;
     moment.col(i) = m;
@@ -54,7 +53,7 @@ void compute_reactions(const Model& model, const SolutionState& s, Matrix3X& for
   }
   for (const PrescribedMotion& p : model.prescribed_motions) {
     const double a = prescribed_acceleration(p, s.time, s.dt);
-    const VectorX& mass = p.rotation ? model.blank.rotational_inertia : model.blank.mass;
+    const VectorX& mass = p.rotation ? s.rotational_inertia : s.mass;
     Matrix3X& field = p.rotation ? moment : force;
     for (std::size_t k = 0; k < p.nodes.size(); ++k) {
       const int node = p.nodes[k];
@@ -65,46 +64,20 @@ void compute_reactions(const Model& model, const SolutionState& s, Matrix3X& for
 
 std::vector<ConstraintReaction> sum_reactions_by_entry(const Model& model, const Matrix3X& force,
                                                        const Matrix3X& moment) {
-  const CaseConfig& config = model.config;
   std::vector<ConstraintReaction> out;
-  for (std::size_t i = 0; i < config.boundaries.size(); ++i) {
-    const BoundaryConfig& b = config.boundaries[i];
-    const std::vector<int>& nodes = model.blank.group(b.group).nodes;
+  for (const ReactionEntry& e : model.output.reactions) {
+    const std::vector<int>& nodes = model.blank.group(e.group).nodes;
     ConstraintReaction r;
-    r.entry = fmt::format("boundary[{}]", i);
-    r.group = b.group;
+    r.entry = e.entry;
+    r.group = e.group;
     r.force = sum_over(nodes, force);
     r.moment = sum_over(nodes, moment);
-    if (b.normal) {
-      r.axes = make_plane_frame(Vec3((*b.normal)[0], (*b.normal)[1], (*b.normal)[2]));
-    } else if (b.axes) {
-      r.axes = make_frame(*b.axes);
+    r.axes = e.axes;
+    if (e.dof >= 0) {
+      const Mat3 frame = e.axes ? *e.axes : Mat3::Identity();
+      r.along = frame.col(e.dof % 3).dot(e.dof < 3 ? r.force : r.moment);
+      r.dof = kDofNames[static_cast<std::size_t>(e.dof)];
     }
-    out.push_back(std::move(r));
-  }
-  for (std::size_t i = 0; i < config.prescribed_velocities.size(); ++i) {
-    const std::vector<int>& nodes = model.blank.group(config.prescribed_velocities[i].group).nodes;
-    ConstraintReaction r;
-    r.entry = fmt::format("prescribed_velocity[{}]", i);
-    r.group = config.prescribed_velocities[i].group;
-    r.force = sum_over(nodes, force);
-    r.moment = sum_over(nodes, moment);
-    out.push_back(std::move(r));
-  }
-  for (std::size_t i = 0; i < config.prescribed_motions.size(); ++i) {
-    const PrescribedMotionConfig& pm = config.prescribed_motions[i];
-    const std::vector<int>& nodes = model.blank.group(pm.group).nodes;
-    ConstraintReaction r;
-    r.entry = fmt::format("prescribed_motion[{}]", i);
-    r.group = pm.group;
-    r.force = sum_over(nodes, force);
-    r.moment = sum_over(nodes, moment);
-    const Mat3 frame = pm.axes ? make_frame(*pm.axes) : Mat3::Identity();
-    if (pm.axes) {
-      r.axes = frame;
-    }
-    r.along = frame.col(pm.dof % 3).dot(pm.dof < 3 ? r.force : r.moment);
-    r.dof = kDofNames[pm.dof];
     out.push_back(std::move(r));
   }
   return out;

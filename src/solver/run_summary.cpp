@@ -60,7 +60,7 @@ nlohmann::json reaction_json(const ConstraintReaction& c) {
 
 RunSummary make_run_summary(const Model& model, const SolutionState& s, double wall_seconds) {
   RunSummary r;
-  r.units = model.config.units;
+  r.units = model.output.units;
   r.cycles = s.cycle;
   r.end_time = s.time;
   r.wall_seconds = wall_seconds;
@@ -76,9 +76,9 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
   r.energies = s.energies;
   r.peak_kinetic_ratio = s.peak_kinetic_ratio;
   r.physical_mass = model.blank.physical_mass;
-  r.added_mass = model.blank.scaling.added_mass;
+  r.added_mass = s.scaling.added_mass;
   r.added_mass_fraction = r.added_mass / r.physical_mass;
-  r.scaled_elements = model.blank.scaling.scaled_elements;
+  r.scaled_elements = s.scaling.scaled_elements;
   r.min_time_step = s.min_stable_dt;
   r.max_time_step = s.max_stable_dt;
   r.min_time_step_element = s.min_dt_element;
@@ -99,9 +99,10 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
     }
     r.tools.push_back(ts);
   }
-  const double end_stroke =
-      model.stroke_tool >= 0 ? s.tools[static_cast<std::size_t>(model.stroke_tool)].travel : 0.0;
-  for (const DrawInConfig& dc : model.config.draw_ins) {
+  const double end_stroke = model.time.stroke_tool >= 0
+                                ? s.tools[static_cast<std::size_t>(model.time.stroke_tool)].travel
+                                : 0.0;
+  for (const DrawInConfig& dc : model.output.draw_ins) {
     DrawInResult d;
     d.name = dc.name;
     d.computed = measure_draw_in(model, dc, s.x);
@@ -117,10 +118,10 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
   }
   Matrix3X reaction_force, reaction_moment;
   compute_reactions(model, s, reaction_force, reaction_moment);
-  if (!model.config.boundaries.empty() || !model.prescribed_motions.empty()) {
+  if (!model.output.reactions.empty()) {
     r.reactions = sum_reactions_by_entry(model, reaction_force, reaction_moment);
   }
-  for (const HistoryGroupConfig& h : model.config.history_groups) {
+  for (const HistoryGroupConfig& h : model.output.history_groups) {
     const NodeGroup& group = model.blank.group(h.group);
     r.history_groups.push_back(
         {h.group, static_cast<int>(group.nodes.size()), h,

@@ -6,7 +6,7 @@ namespace sf {
 
 SearchAuditRecorder::SearchAuditRecorder(const Model& model) {
   for (std::size_t c = 0; c < model.contacts.size(); ++c) {
-    if (!model.config.contacts[c].audit) {
+    if (!model.contacts[c].audit) {
       continue;
     }
     const ContactInterface& contact = model.contacts[c];

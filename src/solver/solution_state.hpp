@@ -1,10 +1,13 @@
 #pragma once
-// The changing state of an explicit run: nodal kinematics and forces, the blank's integration
-// point state, the tools' positions and the energies.
+// The run state: everything that changes during a run (nodal kinematics and forces, masses under
+// mass scaling, the blank's integration point state, the tools' positions, the energies, timers).
+// The Model stays const; a run is its model plus this state.
 #include <vector>
 
 #include "contact/penalty_contact.hpp"
 #include "element/shell_bt.hpp"
+#include "model/mass_scaling.hpp"
+#include "model/model.hpp"
 #include "solver/energies.hpp"
 
 namespace sf {
@@ -24,6 +27,9 @@ struct ToolState {
   /// mm/s, force-controlled tools: the half-step velocity v(n+1/2) the step integrates (v(0)
   /// before the first step)
   double velocity = 0.0;
+  /// Held where it is for the rest of the run (springback by dynamic relaxation): its travel and
+  /// displacement stay, its speed is 0, a force-controlled tool no longer follows its force.
+  bool held = false;
 };
 
 struct SolutionState {
@@ -42,18 +48,21 @@ struct SolutionState {
   /// static: the converged increments' dtheta): the rotation vector for a rotation about a fixed
   /// axis, a first-order measure of a general one
   Matrix3X rotation;
-  Matrix3X f_int;           ///< N, internal forces (resisting)
-  Matrix3X m_int;           ///< N mm, internal moments (resisting)
-  Matrix3X f_contact;       ///< N, contact forces on the blank nodes
-  Matrix3X f_ext;           ///< N, applied forces (loads, pressure, gravity)
-  Matrix3X m_ext;           ///< N mm, applied moments
-  Matrix3X f_ext_previous;  ///< N, a step ago (for the work increment)
-  Matrix3X m_ext_previous;  ///< N mm
-  Matrix3X f_int_previous;  ///< N, for the trapezoidal work increment
-  Matrix3X m_int_previous;  ///< N mm
-  VectorX half_thickness;   ///< mm per node, the contact offset
-  VectorX mass_before;      ///< tonne per node, scratch: the masses before this cycle's scaling
-  VectorX inertia_before;   ///< tonne mm^2 per node, likewise
+  Matrix3X f_int;              ///< N, internal forces (resisting)
+  Matrix3X m_int;              ///< N mm, internal moments (resisting)
+  Matrix3X f_contact;          ///< N, contact forces on the blank nodes
+  Matrix3X f_ext;              ///< N, applied forces (loads, pressure, gravity)
+  Matrix3X m_ext;              ///< N mm, applied moments
+  Matrix3X f_ext_previous;     ///< N, a step ago (for the work increment)
+  Matrix3X m_ext_previous;     ///< N mm
+  Matrix3X f_int_previous;     ///< N, for the trapezoidal work increment
+  Matrix3X m_int_previous;     ///< N mm
+  VectorX half_thickness;      ///< mm per node, the contact offset
+  VectorX mass;                ///< tonne per node (grows under mass scaling)
+  VectorX rotational_inertia;  ///< tonne mm^2 per node (likewise)
+  MassScaling scaling;         ///< the elements' density factors and the added mass so far
+  VectorX mass_before;         ///< tonne per node, scratch: the masses before this cycle's scaling
+  VectorX inertia_before;      ///< tonne mm^2 per node, likewise
   /// N, the contact forces on the blank nodes a step ago (for the contact work increment).
   Matrix3X f_contact_previous;
   /// N mm, sum of 1/2 k g^2 over the penalty springs at the current state: a diagnostic only
@@ -61,6 +70,10 @@ struct SolutionState {
   double contact_spring_energy = 0.0;
   ShellState shell;
   std::vector<ToolState> tools;
+  /// Springback by dynamic relaxation: the contact is off, and the forces the tools held the
+  /// blank with act as these nodal loads (released over time) besides the model's own.
+  bool contact_off = false;
+  std::vector<NodalLoad> released_loads;
   Energies energies;
   double peak_kinetic_ratio = 0.0;  ///< after the first tenth of the run
   double element_seconds = 0.0;     ///< wall time spent in the element forces

@@ -9,7 +9,7 @@ namespace sf {
 
 SpringbackSummary run_springback(Model& model, SolutionState& s, FrameOutput* output) {
   const auto start = std::chrono::steady_clock::now();
-  const SpringbackConfig& config = *model.config.springback;
+  const SpringbackConfig& config = *model.springback;
   const Matrix3X formed = s.x;
   if (output) {
     output->set_springback_reference(formed);

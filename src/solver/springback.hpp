@@ -38,7 +38,7 @@ SpringbackSummary run_springback(Model& model, SolutionState& state, FrameOutput
 /// static step, each converged increment written as a frame at time t_end + lambda x the frame
 /// interval. Rigid-body modes the case's constraints leave free are held automatically (or
 /// reported, as [implicit] asks).
-ImplicitStepSummary run_implicit_springback(Model& model, SolutionState& state,
+ImplicitStepSummary run_implicit_springback(const Model& model, SolutionState& state,
                                             FrameOutput* output);
 
 }  // namespace sf

@@ -46,7 +46,7 @@ void check_automatic_holds(const Model& model, const StaticConstraints& constrai
     scale = std::max({scale, report.reaction_force.col(i).norm(),
                       report.reaction_moment.col(i).norm() / length});
   }
-  const double limit = std::max(1e-6, 10.0 * model.config.implicit.force_tolerance) * scale;
+  const double limit = std::max(1e-6, 10.0 * model.analysis.implicit.force_tolerance) * scale;
   std::string loaded;
   for (const auto& [node, dof] : constraints.added_holds) {
     const double r =
@@ -63,25 +63,8 @@ void check_automatic_holds(const Model& model, const StaticConstraints& constrai
         "\"auto\") carry load: {}. The loads are not balanced over the rigid-body modes the "
         "constraints leave free ({}), so there is no equilibrium without those holds and the "
         "answer would depend on where they were put: hold the model with [[boundary]] entries",
-        model.config.file.string(), loaded, fmt::join(constraints.free_modes, "; ")));
+        model.case_file.string(), loaded, fmt::join(constraints.free_modes, "; ")));
   }
-}
-
-// A load without a curve ramps from zero at time 0 to its value at end_time (in an explicit run
-// it would be constant): the static step follows the load from the unloaded state.
-void ramp_loads_without_curves(Model& model, double end_time) {
-  const LoadCurve ramp({0.0, end_time}, {0.0, 1.0});
-  std::size_t nodal = 0;
-  std::size_t pressure = 0;
-  for (const LoadConfig& lc : model.config.loads) {  // build_model keeps the case's order
-    LoadCurve& scale = lc.type == LoadConfig::Type::pressure
-                           ? model.loads.pressures.at(pressure++).scale
-                           : model.loads.nodal.at(nodal++).scale;
-    if (lc.curve.times.empty()) {
-      scale = ramp;
-    }
-  }
-  model.loads.gravity_scale = ramp;
 }
 
 // Frames at the pseudo-times of control.output_frames, each written at the first converged
@@ -133,14 +116,14 @@ class StaticOutputSchedule {
 
 }  // namespace
 
-RunSummary run_static(Model& model, const RunOptions& options, SolutionState* final_state) {
+RunSummary run_static(const Model& model, const RunOptions& options, SolutionState* final_state) {
   const auto start = std::chrono::steady_clock::now();
   SolutionState s = make_initial_state(model);
   const auto node_name = blank_node_namer(model);
   // Held and prescribed degrees of freedom are not solved for; the prescribed ones move by their
   // curves (StaticLoad::prescribed).
   StaticConstraints constraints = make_static_constraints(
-      s.x, model.constraints.held_or_prescribed(), model.config.implicit.rigid_body_modes,
+      s.x, model.constraints.held_or_prescribed(), model.analysis.implicit.rigid_body_modes,
       node_name, model.constraints.frames);
   std::unique_ptr<FrameOutput> output;
   if (options.write_results) {
@@ -148,7 +131,7 @@ RunSummary run_static(Model& model, const RunOptions& options, SolutionState* fi
     output->write_frame(model, s);
     output->append_history(model, s);
   }
-  if (output && model.config.analysis.linear) {
+  if (output && model.analysis.linear) {
     output->set_stress_geometry(&model.blank.mesh.nodes);
   }
   StaticShellBody body(model.blank.part, s.x, s.shell);
@@ -156,8 +139,7 @@ RunSummary run_static(Model& model, const RunOptions& options, SolutionState* fi
   step.free_modes = constraints.free_modes;
   step.added_constraints = constraints.added;
 
-  const double end_time = model.config.control.end_time;
-  ramp_loads_without_curves(model, end_time);
+  const double end_time = model.time.end_time;
   StaticLoad load;
   load.at = [&](double lambda, const Matrix3X& x, Matrix3X& f, Matrix3X& m) {
     compute_external_forces(model, lambda * end_time, x, f, m);
@@ -168,7 +150,7 @@ RunSummary run_static(Model& model, const RunOptions& options, SolutionState* fi
       throw InputError(
           fmt::format("{}: {}: a static analysis prescribes displacements and "
                       "rotations, not velocities",
-                      model.config.file.string(), p.entry));
+                      model.case_file.string(), p.entry));
     }
   }
   if (!model.prescribed_motions.empty()) {
@@ -178,14 +160,14 @@ RunSummary run_static(Model& model, const RunOptions& options, SolutionState* fi
     };
   }
   StaticStepOptions step_options;
-  step_options.controls = model.config.implicit;
-  step_options.linear = model.config.analysis.linear;
+  step_options.controls = model.analysis.implicit;
+  step_options.linear = model.analysis.linear;
   step_options.node_name = node_name;
   log_info("static analysis ({}): {} equations, loads over 0..{} s in {} increment{}\n",
            step_options.linear ? "linear" : "nonlinear", constraints.dofs.equation_count(),
            end_time, step_options.linear ? 1 : step_options.controls.increments,
            step_options.linear || step_options.controls.increments == 1 ? "" : "s");
-  StaticOutputSchedule schedule(output.get(), end_time, model.config.control.output_frames);
+  StaticOutputSchedule schedule(output.get(), end_time, model.output.frames);
   try {
     step.report =
         solve_static_step(body, constraints.dofs, load, step_options,

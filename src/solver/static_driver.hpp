@@ -15,7 +15,7 @@ namespace sf {
 /// `final_state` when given. Throws ConvergenceError when the step cannot converge (after writing
 /// the last converged state as a frame), InputError for constraints that leave rigid-body modes
 /// free with implicit.rigid_body_modes = "error".
-RunSummary run_static(Model& model, const RunOptions& options,
+RunSummary run_static(const Model& model, const RunOptions& options,
                       SolutionState* final_state = nullptr);
 
 }  // namespace sf

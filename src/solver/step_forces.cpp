@@ -56,6 +56,9 @@ void compute_contact_forces(Model& model, SolutionState& s, double dt) {
     t.force.setZero();
     t.nodes_in_contact = 0;
   }
+  if (s.contact_off) {
+    return;
+  }
   for (ContactInterface& c : model.contacts) {
     ToolState& tool = s.tools[static_cast<std::size_t>(c.tool)];
     // s.v is the mid-step velocity of the step dt just taken (dt = 0 on the first call).
@@ -78,7 +81,7 @@ void compute_contact_forces(Model& model, SolutionState& s, double dt) {
 }  // namespace
 
 ShellForceResult compute_forces(Model& model, SolutionState& s, double dt) {
-  compute_external_forces(model, s.time, s.x, s.f_ext, s.m_ext);
+  compute_external_forces(model, s.time, s.x, s.f_ext, s.m_ext, s.released_loads);
   const Clock::time_point element_start = Clock::now();
   const ShellForceResult elements = compute_internal_forces(model, s, dt);
   s.element_seconds += seconds_since(element_start);

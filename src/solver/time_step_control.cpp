@@ -11,7 +11,7 @@
 namespace sf {
 namespace {
 
-// Mass was added at some nodes (blank.mass against s.mass_before): their half-step velocities are
+// Mass was added at some nodes (s.mass against s.mass_before): their half-step velocities are
 // lowered to keep the momentum, v' = r v with r = m_old / m_new (likewise the angular velocities).
 // The half kicks scale the same way (r u, half_kick_rate: the force over m_new, the damping on
 // r v), so the whole-step velocity at this time n becomes r v(n) too: momentum is kept at the
@@ -33,9 +33,9 @@ void keep_momentum(const Model& model, SolutionState& s, double dt) {
   double kinetic_drop = 0.0;
   Vec3 u, u_omega;
   for (Eigen::Index i = 0; i < n; ++i) {
-    const double m_new = model.blank.mass[i];
+    const double m_new = s.mass[i];
     const double m_old = s.mass_before[i];
-    const double i_new = model.blank.rotational_inertia[i];
+    const double i_new = s.rotational_inertia[i];
     const double i_old = s.inertia_before[i];
     if (m_new == m_old && i_new == i_old) {
       continue;
@@ -63,26 +63,25 @@ void keep_momentum(const Model& model, SolutionState& s, double dt) {
 
 }  // namespace
 
-double compute_time_step(Model& model, SolutionState& s) {
-  Blank& blank = model.blank;
-  if (blank.scaling.enabled()) {
-    s.mass_before = blank.mass;  // same size: no allocation
-    s.inertia_before = blank.rotational_inertia;
+double compute_time_step(const Model& model, SolutionState& s) {
+  const Blank& blank = model.blank;
+  if (s.scaling.enabled()) {
+    s.mass_before = s.mass;  // same size: no allocation
+    s.inertia_before = s.rotational_inertia;
   }
   const TimeStepCheck check =
-      scale_mass_to_time_step(blank.part, s.x, blank.scaling, blank.mass, blank.rotational_inertia);
+      scale_mass_to_time_step(blank.part, s.x, s.scaling, s.mass, s.rotational_inertia);
   if (check.mass_added > 0.0) {
     keep_momentum(model, s, check.dt);
   }
-  const double limit = model.config.control.mass_scaling_max_added;
-  if (check.mass_added > 0.0 && limit > 0.0 &&
-      blank.scaling.added_mass > limit * blank.physical_mass) {
+  const double limit = model.time.mass_scaling_max_added;
+  if (check.mass_added > 0.0 && limit > 0.0 && s.scaling.added_mass > limit * blank.physical_mass) {
     throw InstabilityError(fmt::format(
         "added mass {:.3f} % of the blank's mass passed control.mass_scaling_max_added = {:.3f} % "
         "at t = {:.6e} s, cycle {} ({} elements scaled; element {} limits the step): elements "
         "are being crushed below the target step {:.4e} s",
-        100.0 * blank.scaling.added_mass / blank.physical_mass, 100.0 * limit, s.time, s.cycle,
-        blank.scaling.scaled_elements, check.element, blank.scaling.target_dt));
+        100.0 * s.scaling.added_mass / blank.physical_mass, 100.0 * limit, s.time, s.cycle,
+        s.scaling.scaled_elements, check.element, s.scaling.target_dt));
   }
   s.stable_dt = check.dt;
   s.dt_element = check.element;

@@ -12,6 +12,6 @@ namespace sf {
 /// energies.mass_scaling: docs/time-integration.md). Records the step and its limiting
 /// element in state (stable_dt, dt_element, min_stable_dt, max_stable_dt). Throws
 /// InstabilityError when the added mass passes control.mass_scaling_max_added.
-double compute_time_step(Model& model, SolutionState& state);
+double compute_time_step(const Model& model, SolutionState& state);
 
 }  // namespace sf

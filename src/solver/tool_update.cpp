@@ -10,6 +10,9 @@ void move_tools(const Model& model, SolutionState& s, double time_before, double
     ToolState& tool = s.tools[t];
     tool.previous_displacement = tool.displacement;
     tool.previous_force = tool.force;
+    if (tool.held) {
+      continue;  // travel and displacement stay
+    }
     if (const auto& driven = model.tools[t].force_control) {
       driven->step(time_before, tool.force, weight, dt, tool.velocity, tool.travel);
       tool.displacement = tool.travel * driven->direction();

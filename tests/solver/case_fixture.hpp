@@ -25,13 +25,13 @@ inline CaseConfig write_case(const std::string& name, const std::string& geo,
   return read_case(folder / "case.toml");
 }
 
-/// Central-difference steps from the state until model.end_time (no output); calls
+/// Central-difference steps from the state until model.time.end_time (no output); calls
 /// `after_step(state)` after every step.
 template <class AfterStep>
 void run_to_end(Model& model, SolutionState& s, AfterStep&& after_step) {
   double dt_previous = 0.0;
-  while (s.time < model.end_time * (1.0 - 1e-12)) {
-    const double dt = std::min(compute_time_step(model, s), model.end_time - s.time);
+  while (s.time < model.time.end_time * (1.0 - 1e-12)) {
+    const double dt = std::min(compute_time_step(model, s), model.time.end_time - s.time);
     advance_one_step(model, s, dt, dt_previous);
     dt_previous = dt;
     after_step(s);
@@ -54,10 +54,10 @@ inline double half_kick_energy(const Model& model, const SolutionState& s) {
     const Vec3 m = s.m_ext.col(i) - s.m_int.col(i);
     for (int c = 0; c < 3; ++c) {
       if (!(held & (1u << c))) {
-        d += f[c] * f[c] / model.blank.mass[i];
+        d += f[c] * f[c] / s.mass[i];
       }
       if (!(held & (1u << (3 + c)))) {
-        d += m[c] * m[c] / model.blank.rotational_inertia[i];
+        d += m[c] * m[c] / s.rotational_inertia[i];
       }
     }
   }

@@ -78,7 +78,7 @@ end_time = )" + std::to_string(0.8 * period) + "\n");
   double peak = 0.0, peak_time = 0.0, dt_previous = 0.0;
   double max_balance_error = 0.0;  // after the first tenth of the period
   const int tip_node = model.blank.group("tip").nodes.front();
-  while (s.time < model.end_time) {
+  while (s.time < model.time.end_time) {
     const double dt = sf::compute_time_step(model, s);
     sf::advance_one_step(model, s, dt, dt_previous);
     dt_previous = dt;
@@ -115,7 +115,7 @@ sf::SolutionState run_to_end(sf::Model& model) {
   sf::SolutionState s = sf::make_initial_state(model);
   sf::compute_forces(model, s, 0.0);
   double dt_previous = 0.0;
-  while (s.time < model.end_time) {
+  while (s.time < model.time.end_time) {
     const double dt = sf::compute_time_step(model, s);
     sf::advance_one_step(model, s, dt, dt_previous);
     dt_previous = dt;

@@ -98,7 +98,7 @@ end_time = 1.0e-3
     max_k_over_m = std::max(max_k_over_m, k[i] / model.blank.mass[i]);
     r.normal_kinetic += 0.5 * model.blank.mass[i] * 1000.0 * 1000.0;
   }
-  const double w_dt = std::sqrt(max_k_over_m) * model.time_step;
+  const double w_dt = std::sqrt(max_k_over_m) * model.time.time_step;
   r.bound = 0.25 * w_dt * w_dt * r.normal_kinetic;
 
   sf::SolutionState state = sf::make_initial_state(model);

@@ -199,7 +199,7 @@ TEST(DynamicRelaxation, ElasticStripPressedByAPadSpringsBackFlat) {
   start.dt = p.state.stable_dt;
   const double half_kick_before = sf::test::half_kick_energy(p.model, start);
 
-  const sf::SpringbackConfig config = *p.model.config.springback;
+  const sf::SpringbackConfig config = *p.model.springback;
   const sf::DynamicRelaxationResult r =
       sf::run_dynamic_relaxation(p.model, p.state, output.get(), config);
   output.reset();  // closes the results file
@@ -245,7 +245,7 @@ TEST(DynamicRelaxation, ElasticStripPressedByAPadSpringsBackFlat) {
   // (measured 2.1e-7 N mm).
   EXPECT_LT(std::abs(p.state.energies.internal), 1e-4 * r.reference_energy);
   // The contact is off and the pad stayed where it was.
-  EXPECT_TRUE(p.model.contacts.empty());
+  EXPECT_TRUE(p.state.contact_off);
   EXPECT_EQ(p.state.f_contact.norm(), 0.0);
   EXPECT_NEAR(p.state.tools.front().travel, depth, 1e-12);
 
@@ -285,27 +285,27 @@ TEST(DynamicRelaxation, ReleasedLoadsAreTheFormedStatesStaticInternalForces) {
   press(p, &output, out);
   ASSERT_FALSE(output->search_audits().empty());
   const double t0 = p.state.time;
-  sf::SpringbackConfig config = *p.model.config.springback;
+  sf::SpringbackConfig config = *p.model.springback;
   config.max_time = 0.1 * config.release_time;  // the loads are what is checked, not the rest
   const sf::DynamicRelaxationResult r =
       sf::run_dynamic_relaxation(p.model, p.state, output.get(), config);
   output.reset();
 
-  // The pad's contact is audited (audit = true): its pair stays in the model for the recorder,
-  // with no stiffness and no friction, so it exerts no force.
+  // The contact is off in the run state (the model is unchanged; the pad's contact is audited,
+  // audit = true, and its audit stops with the contact), so it exerts no force.
   ASSERT_EQ(p.model.contacts.size(), 1u);
-  EXPECT_EQ(p.model.contacts.front().pair.stiffness.cwiseAbs().maxCoeff(), 0.0);
-  EXPECT_FALSE(p.model.contacts.front().pair.friction.active());
+  EXPECT_TRUE(p.state.contact_off);
   EXPECT_EQ(p.state.f_contact.cwiseAbs().maxCoeff(), 0.0);
   EXPECT_EQ(p.state.tools.front().force.norm(), 0.0);
 
   // One released force (and, where nonzero, one moment) per node: the formed state's static
   // internal forces (the case has no loads of its own), scale 1 at t0 falling linearly to 0 at
   // t0 + release_time.
-  ASSERT_GT(p.model.loads.nodal.size(), p.loads_before);
+  // They are the run state's (the model's own loads are unchanged).
+  EXPECT_EQ(p.model.loads.nodal.size(), p.loads_before);
+  ASSERT_FALSE(p.state.released_loads.empty());
   sf::Matrix3X released = sf::Matrix3X::Zero(3, p.state.x.cols());
-  for (std::size_t k = p.loads_before; k < p.model.loads.nodal.size(); ++k) {
-    const sf::NodalLoad& load = p.model.loads.nodal[k];
+  for (const sf::NodalLoad& load : p.state.released_loads) {
     ASSERT_EQ(load.nodes.size(), 1u);
     EXPECT_EQ(load.scale.value(t0), 1.0);
     EXPECT_NEAR(load.scale.value(t0 + 0.5 * config.release_time), 0.5, 1e-12);
@@ -372,7 +372,7 @@ Relaxed relax_tip_force(sf::Model& model, double release_time, double max_time, 
   // D(0), the half-kick energy of the held force at the first step: dt^2/8 F.M^-1.F with the
   // initial stable step (the first step's, the geometry being the initial one).
   Relaxed r;
-  s.dt = model.time_step;
+  s.dt = model.time.time_step;
   r.initial_half_kick = sf::test::half_kick_energy(model, s);
   s.dt = 0.0;
   sf::SpringbackConfig config;
@@ -399,7 +399,7 @@ TEST(DynamicRelaxation, KineticDampingFindsTheStaticTipDeflection) {
   sf::Model damped =
       tip_force_model("dynamic_relaxation_tip_force_damped",
                       "damping = " + number(2.0 * 2.0 * std::numbers::pi / period) + "\n");
-  damped.end_time = 16.0 * period;
+  damped.time.end_time = 16.0 * period;
   damped.loads.nodal.front().scale = sf::LoadCurve({0.0, 10.0 * period}, {0.0, 1.0});
   sf::SolutionState s = sf::make_initial_state(damped);
   sf::compute_forces(damped, s, 0.0);
@@ -451,8 +451,9 @@ TEST(DynamicRelaxation, MassScalingChangesThePathNotTheStaticAnswer) {
   const double period = first_period();
   sf::Model plain = tip_force_model("dynamic_relaxation_tip_force_plain");
   const Relaxed a = relax_tip_force(plain, 0.1 * period, 20.0 * period, 1e-8);
-  sf::Model scaled = tip_force_model("dynamic_relaxation_tip_force_scaled",
-                                     "mass_scaling_dt = " + number(4.0 * plain.time_step) + "\n");
+  sf::Model scaled =
+      tip_force_model("dynamic_relaxation_tip_force_scaled",
+                      "mass_scaling_dt = " + number(4.0 * plain.time.time_step) + "\n");
   const Relaxed b = relax_tip_force(scaled, 0.1 * period, 80.0 * period, 1e-8);
   std::printf(
       "plain: %.8f mm in %ld cycles (%ld resets); mass-scaled (added %.1f x the mass): "
@@ -486,7 +487,7 @@ TEST(DynamicRelaxation, InstabilityKeepsTheHistoryAndTheLastFrame) {
   // and the state at the stop written as the last frame.
   const std::string name = "dynamic_relaxation_unstable";
   sf::Model model = tip_force_model(name);
-  model.config.control.energy_blowup_ratio = 0.5;
+  model.time.energy_blowup_ratio = 0.5;
   const fs::path out = fs::path(SF_BINARY_DIR) / "test_output" / name / "results";
   sf::SolutionState s = sf::make_initial_state(model);
   sf::compute_forces(model, s, 0.0);

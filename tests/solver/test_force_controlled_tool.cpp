@@ -131,7 +131,7 @@ end_time = 1.0e-4
   std::printf(
       "free tool: %ld cycles (steps %.4e s), travel %.10f mm (F t^2 / 2M = %.10f), worst relative "
       "error %.2e; speed %.6f mm/s (F t / M = %.6f); kinetic / work - 1 at most %.2e\n",
-      s.cycle, model.time_step, s.tools[0].travel, exact, worst_travel, s.tools[0].speed,
+      s.cycle, model.time.time_step, s.tools[0].travel, exact, worst_travel, s.tools[0].speed,
       force * s.time / mass, worst_energy);
   // Exact for the scheme (the midpoint rule on a linear velocity): round-off over ~240 steps.
   EXPECT_LT(worst_travel, 1e-12);
@@ -163,11 +163,13 @@ damping = 2.0e5
                        "end_time = 2.0e-4\ndamping = 2.0e5\n");
   EXPECT_FALSE(config.tools[1].motion.mass.has_value());
   sf::Model model = sf::build_model(config);
-  // The default mass: the blank's, written into the model's configuration (the resolved case).
+  // The default mass: the blank's, written into the resolved case.
   ASSERT_TRUE(model.tools[1].force_control.has_value());
   EXPECT_EQ(model.tools[1].force_control->mass(), model.blank.mass.sum());
-  ASSERT_TRUE(model.config.tools[1].motion.mass.has_value());
-  EXPECT_EQ(*model.config.tools[1].motion.mass, model.blank.mass.sum());
+  const sf::CaseConfig resolved = sf::resolve_case(config, model);
+  ASSERT_TRUE(resolved.tools[1].motion.mass.has_value());
+  EXPECT_EQ(*resolved.tools[1].motion.mass, model.blank.mass.sum());
+  EXPECT_NE(model.output.resolved_case.find("mass = "), std::string::npos);
 
   const double k_holder = stiffness_sum(model, 1), k_die = stiffness_sum(model, 0);
   ASSERT_EQ(k_holder, k_die);
@@ -264,7 +266,8 @@ TEST(ForceControlledTool, BuildRefusesAMassTooSmallOrADampingTooLarge) {
 )",
                                        "end_time = 1.0e-5\n"));
   const double w_c = std::sqrt(4.0 - 4.0 * 0.81);
-  const double minimum = stiffness_sum(reference, 1) * std::pow(reference.time_step / w_c, 2.0);
+  const double minimum =
+      stiffness_sum(reference, 1) * std::pow(reference.time.time_step / w_c, 2.0);
   // The default (the blank's mass) is above it: every k_i <= m_i (w_c / dt)^2.
   EXPECT_GT(reference.blank.mass.sum(), minimum);
   const auto build_with = [](const std::string& name, const std::string& motion) {

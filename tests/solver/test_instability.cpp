@@ -44,7 +44,7 @@ TEST_F(Instability, NonFiniteForceNamesTheNodeTimeAndCycle) {
   sf::compute_forces(*model_, s, 0.0);
   s.f_int(2, 17) = std::nan("");
   const std::string message =
-      message_of([&] { sf::advance_one_step(*model_, s, model_->time_step, 0.0); });
+      message_of([&] { sf::advance_one_step(*model_, s, model_->time.time_step, 0.0); });
   ASSERT_FALSE(message.empty()) << "a NaN force must stop the run";
   EXPECT_NE(message.find("blank node 17"), std::string::npos) << message;
   EXPECT_NE(message.find("cycle 0"), std::string::npos) << message;
@@ -58,7 +58,7 @@ TEST_F(Instability, InvertedElementNamesTheElementTimeAndCycle) {
   s.x.col(moved) = s.x.col(quad[2]) + 1.5 * (s.x.col(quad[2]) - s.x.col(moved));
   s.cycle = 12;
   const std::string message =
-      message_of([&] { sf::compute_forces(*model_, s, model_->time_step); });
+      message_of([&] { sf::compute_forces(*model_, s, model_->time.time_step); });
   ASSERT_FALSE(message.empty()) << "an inverted element must stop the run";
   EXPECT_NE(message.find("cycle 12"), std::string::npos) << message;
   // The element named is one of those folded: it holds the moved node.

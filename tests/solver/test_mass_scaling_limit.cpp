@@ -48,7 +48,7 @@ end_time = 2.0e-5
 
 TEST(MassScalingLimit, TargetNeedingMoreThanTheCapAtTheStartIsAnInputError) {
   sf::CaseConfig config = strip_thrown_at_the_clamp("mass_scaling_limit_start");
-  const double dt0 = sf::build_model(config).time_step;
+  const double dt0 = sf::build_model(config).time.time_step;
   // 1.5 x the step needs 1.5^2 - 1 = 125 % more mass in every element; the cap is 1 %.
   config.control.mass_scaling_dt = 1.5 * dt0;
   config.control.mass_scaling_max_added = 0.01;
@@ -66,7 +66,7 @@ TEST(MassScalingLimit, TargetNeedingMoreThanTheCapAtTheStartIsAnInputError) {
 
 TEST(MassScalingLimit, CrushingPastTheCapStopsTheRunNamingTheKeyTimeAndCycle) {
   sf::CaseConfig config = strip_thrown_at_the_clamp("mass_scaling_limit_run");
-  const double dt0 = sf::build_model(config).time_step;
+  const double dt0 = sf::build_model(config).time.time_step;
   config.control.mass_scaling_dt = dt0;  // nothing is below the target at the start
   config.control.mass_scaling_max_added = 1e-4;
   sf::Model model = sf::build_model(config);
@@ -76,7 +76,7 @@ TEST(MassScalingLimit, CrushingPastTheCapStopsTheRunNamingTheKeyTimeAndCycle) {
   std::string message;
   double dt_previous = 0.0;
   try {
-    while (s.time < model.end_time) {
+    while (s.time < model.time.end_time) {
       const double dt = sf::compute_time_step(model, s);
       sf::advance_one_step(model, s, dt, dt_previous);
       dt_previous = dt;
@@ -89,7 +89,7 @@ TEST(MassScalingLimit, CrushingPastTheCapStopsTheRunNamingTheKeyTimeAndCycle) {
   EXPECT_NE(message.find("at t = "), std::string::npos) << message;
   EXPECT_NE(message.find("cycle "), std::string::npos) << message;
   // It stopped as soon as the cap was passed: the added mass is above it, but not far.
-  const double added = model.blank.scaling.added_mass / model.blank.physical_mass;
+  const double added = s.scaling.added_mass / model.blank.physical_mass;
   EXPECT_GT(added, 1e-4);
   EXPECT_LT(added, 1e-2);
   std::printf("%s\n(added %.4f %% at the stop)\n", message.c_str(), 100.0 * added);

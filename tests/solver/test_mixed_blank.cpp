@@ -82,11 +82,11 @@ TEST(MixedBlank, QuadsAndTrianglesRunWithTheEnergyBalance) {
   // Mass: rho t A for the whole strip (1e-12 relative), quads and triangles both counted.
   EXPECT_NEAR(model.blank.mass.sum() / (7.85e-9 * 1.0 * 1000.0), 1.0, 1e-12);
   // The triangles (smallest altitude 5 / sqrt 2 = 3.54 mm < 5 mm quads) limit the step.
-  EXPECT_GE(model.limiting_element, 20);
+  EXPECT_GE(model.time.limiting_element, 20);
   const double c = std::sqrt(210000.0 / (7.85e-9 * (1.0 - 0.09)));
   // dt = 0.9 h_min / c; 1e-9 relative: gmsh's transfinite node coordinates carry round-off of
   // ~1e-11 mm (measured 5.9e-12 relative).
-  EXPECT_NEAR(model.time_step / (0.9 * 5.0 / std::sqrt(2.0) / c), 1.0, 1e-9);
+  EXPECT_NEAR(model.time.time_step / (0.9 * 5.0 / std::sqrt(2.0) / c), 1.0, 1e-9);
 
   sf::RunOptions options;
   options.output_directory = folder / "results";

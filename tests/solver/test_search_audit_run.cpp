@@ -28,13 +28,10 @@ TEST(SearchAuditRun, RecorderCountsTheStandardSearchMissesLikeTheOracle) {
   tool.name = "trap";
   tool.surface = test::make_thin_trap();
   model.tools.push_back(std::move(tool));
-  ContactConfig cc;
-  cc.tool = "trap";
-  cc.search = "standard";
-  cc.audit = true;
-  model.config.contacts.push_back(cc);
   ContactInterface contact;
   contact.tool = 0;
+  contact.search = "standard";
+  contact.audit = true;
   contact.pair.surface = &model.tools[0].surface;
   contact.pair.search = make_contact_search("standard", model.tools[0].surface);
   contact.pair.cutoff = 0.2;

@@ -185,10 +185,10 @@ FreeVibration run_free_vibration(sf::Model& model) {
     r.max_error = std::max(r.max_error, std::abs(error));
     r.min_kinetic = std::min(r.min_kinetic, e.kinetic / e0);
     r.max_internal = std::max(r.max_internal, e.internal / e0);
-    if (state.time < 0.1 * model.end_time) {
+    if (state.time < 0.1 * model.time.end_time) {
       r.mean_error_first += error;
       ++first_count;
-    } else if (state.time > 0.9 * model.end_time) {
+    } else if (state.time > 0.9 * model.time.end_time) {
       r.mean_error_last += error;
       ++last_count;
     }
