@@ -10,6 +10,7 @@
 #include "core/errors.hpp"
 #include "core/log.hpp"
 #include "solver/explicit_driver.hpp"
+#include "solver/output_schedule.hpp"
 
 // The explicit springback route (docs/static-analysis.md, "Springback by dynamic relaxation").
 //
@@ -370,11 +371,9 @@ DynamicRelaxationResult run_dynamic_relaxation(Model& model, SolutionState& stat
       t0, frozen.nodes, frozen.sum.norm(), frozen.contact_sum.norm(), release_time,
       config.kinetic_tolerance, max_time);
 
-  // Frames: release_frames evenly over the release, one at the end.
+  // Frames: release_frames evenly over the release (steps land on them), one at the end.
   const int release_frames = std::max(2, model.output.frames / 4);
-  const double frame_interval = release_time / release_frames;
-  int frames_done = 0;
-  double next_frame_time = t0 + frame_interval;
+  OutputSchedule schedule(t0, release_time, release_frames, model.output.history_interval);
   double last_frame_time = t0;
 
   RelaxationProgress progress(model.time.progress_interval);
@@ -404,10 +403,7 @@ DynamicRelaxationResult run_dynamic_relaxation(Model& model, SolutionState& stat
             "springback: an element is being crushed",
             dt, initial_dt, s.time, s.cycle));
       }
-      const bool releasing = frames_done < release_frames;
-      if (releasing) {
-        dt = std::min(dt, next_frame_time - s.time);  // land on the release frames
-      }
+      dt = schedule.land_on_frame(s.time, dt);
       dt = std::min(dt, t_stop - s.time);
       advance_one_step(model, s, dt, dt_previous);
       dt_previous = dt;
@@ -420,18 +416,13 @@ DynamicRelaxationResult run_dynamic_relaxation(Model& model, SolutionState& stat
       restart = outcome != KineticDamping::Outcome::moving;
       result.at_rest = outcome == KineticDamping::Outcome::at_rest;
 
-      const bool frame_due = releasing && s.time >= next_frame_time * (1.0 - 1e-12);
-      if (output && (s.cycle % model.output.history_interval == 0 || frame_due)) {
+      const OutputSchedule::Due due = schedule.after_step(s.time, s.cycle);
+      if (output && due.history) {
         output->append_history(model, s);
       }
-      if (frame_due) {
-        ++frames_done;
-        if (output) {
-          output->write_frame(model, s);
-          last_frame_time = s.time;
-        }
-        next_frame_time = frames_done + 1 < release_frames ? t0 + (frames_done + 1) * frame_interval
-                                                           : release_end;
+      if (output && due.frame) {
+        output->write_frame(model, s);
+        last_frame_time = s.time;
       }
       progress.report(model, s, std::min(1.0, (s.time - t0) / release_time),
                       std::max(0.0, (s.time - release_end) / max_time), damping.running_ratio(),

@@ -9,6 +9,7 @@
 #include "core/errors.hpp"
 #include "core/log.hpp"
 #include "solver/frame_output.hpp"
+#include "solver/output_schedule.hpp"
 #include "solver/progress.hpp"
 #include "solver/springback.hpp"
 
@@ -43,8 +44,8 @@ RunSummary run_explicit(Model& model, const RunOptions& options, SolutionState* 
   }
   const double energy_scale = 1e-3 * 0.5 * s.mass.sum() * max_speed * max_speed;
 
-  const double frame_interval = model.time.end_time / model.output.frames;
-  double next_frame_time = frame_interval;
+  OutputSchedule schedule(0.0, model.time.end_time, model.output.frames,
+                          model.output.history_interval);
   const double initial_dt = model.time.time_step;
   double dt_previous = 0.0;
   double last_frame_time = 0.0;  // s, of the last frame written (the first is at t = 0)
@@ -89,20 +90,15 @@ RunSummary run_explicit(Model& model, const RunOptions& options, SolutionState* 
                           "reduce the time-step safety factor or the penalty scale");
       warn_about_added_mass();
 
-      const bool frame_due = s.time >= next_frame_time * (1.0 - 1e-12);
       // A history row every history_interval cycles and at every frame (the frame's added mass,
       // time step, energies).
-      if (output && (s.cycle % model.output.history_interval == 0 || frame_due)) {
+      const OutputSchedule::Due due = schedule.after_step(s.time, s.cycle);
+      if (output && due.history) {
         output->append_history(model, s);
       }
-      if (frame_due) {
-        if (output) {
-          output->write_frame(model, s);
-          last_frame_time = s.time;
-        }
-        while (next_frame_time <= s.time * (1.0 + 1e-12)) {
-          next_frame_time += frame_interval;  // a step longer than the frame interval
-        }
+      if (output && due.frame) {
+        output->write_frame(model, s);
+        last_frame_time = s.time;
       }
       progress.report(model, s, false);
     }

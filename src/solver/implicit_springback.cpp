@@ -6,6 +6,7 @@
 #include "core/log.hpp"
 #include "implicit/static_constraints.hpp"
 #include "solver/blank_node_name.hpp"
+#include "solver/output_schedule.hpp"
 #include "solver/springback.hpp"
 
 namespace sf {
@@ -47,7 +48,9 @@ ImplicitStepSummary run_implicit_springback(const Model& model, SolutionState& s
       model.springback ? model.springback->stabilization * body.membrane_stiffness() : 0.0;
   const double t_formed = s.time;
   const Matrix3X rotation_formed = s.rotation;
+  // The release runs over the pseudo-time of one forming frame interval, a frame per increment.
   const double frame_interval = model.time.end_time / model.output.frames;
+  OutputSchedule schedule = OutputSchedule::every_step();
   s.v.setZero();
   s.omega.setZero();
   s.f_contact.setZero();
@@ -62,7 +65,7 @@ ImplicitStepSummary run_implicit_springback(const Model& model, SolutionState& s
                           s.shell = b.state();
                           s.time = t_formed + lambda * frame_interval;
                           s.cycle += 1;
-                          if (output) {
+                          if (schedule.after_step(s.time, s.cycle).frame && output) {
                             output->write_frame(model, s);
                           }
                         });

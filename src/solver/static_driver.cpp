@@ -12,6 +12,7 @@
 #include "model/external_loads.hpp"
 #include "solver/blank_node_name.hpp"
 #include "solver/frame_output.hpp"
+#include "solver/output_schedule.hpp"
 
 namespace sf {
 namespace {
@@ -70,22 +71,20 @@ void check_automatic_holds(const Model& model, const StaticConstraints& constrai
 // Frames at the pseudo-times of control.output_frames, each written at the first converged
 // increment at or past its time (as the explicit loop does with its steps), and one of the final
 // state; a history row at every converged increment.
-class StaticOutputSchedule {
+class StaticOutput {
  public:
-  StaticOutputSchedule(FrameOutput* output, double end_time, int frames)
-      : output_(output), end_time_(end_time), interval_(end_time / frames), next_(interval_) {}
+  StaticOutput(FrameOutput* output, double end_time, int frames)
+      : output_(output), end_time_(end_time), schedule_(0.0, end_time, frames, 1) {}
 
   void record(const Model& model, const SolutionState& s, bool final_state) {
+    const OutputSchedule::Due due = schedule_.after_step(s.time, s.cycle);
     if (!output_) {
       return;
     }
     output_->append_history(model, s);
-    if (final_state || s.time >= next_ * (1.0 - 1e-12)) {
+    if (final_state || due.frame) {
       output_->write_frame(model, s);
       last_frame_time_ = s.time;
-      while (next_ <= s.time * (1.0 + 1e-12)) {
-        next_ += interval_;  // an increment longer than the frame interval
-      }
     }
   }
 
@@ -109,8 +108,7 @@ class StaticOutputSchedule {
  private:
   FrameOutput* output_;
   double end_time_;  // s, the pseudo-time of load factor 1
-  double interval_;  // s, between frames
-  double next_;      // s, the next frame's pseudo-time
+  OutputSchedule schedule_;
   double last_frame_time_ = 0.0;
 };
 
@@ -167,7 +165,7 @@ RunSummary run_static(const Model& model, const RunOptions& options, SolutionSta
            step_options.linear ? "linear" : "nonlinear", constraints.dofs.equation_count(),
            end_time, step_options.linear ? 1 : step_options.controls.increments,
            step_options.linear || step_options.controls.increments == 1 ? "" : "s");
-  StaticOutputSchedule schedule(output.get(), end_time, model.output.frames);
+  StaticOutput schedule(output.get(), end_time, model.output.frames);
   try {
     step.report =
         solve_static_step(body, constraints.dofs, load, step_options,
