@@ -416,6 +416,7 @@ DynamicRelaxationResult run_dynamic_relaxation(Model& model, SolutionState& stat
       restart = outcome != KineticDamping::Outcome::moving;
       result.at_rest = outcome == KineticDamping::Outcome::at_rest;
 
+      const PhaseTimer output_timer(s.times.output);
       const OutputSchedule::Due due = schedule.after_step(s.time, s.cycle);
       if (output && due.history) {
         output->append_history(model, s);

@@ -83,27 +83,58 @@ void update_half_kick_reference(const Model& model, SolutionState& s, double dt,
   }
 }
 
+namespace {
+
+// The node sums of a step, in one pass over the nodes (each sum in node order, as separate
+// passes would give it): the trapezoidal work increments (N mm), the damping power's sum m |v|^2
+// (N mm/s), and the kinetic and half-kick energies at the step end (whole_step_kinetic_energy).
+struct StepNodeSums {
+  double element_work = 0.0;
+  double load_work = 0.0;
+  double damping_power = 0.0;
+  double contact_work = 0.0;  // of the contact forces on the blank
+  KineticEnergy kinetic;
+};
+
+StepNodeSums sum_over_nodes(const Model& model, const SolutionState& s, double dt) {
+  StepNodeSums sums;
+  const double h = 0.5 * dt;
+  const Eigen::Index n = s.x.cols();
+  Vec3 u, u_omega;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const auto v = s.v.col(i);
+    const auto omega = s.omega.col(i);
+    sums.element_work += 0.5 * dt *
+                         ((s.f_int.col(i) + s.f_int_previous.col(i)).dot(v) +
+                          (s.m_int.col(i) + s.m_int_previous.col(i)).dot(omega));
+    sums.contact_work += 0.5 * dt * (s.f_contact.col(i) + s.f_contact_previous.col(i)).dot(v);
+    sums.load_work += 0.5 * dt *
+                      ((s.f_ext.col(i) + s.f_ext_previous.col(i)).dot(v) +
+                       (s.m_ext.col(i) + s.m_ext_previous.col(i)).dot(omega));
+    const double m = s.mass[i];
+    const double j = s.rotational_inertia[i];
+    sums.damping_power += m * v.squaredNorm() + j * omega.squaredNorm();
+    half_kick_rate(model, s, i, m, j, u, u_omega);
+    sums.kinetic.kinetic += m * (v + h * u).squaredNorm() + j * (omega + h * u_omega).squaredNorm();
+    sums.kinetic.half_kick += h * h * (m * u.squaredNorm() + j * u_omega.squaredNorm());
+  }
+  sums.kinetic.kinetic *= 0.5;
+  sums.kinetic.half_kick *= 0.5;
+  return sums;
+}
+
+}  // namespace
+
 void account_step_energies(const Model& model, SolutionState& s,
                            const ShellForceResult& element_result, double prescribed_work,
                            double time_before, double dt) {
   // The work increments by the trapezoidal rule.
   Energies& e = s.energies;
-  double element_work = 0.0;
-  double load_work = 0.0;
-  double damping_power = 0.0;
-  double contact_work = 0.0;  // of the contact forces on the blank
-  const Eigen::Index n = s.x.cols();
-  for (Eigen::Index i = 0; i < n; ++i) {
-    element_work += 0.5 * dt *
-                    ((s.f_int.col(i) + s.f_int_previous.col(i)).dot(s.v.col(i)) +
-                     (s.m_int.col(i) + s.m_int_previous.col(i)).dot(s.omega.col(i)));
-    contact_work += 0.5 * dt * (s.f_contact.col(i) + s.f_contact_previous.col(i)).dot(s.v.col(i));
-    load_work += 0.5 * dt *
-                 ((s.f_ext.col(i) + s.f_ext_previous.col(i)).dot(s.v.col(i)) +
-                  (s.m_ext.col(i) + s.m_ext_previous.col(i)).dot(s.omega.col(i)));
-    damping_power += s.mass[i] * s.v.col(i).squaredNorm() +
-                     s.rotational_inertia[i] * s.omega.col(i).squaredNorm();
-  }
+  const StepNodeSums sums = sum_over_nodes(model, s, dt);
+  const double element_work = sums.element_work;
+  const double load_work = sums.load_work;
+  const double damping_power = sums.damping_power;
+  const double contact_work = sums.contact_work;
   e.external_work += load_work + prescribed_work;
   e.damping += model.loads.damping * damping_power * dt;
   const double hourglass_work = element_result.hourglass_work;
@@ -144,9 +175,8 @@ void account_step_energies(const Model& model, SolutionState& s,
     const bool fixed = !tool.held && !model_tool.force_control && !model_tool.motion.moves();
     tool.peak_force = std::max(tool.peak_force, fixed ? std::abs(pushing) : pushing);
   }
-  const KineticEnergy kinetic = whole_step_kinetic_energy(model, s, dt);
-  e.kinetic = kinetic.kinetic + tool_kinetic;
-  e.half_kick = kinetic.half_kick;
+  e.kinetic = sums.kinetic.kinetic + tool_kinetic;
+  e.half_kick = sums.kinetic.half_kick;
 }
 
 void check_energy_blowup(const Model& model, const SolutionState& s, double energy_scale,

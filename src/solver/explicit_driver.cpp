@@ -92,6 +92,7 @@ RunSummary run_explicit(Model& model, const RunOptions& options, SolutionState* 
 
       // A history row every history_interval cycles and at every frame (the frame's added mass,
       // time step, energies).
+      const PhaseTimer output_timer(s.times.output);
       const OutputSchedule::Due due = schedule.after_step(s.time, s.cycle);
       if (output && due.history) {
         output->append_history(model, s);

@@ -16,9 +16,7 @@ void keep_previous_forces(SolutionState& s) {
   s.f_contact_previous.swap(s.f_contact);
 }
 
-}  // namespace
-
-void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previous) {
+void take_step(Model& model, SolutionState& s, double dt, double dt_previous) {
   const double time_before = s.time;  // t(n)
   update_half_kick_reference(model, s, dt, dt_previous);
   const double weight = velocity_update_weight(dt, dt_previous);
@@ -29,6 +27,19 @@ void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previ
   keep_previous_forces(s);
   const ShellForceResult elements = compute_forces(model, s, dt);  // at t(n+1)
   account_step_energies(model, s, elements, prescribed_work, time_before, dt);
+}
+
+}  // namespace
+
+void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previous) {
+  // The nodal phases' time: the step's less the element and contact passes' (timed inside).
+  const double inner_before = s.times.elements + s.times.contact;
+  double step_seconds = 0.0;
+  {
+    PhaseTimer timer(step_seconds);
+    take_step(model, s, dt, dt_previous);
+  }
+  s.times.nodal += step_seconds - (s.times.elements + s.times.contact - inner_before);
 }
 
 }  // namespace sf

@@ -70,8 +70,20 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
     r.ns_per_element_cycle = 1e9 * wall_seconds / (static_cast<double>(r.cycles) * r.elements);
   }
   if (wall_seconds > 0.0) {
-    r.element_share = s.element_seconds / wall_seconds;
-    r.contact_share = s.contact_seconds / wall_seconds;
+    r.element_share = s.times.elements / wall_seconds;
+    r.contact_share = s.times.contact / wall_seconds;
+  }
+  if (r.cycles > 0 && r.elements > 0 && r.nodes > 0) {
+    const double per_element_cycle = 1e9 / (static_cast<double>(r.cycles) * r.elements);
+    const PhaseTimes& t = s.times;
+    r.phase_ns = {t.elements * per_element_cycle,
+                  t.contact * per_element_cycle,
+                  t.time_step * per_element_cycle,
+                  t.nodal * per_element_cycle,
+                  t.output * per_element_cycle,
+                  (wall_seconds - t.elements - t.contact - t.time_step - t.nodal - t.output) *
+                      per_element_cycle};
+    r.contact_ns_per_node_cycle = 1e9 * t.contact / (static_cast<double>(r.cycles) * r.nodes);
   }
   r.energies = s.energies;
   r.peak_kinetic_ratio = s.peak_kinetic_ratio;
@@ -250,6 +262,11 @@ std::string format_run_summary(const RunSummary& r) {
     add(fmt::format("  end time            {:.6e} {}", r.end_time, u.time));
     add(fmt::format("  wall time           {:.2f} s ({:.0f} ns per element-cycle, {} elements)",
                     r.wall_seconds, r.ns_per_element_cycle, r.elements));
+    const RunSummary::PhaseCosts& p = r.phase_ns;
+    add(
+        fmt::format("  per element-cycle   elements {:.0f}, contact {:.0f}, time step {:.0f}, "
+                    "nodal {:.0f}, output {:.0f}, other {:.0f} ns",
+                    p.elements, p.contact, p.time_step, p.nodal, p.output, p.other));
     add_explicit_run_lines(r, u, add);
   }
   add_energy_lines(r, u, add);
@@ -318,6 +335,11 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
   j["ns_per_element_cycle"] = r.ns_per_element_cycle;
   j["element_time_share"] = r.element_share;
   j["contact_time_share"] = r.contact_share;
+  j["phase_ns_per_element_cycle"] = {
+      {"elements", r.phase_ns.elements},   {"contact", r.phase_ns.contact},
+      {"time_step", r.phase_ns.time_step}, {"nodal", r.phase_ns.nodal},
+      {"output", r.phase_ns.output},       {"other", r.phase_ns.other}};
+  j["contact_ns_per_node_cycle"] = r.contact_ns_per_node_cycle;
   j["elements"] = r.elements;
   j["nodes"] = r.nodes;
   j["energy_Nmm"] = {{"kinetic", r.energies.kinetic},

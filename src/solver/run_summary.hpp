@@ -63,6 +63,12 @@ struct RunSummary {
   double ns_per_element_cycle = 0.0;  ///< whole loop wall time per element and cycle
   double element_share = 0.0;         ///< share of the wall time in the element forces
   double contact_share = 0.0;         ///< share of the wall time in contact (search + penalty)
+  /// ns per element-cycle of each phase (PhaseTimes); `other` = the whole loop less the phases
+  /// (the set-up before the first step, the final output)
+  struct PhaseCosts {
+    double elements = 0.0, contact = 0.0, time_step = 0.0, nodal = 0.0, output = 0.0, other = 0.0;
+  } phase_ns;
+  double contact_ns_per_node_cycle = 0.0;  ///< contact wall time per blank node and cycle
   int elements = 0;
   int nodes = 0;
   Energies energies;

@@ -9,6 +9,7 @@
 #include "model/mass_scaling.hpp"
 #include "model/model.hpp"
 #include "solver/energies.hpp"
+#include "solver/phase_times.hpp"
 
 namespace sf {
 
@@ -76,8 +77,7 @@ struct SolutionState {
   std::vector<NodalLoad> released_loads;
   Energies energies;
   double peak_kinetic_ratio = 0.0;  ///< after the first tenth of the run
-  double element_seconds = 0.0;     ///< wall time spent in the element forces
-  double contact_seconds = 0.0;     ///< wall time spent in contact search and penalty forces
+  PhaseTimes times;                 ///< wall time per phase of the steps
 };
 
 }  // namespace sf

@@ -64,6 +64,7 @@ void keep_momentum(const Model& model, SolutionState& s, double dt) {
 }  // namespace
 
 double compute_time_step(const Model& model, SolutionState& s) {
+  const PhaseTimer timer(s.times.time_step);
   const Blank& blank = model.blank;
   if (s.scaling.enabled()) {
     s.mass_before = s.mass;  // same size: no allocation
