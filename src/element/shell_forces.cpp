@@ -37,6 +37,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
   const double kappa = part.hourglass_coefficient;
   const bool stiffness_form = part.hourglass_form == HourglassForm::stiffness;
   const SectionConstants section = make_section_constants(part.section);
+  const auto kernel = point_kernel(law);  // the material update's constants
   const int* conn = part.quads.data();
   const double* xd = x.data();
   const double* vd = v.data();
@@ -78,7 +79,8 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
 
     // 2. Material update through the thickness (shell_section_update.hpp).
     const double t = st.thickness[e];
-    const SectionResult sr = update_section(law, section, e, t, dt_d_m, dt_d_k, material_angle, st);
+    const SectionResult sr =
+        update_section(kernel, section, e, t, dt_d_m, dt_d_k, material_angle, st);
     double work = sr.work;
     // Transverse shear: elastic, shear-corrected, constant through the thickness.
     const double sxz_old = st.sxz[e];

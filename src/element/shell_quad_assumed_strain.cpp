@@ -140,6 +140,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
   const Constants c{law.E, law.nu, 5.0 / 6.0 * 0.5 * law.E / (1.0 + law.nu),
                     plane_stress_stiffness(law.E, law.nu)};
   const SectionConstants section = make_section_constants(part.section);
+  const auto kernel = point_kernel(law);  // the material update's constants
   const int* conn = part.quads.data();
   const double* material_angle = part.material_angle.empty() ? nullptr : part.material_angle.data();
   ShellForceResult result;
@@ -179,7 +180,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     //    constant through the thickness.
     const double t = st.thickness[e];
     const SectionResult sr =
-        update_section(law, section, e, t, dt * d_membrane, inc.curvature, material_angle, st);
+        update_section(kernel, section, e, t, dt * d_membrane, inc.curvature, material_angle, st);
     const Vec2 s_old(st.sxz[e], st.syz[e]);
     const Vec2 s_new = s_old + c.ks_g * inc.shear;
     st.sxz[e] = s_new(0);
