@@ -15,24 +15,21 @@
 // plastic-work equivalence, sigma . d_eps^p = d_lambda sigma_eq). With
 // S0 = sum A_i c_i^3, S1 = sum A_i lam_i c_i^3: phi' = -S1/phi, d(D phi)/dD = S0/phi > 0, so
 // r' = -(S1 + sigma_y' S0)/phi < 0 for a non-decreasing flow stress: one root, bracketed Newton.
-#include <algorithm>
-#include <cmath>
-#include <limits>
-#include <string>
-#include <type_traits>
-
-#include "core/errors.hpp"
 #include "material/hardening.hpp"
 
 namespace sf {
 
-/// Largest batch: the most through-thickness points of a shell section.
-inline constexpr int kMaxReturnLanes = 9;
+/// Lanes are processed in blocks of this many (the widest SIMD registers the kernel is built for
+/// hold 4 doubles); a batch is padded to whole blocks with idle lanes.
+inline constexpr int kReturnBlock = 4;
+/// Lanes of a batch: the most through-thickness points of a shell section (9), padded to whole
+/// blocks.
+inline constexpr int kMaxReturnLanes = 12;
 
 /// The points of one batch: inputs (modal weights, trial equivalent stress, plastic strain and
 /// flow stress at the start) and outputs (D and the new plastic strain), one lane per point.
 struct ModalReturnBatch {
-  int n = 0;                        ///< lanes in use
+  int n = 0;                        ///< lanes in use (<= 9)
   double A[3][kMaxReturnLanes];     ///< MPa^2, modal weights A_i = lam_i y_i^2
   double phi_tr[kMaxReturnLanes];   ///< MPa, trial equivalent stress
   double eps_n[kMaxReturnLanes];    ///< -, plastic strain at the start
@@ -42,105 +39,13 @@ struct ModalReturnBatch {
   double eps[kMaxReturnLanes];      ///< -, out: new plastic strain
 };
 
-namespace detail {
-
-// Flow stress and slope at eps for the return's iterate: Swift from the start of the step by its
-// binomial series (no pow for the small steps of a return), the other laws directly.
-template <class Law>
-inline FlowStress iterate_flow_stress(const Law& law, double eps, double eps_n,
-                                      const FlowStress& at_n) {
-  if constexpr (std::is_same_v<Law, SwiftHardening>) {
-    return law.evaluate_near(eps, eps_n, at_n);
-  } else {
-    return law.evaluate(eps);
-  }
-}
-
-[[noreturn]] inline void throw_no_convergence(const char* name, double phi_tr) {
-  throw InstabilityError(std::string(name) +
-                         ": return mapping did not converge (trial equivalent stress " +
-                         std::to_string(phi_tr) + " MPa)");
-}
-
-}  // namespace detail
-
 /// Solves r(D) = 0 for every lane of `b` (the first kModes modes carry weight; a J2 return has
 /// two, its third weight being zero), relative tolerance 1e-10 on the yield condition, at most
 /// 100 iterations (then InstabilityError naming `name`: only possible with non-finite input).
+/// Instantiated for kModes = 2, 3 and every hardening law (modal_return_batch.cpp), compiled for
+/// generic x86-64 and for x86-64-v3 (AVX2), chosen at run time; both give the same bits.
 template <int kModes, class Law>
-inline void solve_modal_return(ModalReturnBatch& b, const double (&lam)[3], const Law& law,
-                               const char* name) {
-  constexpr int L = kMaxReturnLanes;
-  const int n = b.n;
-  const double grow = 1.0 / std::max({lam[0], lam[1], lam[2]});
-  double D[L], lo[L], hi[L], phi[L], eps[L], sy[L], slope[L], c[3][L];
-  bool active[L];
-  for (int l = 0; l < n; ++l) {
-    D[l] = 0.0;
-    lo[l] = 0.0;
-    hi[l] = std::numeric_limits<double>::infinity();
-    phi[l] = b.phi_tr[l];
-    eps[l] = b.eps_n[l];
-    sy[l] = b.sy_n[l];  // the first pass reuses the trial check's evaluation (D = 0)
-    slope[l] = b.slope_n[l];
-    for (int i = 0; i < kModes; ++i) {
-      c[i][l] = 1.0;
-    }
-    active[l] = true;
-  }
-  int remaining = n;
-  for (int it = 0; it < 100; ++it) {
-    for (int l = 0; l < n; ++l) {
-      if (!active[l]) {
-        continue;
-      }
-      const double r = phi[l] - sy[l];
-      if (std::abs(r) <= 1e-10 * sy[l]) {
-        b.D[l] = D[l];
-        b.eps[l] = eps[l];
-        active[l] = false;
-        --remaining;
-        continue;
-      }
-      (r > 0.0 ? lo[l] : hi[l]) = D[l];
-      double s0 = 0.0;
-      double s1 = 0.0;
-      for (int i = 0; i < kModes; ++i) {
-        const double a3 = b.A[i][l] * c[i][l] * c[i][l] * c[i][l];
-        s0 += a3;
-        s1 += a3 * lam[i];
-      }
-      // Newton step; the first one (from D = 0) is replaced by the radial-return estimate
-      // D = (phi_tr - sigma_y) / (lam_eff sigma_y + sigma_y' phi_tr), lam_eff = S1/S0, which is
-      // the exact root when one mode carries the stress and the hardening is linear, and
-      // otherwise saves one or two iterations.
-      double next = it == 0 ? r / (s1 / s0 * sy[l] + slope[l] * phi[l])
-                            : D[l] - r / (-(s1 + slope[l] * s0) / phi[l]);
-      if (!(next > lo[l] && next < hi[l])) {  // Newton left the bracket (or is not finite)
-        next = std::isfinite(hi[l]) ? 0.5 * (lo[l] + hi[l]) : 2.0 * lo[l] + grow;
-      }
-      D[l] = next;
-      double phi2 = 0.0;
-      for (int i = 0; i < kModes; ++i) {
-        c[i][l] = 1.0 / (1.0 + lam[i] * next);
-        phi2 += b.A[i][l] * c[i][l] * c[i][l];
-      }
-      phi[l] = std::sqrt(phi2);
-      eps[l] = b.eps_n[l] + next * phi[l];
-      const FlowStress h =
-          detail::iterate_flow_stress(law, eps[l], b.eps_n[l], FlowStress{b.sy_n[l], b.slope_n[l]});
-      sy[l] = h.stress;
-      slope[l] = h.slope;
-    }
-    if (remaining == 0) {
-      return;
-    }
-  }
-  for (int l = 0; l < n; ++l) {
-    if (active[l]) {
-      detail::throw_no_convergence(name, b.phi_tr[l]);
-    }
-  }
-}
+void solve_modal_return(ModalReturnBatch& b, const double (&lam)[3], const Law& law,
+                        const char* name);
 
 }  // namespace sf

@@ -86,7 +86,7 @@ inline void update_points_with(const Kernel& k, const Law& law, int n, const Vec
   if (b.n == 0) {
     return;
   }
-  solve_modal_return<Kernel::kModes>(b, k.lam, law, Kernel::kName);
+  solve_modal_return<Kernel::kModes, Law>(b, k.lam, law, Kernel::kName);
   for (int l = 0; l < b.n; ++l) {
     const int p = point[l];
     const Vec3 s = k.returned_stress(trial[l], b.D[l]);
