@@ -66,7 +66,7 @@ SF_BLOCK_INLINE Block lanes_min(const Block& a, const Block& b) {
 /// i.e. the bilinear map is not invertible) or non-finite coordinates; `g` is then unspecified.
 /// x[c][i]: component c of node i.
 template <class T>
-inline auto compute_geometry_lanes(const T (&x)[3][4], GeometryLanes<T>& g) {
+SF_BLOCK_INLINE auto compute_geometry_lanes(const T (&x)[3][4], GeometryLanes<T>& g) {
   using detail::lanes_isfinite;
   using detail::lanes_min;
   using detail::lanes_sqrt;
@@ -141,7 +141,7 @@ inline auto compute_geometry_lanes(const T (&x)[3][4], GeometryLanes<T>& g) {
 
 /// Lane `j` of `lanes` (the value itself for T = double) as a ShellGeometry.
 template <class T>
-inline void unpack_geometry(const GeometryLanes<T>& lanes, int j, ShellGeometry& g) {
+SF_BLOCK_INLINE void unpack_geometry(const GeometryLanes<T>& lanes, int j, ShellGeometry& g) {
   const auto at = [j](const T& v) {
     if constexpr (std::is_same_v<T, double>) {
       return v;
