@@ -49,4 +49,27 @@ SF_GEOMETRY_CLONES void compute_quad_geometry_block(const double* xd, const doub
   }
 }
 
+SF_GEOMETRY_CLONES void compute_quad_area_block(const double* xd, const int* conn, int e0,
+                                                int count, double (&area)[kBlockLanes],
+                                                bool (&ok)[kBlockLanes]) {
+  Block xe[3][4];
+  for (int j = 0; j < kBlockLanes; ++j) {
+    // Lanes past the end repeat the last element (computed, not used).
+    const int* nodes = conn + 4 * static_cast<std::ptrdiff_t>(e0 + std::min(j, count - 1));
+    Quad3 xq;
+    gather_nodes(xd, nodes, xq);
+    for (int c = 0; c < 3; ++c) {
+      for (int i = 0; i < 4; ++i) {
+        xe[c][i][j] = xq(c, i);
+      }
+    }
+  }
+  GeometryLanes<Block> g;
+  const BlockMask valid = compute_geometry_lanes(xe, g);
+  for (int j = 0; j < count; ++j) {
+    area[j] = g.area[j];
+    ok[j] = valid[j] != 0;
+  }
+}
+
 }  // namespace sf

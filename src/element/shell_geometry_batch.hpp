@@ -26,4 +26,10 @@ struct QuadGeometryBlock {
 void compute_quad_geometry_block(const double* xd, const double* vd, const int* conn, int e0,
                                  int count, double dt, QuadGeometryBlock& out);
 
+/// The projected areas (mm^2, ShellGeometry::area) of the count (1..kBlockLanes) quads from e0 at
+/// the configuration xd, and whether each element is valid there (the time-step loop's need).
+/// Multiversioned as compute_quad_geometry_block.
+void compute_quad_area_block(const double* xd, const int* conn, int e0, int count,
+                             double (&area)[kBlockLanes], bool (&ok)[kBlockLanes]);
+
 }  // namespace sf
