@@ -1,5 +1,6 @@
 #include "element/shell_forces.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -10,6 +11,7 @@
 
 #include "core/errors.hpp"
 #include "element/shell_geometry.hpp"
+#include "element/shell_geometry_batch.hpp"
 #include "element/shell_nodal_access.hpp"
 #include "element/shell_quad_assumed_strain.hpp"
 #include "element/shell_section_update.hpp"
@@ -37,6 +39,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
   const double kappa = part.hourglass_coefficient;
   const bool stiffness_form = part.hourglass_form == HourglassForm::stiffness;
   const SectionConstants section = make_section_constants(part.section);
+  const auto kernel = point_kernel(law);  // the material update's constants
   const int* conn = part.quads.data();
   const double* xd = x.data();
   const double* vd = v.data();
@@ -47,7 +50,13 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
   const double* material_angle = part.material_angle.empty() ? nullptr : part.material_angle.data();
   ShellForceResult result;
 
+  QuadGeometryBlock geometry;  // of the block of elements holding e
   for (int e = 0; e < n_el; ++e) {
+    const int lane = e % kBlockLanes;
+    if (lane == 0) {
+      compute_quad_geometry_block(x.data(), v.data(), conn, e, std::min(kBlockLanes, n_el - e), dt,
+                                  geometry);
+    }
     const int* nodes = conn + 4 * static_cast<std::ptrdiff_t>(e);
     Quad3 xe;
     Quad3 ve;
@@ -61,9 +70,11 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     }
 
     // 1. Velocity strains on the mid-step configuration (exact zero for a rigid rotation step).
-    ShellGeometry gm;
     const Quad3 xm = xe - (0.5 * dt) * ve;
-    compute_shell_geometry_or_throw(xm, e, "mid-step", gm);
+    const ShellGeometry& gm = geometry.mid[lane];
+    if (!geometry.mid_ok[lane]) {
+      throw_invalid_geometry(e, "mid-step");
+    }
     const Quad3 vl = gm.frame.transpose() * ve;
     const Quad3 wl = gm.frame.transpose() * we;
     const Row4 bx = gm.b.row(0);
@@ -78,7 +89,8 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
 
     // 2. Material update through the thickness (shell_section_update.hpp).
     const double t = st.thickness[e];
-    const SectionResult sr = update_section(law, section, e, t, dt_d_m, dt_d_k, material_angle, st);
+    const SectionResult sr =
+        update_section(kernel, section, e, t, dt_d_m, dt_d_k, material_angle, st);
     double work = sr.work;
     // Transverse shear: elastic, shear-corrected, constant through the thickness.
     const double sxz_old = st.sxz[e];
@@ -100,8 +112,10 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     st.thickness[e] = t * (1.0 + sr.d_ezz_mean);
 
     // 3. Nodal forces and moments on the end-of-step configuration (conjugate to step 1).
-    ShellGeometry g;
-    compute_shell_geometry_or_throw(xe, e, "end of step", g);
+    const ShellGeometry& g = geometry.end[lane];
+    if (!geometry.end_ok[lane]) {
+      throw_invalid_geometry(e, "end of step");
+    }
     const double a = g.area;
     const Row4 gx = g.b.row(0);
     const Row4 gy = g.b.row(1);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "element/shell_geometry.hpp"
+#include "element/shell_geometry_batch.hpp"
 #include "element/shell_triangle_geometry.hpp"
 
 namespace sf {
@@ -42,14 +43,14 @@ void compute_lumped_mass(const ShellPart& part, const Matrix3X& x, const ShellSt
 
 namespace {
 
-// L / c of one element: L = A / max side (LS-DYNA ISDO = 0), c the plate wave speed.
-double element_time_step(const Quad3& xe, int e, double c, ShellGeometry& g) {
-  compute_shell_geometry_or_throw(xe, e, "time step", g);
+// L / c of quad e with projected area `area` (compute_shell_geometry): L = A / max side (LS-DYNA
+// ISDO = 0), c the plate wave speed.
+double quad_time_step(const Quad3& xe, double area, double c) {
   double side2 = 0.0;
   for (int i = 0; i < 4; ++i) {
     side2 = std::max(side2, (xe.col((i + 1) % 4) - xe.col(i)).squaredNorm());
   }
-  return g.area / (std::sqrt(side2) * c);
+  return area / (std::sqrt(side2) * c);
 }
 
 // L / c of triangle e (element index, quads first): L = 2 A / max side, the smallest altitude.
@@ -60,23 +61,42 @@ double triangle_time_step(const Matrix3X& x, const ShellPart& part, int e, doubl
   return triangle_characteristic_length(tg) / c;
 }
 
+// Calls step(e, dt) for every element in order, dt = L / c; the quads' areas come in blocks of
+// kBlockLanes from the SIMD geometry kernel (the time loop evaluates this every cycle).
+template <class Step>
+void for_each_time_step(const ShellPart& part, const Matrix3X& x, Step step) {
+  const double c = plane_stress_wave_speed(young_modulus(part.material),
+                                           poisson_ratio(part.material), part.density);
+  const int n_quads = static_cast<int>(part.quads.cols());
+  for (int e0 = 0; e0 < n_quads; e0 += kBlockLanes) {
+    const int count = std::min(kBlockLanes, n_quads - e0);
+    double area[kBlockLanes];
+    bool ok[kBlockLanes];
+    compute_quad_area_block(x.data(), part.quads.data(), e0, count, area, ok);
+    for (int j = 0; j < count; ++j) {
+      const int e = e0 + j;
+      if (!ok[j]) {
+        throw_invalid_geometry(e, "time step");
+      }
+      step(e, quad_time_step(gather_quad(x, part.quads, e), area[j], c));
+    }
+  }
+  TriangleGeometry tg;
+  for (int e = n_quads; e < element_count(part); ++e) {
+    step(e, triangle_time_step(x, part, e, c, tg));
+  }
+}
+
 }  // namespace
 
 StableStep compute_stable_time_step(const ShellPart& part, const Matrix3X& x,
                                     const ShellState& /*state*/) {
-  const double c = plane_stress_wave_speed(young_modulus(part.material),
-                                           poisson_ratio(part.material), part.density);
   StableStep best{std::numeric_limits<double>::infinity(), -1};
-  ShellGeometry g;
-  TriangleGeometry tg;
-  const int n_quads = static_cast<int>(part.quads.cols());
-  for (int e = 0; e < element_count(part); ++e) {
-    const double dt = e < n_quads ? element_time_step(gather_quad(x, part.quads, e), e, c, g)
-                                  : triangle_time_step(x, part, e, c, tg);
+  for_each_time_step(part, x, [&best](int e, double dt) {
     if (dt < best.dt) {
       best = {dt, e};
     }
-  }
+  });
   return best;
 }
 
@@ -85,20 +105,13 @@ StableStep compute_element_time_steps(const ShellPart& part, const Matrix3X& x,
   if (element_dt.size() != static_cast<std::size_t>(element_count(part))) {
     throw std::invalid_argument("compute_element_time_steps: one value per element expected");
   }
-  const double c = plane_stress_wave_speed(young_modulus(part.material),
-                                           poisson_ratio(part.material), part.density);
   StableStep best{std::numeric_limits<double>::infinity(), -1};
-  ShellGeometry g;
-  TriangleGeometry tg;
-  const int n_quads = static_cast<int>(part.quads.cols());
-  for (int e = 0; e < element_count(part); ++e) {
-    const double dt = e < n_quads ? element_time_step(gather_quad(x, part.quads, e), e, c, g)
-                                  : triangle_time_step(x, part, e, c, tg);
+  for_each_time_step(part, x, [&best, element_dt](int e, double dt) {
     element_dt[static_cast<std::size_t>(e)] = dt;
     if (dt < best.dt) {
       best = {dt, e};
     }
-  }
+  });
   return best;
 }
 

@@ -54,21 +54,4 @@ inline MaterialFrame make_material_frame(const Vec3& dt_d_m, const Vec3& dt_d_k,
   return axes;
 }
 
-// One point's update: isotropic laws in the element frame; laws with material axes in those axes
-// (state rotated in, stress rotated back out: the stored stress stays in the element frame).
-template <bool kMaterialAxes, class Law, class Frame>
-inline PlaneStressUpdate update_point(const Law& law, const typename Law::State& old,
-                                      const Vec3& d_eps, double z, const Frame& axes) {
-  if constexpr (kMaterialAxes) {
-    typename Law::State old_mat;
-    old_mat.stress = rotate_stress(old.stress, axes.c, axes.s);
-    old_mat.eps_p = old.eps_p;
-    PlaneStressUpdate up = law.update(old_mat, axes.d_m - z * axes.d_k);
-    up.stress = rotate_stress(up.stress, axes.c, -axes.s);
-    return up;
-  } else {
-    return law.update(old, d_eps);
-  }
-}
-
 }  // namespace sf

@@ -1,6 +1,7 @@
 #include "element/shell_part.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -123,6 +124,9 @@ ShellState make_shell_state(int n_elements, int n_points, double thickness) {
   st.syy.assign(n, 0.0);
   st.sxy.assign(n, 0.0);
   st.eps_p.assign(n, 0.0);
+  // Not yet evaluated: no plastic strain equals NaN.
+  st.flow_stress.assign(n, 0.0);
+  st.flow_stress_at.assign(n, std::numeric_limits<double>::quiet_NaN());
   st.sxz.assign(n_elements, 0.0);
   st.syz.assign(n_elements, 0.0);
   st.thickness.assign(n_elements, thickness);

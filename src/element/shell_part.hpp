@@ -42,9 +42,16 @@ struct ShellState {
   int n_points = 0;
   std::vector<double> sxx, syy, sxy;  ///< MPa, in-plane stress per point
   std::vector<double> eps_p;          ///< -, equivalent plastic strain per point
-  std::vector<double> sxz, syz;       ///< MPa, per element: transverse shear stress averaged over
-                                      ///< the thickness (Q / t, shear-corrected)
-  std::vector<double> thickness;      ///< mm, per element, current
+  /// MPa, per point: the flow stress at the plastic strain flow_stress_at (set by the element
+  /// loops' material update, FlowStressCache in material/plane_stress_batch.hpp), so that a yield
+  /// check needs no hardening evaluation. Where flow_stress_at differs from eps_p (at the start,
+  /// or after eps_p was set from outside) the flow stress is evaluated again. Belongs to the
+  /// part's hardening law: a state moved to another law must be made again. Empty: not stored.
+  std::vector<double> flow_stress;
+  std::vector<double> flow_stress_at;  ///< -, per point, see flow_stress
+  std::vector<double> sxz, syz;        ///< MPa, per element: transverse shear stress averaged over
+                                       ///< the thickness (Q / t, shear-corrected)
+  std::vector<double> thickness;       ///< mm, per element, current
   /// Hourglass (stabilisation) resultants per element, kHourglassModes per element (index
   /// kHourglassModes e + j). Belytschko-Tsay, stiffness form, in the element's corotational
   /// frame: j = 0, 1 in-plane (N), 2 out-of-plane (N), 3, 4 rotational (N mm), 5 unused. Assumed

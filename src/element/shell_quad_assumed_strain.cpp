@@ -9,6 +9,7 @@
 #include "core/errors.hpp"
 #include "element/shell_directors.hpp"
 #include "element/shell_geometry.hpp"
+#include "element/shell_geometry_batch.hpp"
 #include "element/shell_nodal_access.hpp"
 #include "element/shell_quad_directors.hpp"
 #include "element/shell_quad_hourglass.hpp"
@@ -140,11 +141,18 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
   const Constants c{law.E, law.nu, 5.0 / 6.0 * 0.5 * law.E / (1.0 + law.nu),
                     plane_stress_stiffness(law.E, law.nu)};
   const SectionConstants section = make_section_constants(part.section);
+  const auto kernel = point_kernel(law);  // the material update's constants
   const int* conn = part.quads.data();
   const double* material_angle = part.material_angle.empty() ? nullptr : part.material_angle.data();
   ShellForceResult result;
 
+  QuadGeometryBlock geometry;  // of the block of elements holding e
   for (int e = 0; e < n_el; ++e) {
+    const int lane = e % kBlockLanes;
+    if (lane == 0) {
+      compute_quad_geometry_block(x.data(), v.data(), conn, e, std::min(kBlockLanes, n_el - e), dt,
+                                  geometry);
+    }
     const int* nodes = conn + 4 * static_cast<std::ptrdiff_t>(e);
     Quad3 xe;
     Quad3 ve;
@@ -160,10 +168,12 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     // 1. Strain increments. Membrane: the one-point velocity strain on the mid-step geometry
     //    (exact zero for a rigid rotation step); curvature and transverse shear: the change of the
     //    director measures from the start to the end of the step, in the mid-step frame.
-    ShellGeometry gm;
     const Quad3 xm = xe - (0.5 * dt) * ve;
     const Quad3 xs = xe - dt * ve;
-    compute_shell_geometry_or_throw(xm, e, "mid-step", gm);
+    const ShellGeometry& gm = geometry.mid[lane];
+    if (!geometry.mid_ok[lane]) {
+      throw_invalid_geometry(e, "mid-step");
+    }
     const Quad3 vl = gm.frame.transpose() * ve;
     const Vec3 d_membrane(gm.b.row(0).dot(vl.row(0)), gm.b.row(1).dot(vl.row(1)),
                           gm.b.row(1).dot(vl.row(0)) + gm.b.row(0).dot(vl.row(1)));
@@ -179,7 +189,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     //    constant through the thickness.
     const double t = st.thickness[e];
     const SectionResult sr =
-        update_section(law, section, e, t, dt * d_membrane, inc.curvature, material_angle, st);
+        update_section(kernel, section, e, t, dt * d_membrane, inc.curvature, material_angle, st);
     const Vec2 s_old(st.sxz[e], st.syz[e]);
     const Vec2 s_new = s_old + c.ks_g * inc.shear;
     st.sxz[e] = s_new(0);
@@ -204,8 +214,10 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
                                                   membrane_hg, inc.hourglass, inc.shear_linear, hs);
 
     // 4. Nodal forces and moments on the end-of-step configuration (conjugate to step 1).
-    ShellGeometry g;
-    compute_shell_geometry_or_throw(xe, e, "end of step", g);
+    const ShellGeometry& g = geometry.end[lane];
+    if (!geometry.end_ok[lane]) {
+      throw_invalid_geometry(e, "end of step");
+    }
     const double a = g.area;
     Quad3 fl;
     fl.row(0) = a * (sr.n(0) * g.b.row(0) + sr.n(2) * g.b.row(1));

@@ -9,6 +9,7 @@
 #include "core/types.hpp"
 #include "element/shell_material_axes.hpp"
 #include "element/shell_part.hpp"
+#include "material/plane_stress_batch.hpp"
 
 namespace sf {
 
@@ -56,16 +57,25 @@ struct SectionResult {
   double stress_change_work = 0.0;
 };
 
+/// The flow-stress store of the points from `base` on (none if the state has none).
+inline FlowStressCache flow_stress_cache(ShellState& st, std::size_t base) {
+  if (st.flow_stress.size() != st.eps_p.size() || st.flow_stress_at.size() != st.eps_p.size()) {
+    return {};
+  }
+  return {st.flow_stress.data() + base, st.flow_stress_at.data() + base};
+}
+
 /// Updates the points of element e (state indices e * n_points + k) for the strain increments
 /// dt d_m (membrane) and dt d_k (curvature): d_eps(z) = dt d_m - z dt d_k, z = zeta t / 2, t the
-/// element's thickness (mm). Laws with material axes (Hill48) work in the element's material frame
-/// (material_angle[e], rad, or 0 when material_angle is null); the stored stress stays in the
-/// element frame.
-template <class Law>
-inline SectionResult update_section(const Law& law, const SectionConstants& sc, int e, double t,
-                                    const Vec3& dt_d_m, const Vec3& dt_d_k,
+/// element's thickness (mm), with the law's kernel (point_kernel, formed once per loop). Laws with
+/// material axes (Hill48) work in the element's material frame (material_angle[e], rad, or 0 when
+/// material_angle is null); the stored stress stays in the element frame. The points are updated
+/// as one batch (material/plane_stress_batch.hpp); the resultants are summed bottom to top.
+template <class Kernel>
+inline SectionResult update_section(const Kernel& kernel, const SectionConstants& sc, int e,
+                                    double t, const Vec3& dt_d_m, const Vec3& dt_d_k,
                                     const double* material_angle, ShellState& st) {
-  constexpr bool material_axes = kUsesMaterialAxes<Law>;
+  constexpr bool material_axes = Kernel::kMaterialAxes;
   // Laws with material axes: components in the material axes (the element frame turned by the
   // element's material angle theta); strains are linear in z, so dt d_m and dt d_k are turned
   // once per element. Isotropic laws get an empty struct: their loop is the plain one.
@@ -77,28 +87,50 @@ inline SectionResult update_section(const Law& law, const SectionConstants& sc, 
   double* syy = st.syy.data();
   double* sxy = st.sxy.data();
   double* eps = st.eps_p.data();
-  SectionResult r;
-  const std::size_t base = static_cast<std::size_t>(e) * static_cast<std::size_t>(sc.n_points);
-  for (int k = 0; k < sc.n_points; ++k) {
+  const int n = sc.n_points;
+  const std::size_t base = static_cast<std::size_t>(e) * static_cast<std::size_t>(n);
+  constexpr int kMax = kMaxReturnLanes;
+  Vec3 old_stress[kMax];
+  Vec3 d_eps[kMax];
+  double eps_n[kMax];
+  [[maybe_unused]] Vec3 law_stress[material_axes ? kMax : 1];  // material axes
+  [[maybe_unused]] Vec3 law_d_eps[material_axes ? kMax : 1];
+  for (int k = 0; k < n; ++k) {
     const std::size_t i = base + static_cast<std::size_t>(k);
     const double z = t * sc.half_zeta[k];
-    const double hw = t * sc.half_weight[k];
     // dt (d_m - z d_k), as dt d_m - z (dt d_k): equal to round-off.
-    const Vec3 d_eps = dt_d_m - z * dt_d_k;
-    typename Law::State old;
-    old.stress = Vec3(sxx[i], syy[i], sxy[i]);
-    old.eps_p = eps[i];
-    const PlaneStressUpdate up = update_point<material_axes>(law, old, d_eps, z, axes);
-    sxx[i] = up.stress(0);
-    syy[i] = up.stress(1);
-    sxy[i] = up.stress(2);
-    eps[i] = up.eps_p;
-    r.n += hw * up.stress;
-    r.m -= (hw * z) * up.stress;
-    r.d_ezz_mean += sc.half_weight[k] * up.d_ezz;
-    r.work += hw * 0.5 * (old.stress + up.stress).dot(d_eps);
-    r.plastic_work += hw * up.d_plastic_work;
-    r.stress_change_work += hw * (up.stress - old.stress).dot(d_eps);
+    d_eps[k] = dt_d_m - z * dt_d_k;
+    old_stress[k] = Vec3(sxx[i], syy[i], sxy[i]);
+    eps_n[k] = eps[i];
+    if constexpr (material_axes) {
+      law_stress[k] = rotate_stress(old_stress[k], axes.c, axes.s);
+      law_d_eps[k] = axes.d_m - z * axes.d_k;
+    }
+  }
+  PlaneStressUpdate up[kMax];
+  if constexpr (material_axes) {
+    update_points(kernel, n, law_stress, eps_n, law_d_eps, flow_stress_cache(st, base), up);
+  } else {
+    update_points(kernel, n, old_stress, eps_n, d_eps, flow_stress_cache(st, base), up);
+  }
+  SectionResult r;
+  for (int k = 0; k < n; ++k) {
+    const std::size_t i = base + static_cast<std::size_t>(k);
+    if constexpr (material_axes) {
+      up[k].stress = rotate_stress(up[k].stress, axes.c, -axes.s);  // back to the element frame
+    }
+    const double z = t * sc.half_zeta[k];
+    const double hw = t * sc.half_weight[k];
+    sxx[i] = up[k].stress(0);
+    syy[i] = up[k].stress(1);
+    sxy[i] = up[k].stress(2);
+    eps[i] = up[k].eps_p;
+    r.n += hw * up[k].stress;
+    r.m -= (hw * z) * up[k].stress;
+    r.d_ezz_mean += sc.half_weight[k] * up[k].d_ezz;
+    r.work += hw * 0.5 * (old_stress[k] + up[k].stress).dot(d_eps[k]);
+    r.plastic_work += hw * up[k].d_plastic_work;
+    r.stress_change_work += hw * (up[k].stress - old_stress[k]).dot(d_eps[k]);
   }
   return r;
 }

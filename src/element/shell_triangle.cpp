@@ -31,6 +31,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
   const double* material_angle = part.material_angle.empty() ? nullptr : part.material_angle.data();
   const double ks_g = 5.0 / 6.0 * 0.5 * law.E / (1.0 + law.nu);  // shear correction factor 5/6
   const SectionConstants section = make_section_constants(part.section);
+  const auto kernel = point_kernel(law);  // the material update's constants
   const int* conn = part.triangles.data();
   const double* xd = x.data();
   const double* vd = v.data();
@@ -71,7 +72,8 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
 
     // 2. Material update through the thickness (shell_section_update.hpp).
     const double t = st.thickness[e];
-    const SectionResult sr = update_section(law, section, e, t, dt_d_m, dt_d_k, material_angle, st);
+    const SectionResult sr =
+        update_section(kernel, section, e, t, dt_d_m, dt_d_k, material_angle, st);
     double work = sr.work;
     // Transverse shear: elastic, shear-corrected, constant through the thickness, with the
     // Lyly-Stenberg-Vihinen factor t^2 / (t^2 + alpha h^2) on the modulus.

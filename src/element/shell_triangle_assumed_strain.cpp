@@ -35,6 +35,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
   const double* material_angle = part.material_angle.empty() ? nullptr : part.material_angle.data();
   const double ks_g = 5.0 / 6.0 * 0.5 * law.E / (1.0 + law.nu);  // shear correction factor 5/6
   const SectionConstants section = make_section_constants(part.section);
+  const auto kernel = point_kernel(law);  // the material update's constants
   ShellForceResult result;
 
   for (int k = 0; k < n_tri; ++k) {
@@ -76,7 +77,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     // 2. Material update; transverse shear elastic with the Lyly-Stenberg-Vihinen factor.
     const double t = st.thickness[e];
     const SectionResult sr =
-        update_section(law, section, e, t, dt * d_membrane, d_curvature, material_angle, st);
+        update_section(kernel, section, e, t, dt * d_membrane, d_curvature, material_angle, st);
     const double shear_modulus = ks_g * triangle_shear_factor(t, gm.longest_side2);
     const Vec2 s_old(st.sxz[e], st.syz[e]);
     const Vec2 s_new = s_old + shear_modulus * d_shear;

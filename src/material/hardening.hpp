@@ -34,17 +34,30 @@ struct SwiftHardening {
   /// (eps0 + eps_ref), by its binomial series to x^5 for |x| <= 1e-2 (truncation below
   /// |C(n,6)| x^6 < 1e-13 relative for 0 <= n <= 1; a return-mapping step is far smaller).
   FlowStress evaluate_near(double eps_p, double eps_ref, const FlowStress& at_ref) const {
-    const double x = (eps_p - eps_ref) / (eps0 + eps_ref);
-    if (!(std::abs(x) <= 1e-2)) {
+    const double x = near_ratio(eps_p, eps_ref);
+    if (!(std::abs(x) <= kNearRange)) {
       return evaluate(eps_p);
     }
+    const double s = near_stress(x, at_ref.stress);
+    return {s, n * s / (eps0 + eps_p)};
+  }
+  /// The largest |x| of evaluate_near's series.
+  static constexpr double kNearRange = 1e-2;
+  /// x = (eps_p - eps_ref) / (eps0 + eps_ref) of evaluate_near. T: double, or a SIMD vector of
+  /// doubles (the same operations lane by lane).
+  template <class T>
+  T near_ratio(const T& eps_p, const T& eps_ref) const {
+    return (eps_p - eps_ref) / (eps0 + eps_ref);
+  }
+  /// sigma_y(eps_ref) (1 + x)^n by the series of evaluate_near (|x| <= kNearRange).
+  template <class T>
+  T near_stress(const T& x, const T& stress_ref) const {
     const double c1 = n;
     const double c2 = c1 * (n - 1.0) / 2.0;
     const double c3 = c2 * (n - 2.0) / 3.0;
     const double c4 = c3 * (n - 3.0) / 4.0;
     const double c5 = c4 * (n - 4.0) / 5.0;
-    const double s = at_ref.stress * (1.0 + x * (c1 + x * (c2 + x * (c3 + x * (c4 + x * c5)))));
-    return {s, n * s / (eps0 + eps_p)};
+    return stress_ref * (1.0 + x * (c1 + x * (c2 + x * (c3 + x * (c4 + x * c5)))));
   }
 };
 
