@@ -27,12 +27,11 @@ double kinetic_energy(const Model& model, const SolutionState& s) {
 // and current (possibly mass-scaled) masses as update_velocities; zero in the components the
 // constraints hold at zero and those a prescribed velocity holds (there the velocity stays at the
 // value the prescription gave it).
-// mass (tonne) and inertia (tonne mm^2) are the node's.
-void half_kick_rate(const Model& model, const SolutionState& s, Eigen::Index i, double mass,
-                    double inertia, Vec3& u, Vec3& u_omega) {
+void half_kick_rate(const Model& model, const SolutionState& s, Eigen::Index i, double inverse_mass,
+                    double inverse_inertia, Vec3& u, Vec3& u_omega) {
   const double c = model.loads.damping;
-  u = (1.0 / mass) * (s.f_ext.col(i) + s.f_contact.col(i) - s.f_int.col(i)) - c * s.v.col(i);
-  u_omega = (1.0 / inertia) * (s.m_ext.col(i) - s.m_int.col(i)) - c * s.omega.col(i);
+  u = inverse_mass * (s.f_ext.col(i) + s.f_contact.col(i) - s.f_int.col(i)) - c * s.v.col(i);
+  u_omega = inverse_inertia * (s.m_ext.col(i) - s.m_int.col(i)) - c * s.omega.col(i);
   const NodalConstraints& constraints = model.constraints;
   const unsigned held = constraints.constrained_bits(static_cast<std::size_t>(i));
   if (held != 0) {
@@ -60,7 +59,7 @@ KineticEnergy whole_step_kinetic_energy(const Model& model, const SolutionState&
   for (Eigen::Index i = 0; i < n; ++i) {
     const double m = s.mass[i];
     const double j = s.rotational_inertia[i];
-    half_kick_rate(model, s, i, m, j, u, u_omega);
+    half_kick_rate(model, s, i, s.inverse_mass[i], s.inverse_inertia[i], u, u_omega);
     e.kinetic +=
         m * (s.v.col(i) + h * u).squaredNorm() + j * (s.omega.col(i) + h * u_omega).squaredNorm();
     e.half_kick += h * h * (m * u.squaredNorm() + j * u_omega.squaredNorm());
@@ -114,7 +113,7 @@ StepNodeSums sum_over_nodes(const Model& model, const SolutionState& s, double d
     const double m = s.mass[i];
     const double j = s.rotational_inertia[i];
     sums.damping_power += m * v.squaredNorm() + j * omega.squaredNorm();
-    half_kick_rate(model, s, i, m, j, u, u_omega);
+    half_kick_rate(model, s, i, s.inverse_mass[i], s.inverse_inertia[i], u, u_omega);
     sums.kinetic.kinetic += m * (v + h * u).squaredNorm() + j * (omega + h * u_omega).squaredNorm();
     sums.kinetic.half_kick += h * h * (m * u.squaredNorm() + j * u_omega.squaredNorm());
   }

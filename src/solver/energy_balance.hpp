@@ -13,11 +13,11 @@ namespace sf {
 /// v(0), which are already at a whole step.
 double kinetic_energy(const Model& model, const SolutionState& state);
 
-/// The rate u (mm/s^2, rad/s^2) of node i's half kicks: the force sum over the given mass (tonne)
-/// and inertia (tonne mm^2), less the damping on the half-step velocity; zero in the components
-/// the constraints hold (docs/time-integration.md).
-void half_kick_rate(const Model& model, const SolutionState& state, Eigen::Index i, double mass,
-                    double inertia, Vec3& u, Vec3& u_omega);
+/// The rate u (mm/s^2, rad/s^2) of node i's half kicks: the force sum times the given inverse
+/// mass (1/tonne) and inverse inertia (1/(tonne mm^2)), less the damping on the half-step
+/// velocity; zero in the components the constraints hold (docs/time-integration.md).
+void half_kick_rate(const Model& model, const SolutionState& state, Eigen::Index i,
+                    double inverse_mass, double inverse_inertia, Vec3& u, Vec3& u_omega);
 
 /// The kinetic energy at the step end and the half-kick energy D (N mm).
 struct KineticEnergy {

@@ -18,6 +18,7 @@ SolutionState make_initial_state(const Model& model) {
   s.mass = model.blank.mass;
   s.rotational_inertia = model.blank.rotational_inertia;
   s.scaling = model.blank.scaling;
+  update_inverse_masses(s);
   if (s.scaling.enabled()) {
     s.mass_before = s.mass;
     s.inertia_before = s.rotational_inertia;

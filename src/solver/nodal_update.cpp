@@ -18,8 +18,8 @@ bool add_force_kicks(const Model& model, SolutionState& s, double weight) {
   const double c = model.loads.damping;
   double check = 0.0;
   for (Eigen::Index i = 0; i < n; ++i) {
-    const double inv_m = 1.0 / s.mass[i];
-    const double inv_i = 1.0 / s.rotational_inertia[i];
+    const double inv_m = s.inverse_mass[i];
+    const double inv_i = s.inverse_inertia[i];
     s.v.col(i) += (weight * inv_m) * (s.f_ext.col(i) + s.f_contact.col(i) - s.f_int.col(i)) -
                   (weight * c) * s.v.col(i);
     s.omega.col(i) +=

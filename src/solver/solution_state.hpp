@@ -33,6 +33,10 @@ struct ToolState {
   bool held = false;
 };
 
+struct SolutionState;
+/// Sets state.inverse_mass and inverse_inertia from the masses (after they change).
+void update_inverse_masses(SolutionState& state);
+
 struct SolutionState {
   double time = 0.0;  ///< s
   long cycle = 0;
@@ -62,6 +66,8 @@ struct SolutionState {
   VectorX mass;                ///< tonne per node (grows under mass scaling)
   VectorX rotational_inertia;  ///< tonne mm^2 per node (likewise)
   MassScaling scaling;         ///< the elements' density factors and the added mass so far
+  VectorX inverse_mass;        ///< 1/tonne per node, 1 / mass (update_inverse_masses)
+  VectorX inverse_inertia;     ///< 1/(tonne mm^2) per node, 1 / rotational_inertia
   VectorX mass_before;         ///< tonne per node, scratch: the masses before this cycle's scaling
   VectorX inertia_before;      ///< tonne mm^2 per node, likewise
   /// N, the contact forces on the blank nodes a step ago (for the contact work increment).
@@ -79,5 +85,10 @@ struct SolutionState {
   double peak_kinetic_ratio = 0.0;  ///< after the first tenth of the run
   PhaseTimes times;                 ///< wall time per phase of the steps
 };
+
+inline void update_inverse_masses(SolutionState& s) {
+  s.inverse_mass = s.mass.cwiseInverse();  // same size after the first call: no allocation
+  s.inverse_inertia = s.rotational_inertia.cwiseInverse();
+}
 
 }  // namespace sf

@@ -40,7 +40,7 @@ void keep_momentum(const Model& model, SolutionState& s, double dt) {
     if (m_new == m_old && i_new == i_old) {
       continue;
     }
-    half_kick_rate(model, s, i, m_old, i_old, u, u_omega);
+    half_kick_rate(model, s, i, 1.0 / m_old, 1.0 / i_old, u, u_omega);
     if (m_new != m_old) {
       const double r = m_old / m_new;
       const double drop = 0.5 * (1.0 - r) * m_old * (s.v.col(i) + h_last * u).squaredNorm();
@@ -74,6 +74,7 @@ double compute_time_step(const Model& model, SolutionState& s) {
       scale_mass_to_time_step(blank.part, s.x, s.scaling, s.mass, s.rotational_inertia);
   if (check.mass_added > 0.0) {
     keep_momentum(model, s, check.dt);
+    update_inverse_masses(s);
   }
   const double limit = model.time.mass_scaling_max_added;
   if (check.mass_added > 0.0 && limit > 0.0 && s.scaling.added_mass > limit * blank.physical_mass) {
