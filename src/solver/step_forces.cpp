@@ -81,9 +81,7 @@ void compute_contact_forces(Model& model, SolutionState& s, double dt) {
 }  // namespace
 
 ShellForceResult compute_forces(Model& model, SolutionState& s, double dt) {
-  if (!model.loads.empty() || !s.released_loads.empty()) {
-    compute_external_forces(model, s.time, s.x, s.f_ext, s.m_ext, s.released_loads);
-  }  // else f_ext and m_ext stay as make_initial_state left them: zero
+  compute_external_forces(model, s.time, s.x, s.f_ext, s.m_ext, s.released_loads);
   const Clock::time_point element_start = Clock::now();
   const ShellForceResult elements = compute_internal_forces(model, s, dt);
   s.times.elements += seconds_since(element_start);
