@@ -97,8 +97,9 @@ struct Tool {
 
 /// A contact pair between all blank nodes and one tool's triangles.
 struct ContactInterface {
-  int tool = -1;  ///< index into Model::tools
-  ContactPair pair;
+  int tool = -1;       ///< index into Model::tools
+  ContactPair pair;    ///< fixed for the run
+  ContactState state;  ///< what changes during the run (sized by the first contact call)
 };
 
 struct Model {

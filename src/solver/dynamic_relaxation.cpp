@@ -158,7 +158,7 @@ void switch_contact_off(Model& model, const FrameOutput* output) {
     for (ContactInterface& c : model.contacts) {
       c.pair.stiffness.setZero();
       c.pair.friction = FrictionParameters{};
-      c.pair.stick_force.setZero();
+      c.state.stick_force.setZero();
     }
     return;
   }
