@@ -91,13 +91,21 @@ void add_node_force(const ContactPair& pair, ContactState& state,
   result.force_on_tool -= f;
 }
 
+// What happened to a node in one call.
+enum class NodeOutcome {
+  skipped,  ///< its distance bound proved it beyond the cutoff: not searched
+  apart,    ///< searched, not in contact
+  pressed,  ///< in contact: a force was added
+};
+
 // The contact of node i at p: searched (or skipped when its distance bound allows), then the
-// force if it penetrates. Whether it is in contact.
-bool node_contact(const ContactPair& pair, ContactState& state, const ContactKinematics& kinematics,
-                  int i, const Vec3& p, ContactResult& result, Matrix3X& f_contact) {
+// force if it penetrates.
+NodeOutcome node_contact(const ContactPair& pair, ContactState& state,
+                         const ContactKinematics& kinematics, int i, const Vec3& p,
+                         ContactResult& result, Matrix3X& f_contact) {
   const bool bounded = pair.distance_bound != nullptr;
   if (bounded && provably_beyond_cutoff(pair, state.distance_bounds, i, p)) {
-    return false;
+    return NodeOutcome::skipped;
   }
   ClosestPoint cp;
   pair.search->find_closest_for_node(state.search_cache.get(), i, p, pair.cutoff, cp);
@@ -109,7 +117,7 @@ bool node_contact(const ContactPair& pair, ContactState& state, const ContactKin
     }
   }
   if (cp.triangle < 0) {
-    return false;
+    return NodeOutcome::apart;
   }
   double distance = 0;
   Vec3 normal;
@@ -117,10 +125,10 @@ bool node_contact(const ContactPair& pair, ContactState& state, const ContactKin
   const double h = kinematics.half_thickness[i];
   const double g = distance - h;
   if (!(g < 0 && distance > -h - pair.cutoff)) {
-    return false;
+    return NodeOutcome::apart;
   }
   add_node_force(pair, state, kinematics, i, g, normal, result, f_contact);
-  return true;
+  return NodeOutcome::pressed;
 }
 
 }  // namespace
@@ -150,8 +158,12 @@ ContactResult compute_penalty_contact(const ContactPair& pair, ContactState& sta
           tool_name, pair.cutoff, h, i));
     }
     const Vec3 p = x.col(i) - kinematics.tool_displacement;
-    const bool in_contact = node_contact(pair, state, kinematics, i, p, result, f_contact);
-    if (friction && !in_contact) {
+    // A skipped node's stick force is zero already, so it is not written (memory traffic is
+    // most of a skipped node's cost): a node is skipped only while its bound is positive, and a
+    // bound is set in a call where the node is out of contact -- skipped, or searched and apart
+    // (its stick force reset then) -- and lost (slack -1) when a search finds the tool.
+    const NodeOutcome outcome = node_contact(pair, state, kinematics, i, p, result, f_contact);
+    if (friction && outcome == NodeOutcome::apart) {
       state.stick_force.col(i).setZero();
     }
   }
