@@ -47,6 +47,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <limits>
+#include <memory>
 #include <random>
 #include <string>
 #include <utility>
@@ -542,17 +543,20 @@ double time_static(const ContactSearch& search, const std::vector<Vec3>& pts, in
       });
 }
 
-/// Node queries over a trajectory, cycle by cycle, each pass after prepare() (so a cached search
-/// starts with no lists: its first builds are included).
-double time_motion(ContactSearch& search, const std::vector<Vec3>& pos, int nodes) {
+/// Node queries over a trajectory, cycle by cycle, each pass with a new cache (so a cached search
+/// starts with no lists: its first builds are included). The last pass's cache is left in
+/// `cache` (for its statistics).
+double time_motion(const ContactSearch& search, const std::vector<Vec3>& pos, int nodes,
+                   std::unique_ptr<SearchCache>& cache) {
   const long calls = static_cast<long>(pos.size());
   return best_ns_per_call(
-      calls, kMotionRepeats, [&] { search.prepare(nodes); },
+      calls, kMotionRepeats, [&] { cache = search.make_cache(nodes); },
       [&] {
         ClosestPoint cp;
         double sum = 0;
         for (long q = 0; q < calls; ++q) {
-          search.find_closest_for_node(static_cast<int>(q % nodes), pos[q], kCutoff, cp);
+          search.find_closest_for_node(cache.get(), static_cast<int>(q % nodes), pos[q], kCutoff,
+                                       cp);
           sum += cp.distance;
         }
         g_sink += sum;
@@ -654,6 +658,7 @@ int main(int argc, char** argv) {
     const auto standard = make_contact_search("standard", tool);
     const auto modified = make_contact_search("modified", tool);
     CachedSearch cached(tool);
+    std::unique_ptr<SearchCache> cache;  // the cached search's lists of the latest pass
 
     // Static queries.
     const int brute_n = static_cast<int>(std::clamp(40000000L / nt, 100L, 5000L));
@@ -663,22 +668,22 @@ int main(int argc, char** argv) {
     const double t_m = time_static(*modified, pts, static_n);
     // Cached, one node per point: every query builds its list (the cost of a rebuild).
     const double t_c_build = best_ns_per_call(
-        static_n, kStaticRepeats, [&] { cached.prepare(static_n); },
+        static_n, kStaticRepeats, [&] { cache = cached.make_cache(static_n); },
         [&] {
           ClosestPoint cp;
           double sum = 0;
           for (int k = 0; k < static_n; ++k) {
-            cached.find_closest_for_node(k, pts[k], kCutoff, cp);
+            cached.find_closest_for_node(cache.get(), k, pts[k], kCutoff, cp);
             sum += cp.distance;
           }
           g_sink += sum;
         });
-    const CachedSearchStatistics st_build = cached.statistics();
+    const CachedSearchStatistics st_build = cached.statistics(*cache);
     // Check: cached equals modified, and count the standard search's misses.
     int mismatches = 0, misses = 0;
     for (int k = 0; k < static_n; ++k) {
       ClosestPoint a, b, c;
-      cached.find_closest_for_node(k, pts[k], kCutoff, a);
+      cached.find_closest_for_node(cache.get(), k, pts[k], kCutoff, a);
       modified->find_closest(pts[k], kCutoff, b);
       standard->find_closest(pts[k], kCutoff, c);
       mismatches += same_answer(a, b) ? 0 : 1;
@@ -688,12 +693,12 @@ int main(int argc, char** argv) {
     }
 
     // Motion.
-    const double t_s_mot = time_motion(*standard, small_motion, nodes);
-    const double t_m_mot = time_motion(*modified, small_motion, nodes);
-    const double t_c_mot = time_motion(cached, small_motion, nodes);
-    const CachedSearchStatistics st = cached.statistics();
-    const double t_c_fast = time_motion(cached, large_motion, nodes);
-    const CachedSearchStatistics st_fast = cached.statistics();
+    const double t_s_mot = time_motion(*standard, small_motion, nodes, cache);
+    const double t_m_mot = time_motion(*modified, small_motion, nodes, cache);
+    const double t_c_mot = time_motion(cached, small_motion, nodes, cache);
+    const CachedSearchStatistics st = cached.statistics(*cache);
+    const double t_c_fast = time_motion(cached, large_motion, nodes, cache);
+    const CachedSearchStatistics st_fast = cached.statistics(*cache);
 
     // Operation counts of the brute-force searches.
     const auto& proj = dynamic_cast<const ModifiedSearch&>(*modified).projectors();
@@ -728,11 +733,11 @@ int main(int argc, char** argv) {
       const auto& motion = pass == 0 ? small_motion : large_motion;
       Ops& ops = pass == 0 ? o.cached_small : o.cached_large;
       CachedReplica replica(ms, cached.margin(), cached.capacity(), nodes);
-      cached.prepare(nodes);
+      cache = cached.make_cache(nodes);
       for (std::size_t q = 0; q < motion.size(); ++q) {
         const int node = static_cast<int>(q % nodes);
         ClosestPoint want;
-        cached.find_closest_for_node(node, motion[q], kCutoff, want);
+        cached.find_closest_for_node(cache.get(), node, motion[q], kCutoff, want);
         wrong += replica.query(node, motion[q], want, ops) ? 0 : 1;
       }
       o.replica_overflows += replica.overflow_queries;
@@ -872,10 +877,11 @@ int main(int argc, char** argv) {
                 "2e-2 mm/cycle");
     for (double f : {0.05, 0.1, 0.25, 0.5, 1.0, 2.0}) {
       CachedSearch c(tool, f * edge);
-      const double t1 = time_motion(c, small_motion, nodes);
-      const auto s1 = c.statistics();
-      const double t2 = time_motion(c, large_motion, nodes);
-      const auto s2 = c.statistics();
+      std::unique_ptr<SearchCache> c_cache;
+      const double t1 = time_motion(c, small_motion, nodes, c_cache);
+      const auto s1 = c.statistics(*c_cache);
+      const double t2 = time_motion(c, large_motion, nodes, c_cache);
+      const auto s2 = c.statistics(*c_cache);
       auto per = [](long v, long qn) { return static_cast<double>(v) / static_cast<double>(qn); };
       std::printf("%12.2f %10.3f | %7.0f [%8.5f %8.5f %6.2f] | %7.0f [%8.5f %8.5f %6.2f]\n", f,
                   f * edge, t1, per(s1.rebuilds, s1.queries), per(s1.fallbacks(), s1.queries),

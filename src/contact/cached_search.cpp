@@ -41,13 +41,21 @@ void CachedSearch::find_closest(const Vec3& p, double cutoff, ClosestPoint& out)
   exact_.find_closest(p, cutoff, out);
 }
 
-void CachedSearch::prepare(int node_count) {
-  nodes_.assign(std::max(node_count, 0), NodeCache{});
-  candidates_.assign(static_cast<std::size_t>(nodes_.size()) * capacity_, Candidate{0.0, -1});
+std::unique_ptr<SearchCache> CachedSearch::make_cache(int node_count) const {
+  return std::make_unique<CandidateCache>(*this, node_count, capacity_);
 }
 
-void CachedSearch::rebuild(NodeCache& cache, Candidate* list, const Vec3& p0, double cutoff,
-                           double step) {
+CandidateCache* CachedSearch::candidates(SearchCache* cache) const {
+  // Only this search makes caches owned by it, and they are CandidateCaches.
+  return cache && cache->owner() == this ? static_cast<CandidateCache*>(cache) : nullptr;
+}
+
+const CandidateCache* CachedSearch::candidates(const SearchCache* cache) const {
+  return cache && cache->owner() == this ? static_cast<const CandidateCache*>(cache) : nullptr;
+}
+
+void CachedSearch::rebuild(detail::NodeCandidates& cache, detail::Candidate* list, const Vec3& p0,
+                           double cutoff, double step) const {
   const detail::TieTolerance& tol = exact_.tolerance();
   const std::vector<detail::TriangleProjector>& projectors = exact_.projectors();
   const double m = margin_;
@@ -77,7 +85,7 @@ void CachedSearch::rebuild(NodeCache& cache, Candidate* list, const Vec3& p0, do
       bound = radius(best);
     }
     if (count < capacity_) {
-      list[count++] = Candidate{d, t};
+      list[count++] = detail::Candidate{d, t};
       return bound;
     }
     int worst = 0;
@@ -88,7 +96,7 @@ void CachedSearch::rebuild(NodeCache& cache, Candidate* list, const Vec3& p0, do
     }
     if (d < list[worst].distance) {
       lost = std::min(lost, list[worst].distance);
-      list[worst] = Candidate{d, t};
+      list[worst] = detail::Candidate{d, t};
     } else {
       lost = std::min(lost, d);
     }
@@ -100,7 +108,7 @@ void CachedSearch::rebuild(NodeCache& cache, Candidate* list, const Vec3& p0, do
     if (!(list[k].distance <= bound)) {
       continue;
     }
-    const Candidate c = list[k];
+    const detail::Candidate c = list[k];
     int j = kept++;
     while (j > 0 && (list[j - 1].distance > c.distance ||
                      (list[j - 1].distance == c.distance && list[j - 1].triangle > c.triangle))) {
@@ -139,28 +147,34 @@ void CachedSearch::rebuild(NodeCache& cache, Candidate* list, const Vec3& p0, do
   cache.stats.rebuild_tests += tests;
 }
 
-void CachedSearch::find_closest_for_node(int node, const Vec3& p, double cutoff,
-                                         ClosestPoint& out) {
-  if (node < 0 || node >= static_cast<int>(nodes_.size()) || !p.allFinite()) {
+void CachedSearch::find_closest_for_node(SearchCache* cache, int node, const Vec3& p, double cutoff,
+                                         ClosestPoint& out) const {
+  CandidateCache* lists = candidates(cache);
+  if (!lists || node < 0 || node >= lists->node_count() || !p.allFinite()) {
     exact_.find_closest(p, cutoff, out);
     return;
   }
-  NodeCache& cache = nodes_[node];
-  Candidate* list = candidates_.data() + static_cast<std::size_t>(node) * capacity_;
-  ++cache.stats.queries;
-  double delta = (p - cache.anchor).norm();
-  if (!cache.valid || !(delta <= cache.reach) || !(cutoff <= cache.cutoff)) {
+  detail::NodeCandidates& entry = lists->node(node);
+  detail::Candidate* list = lists->list(node);
+  ++entry.stats.queries;
+  double delta = (p - entry.anchor).norm();
+  if (!entry.valid || !(delta <= entry.reach) || !(cutoff <= entry.cutoff)) {
     // The node's recent motion per query, from how far it went since the last build.
-    const long since = cache.stats.queries - cache.built_at;
-    const double step = cache.valid && since > 0 ? delta / static_cast<double>(since) : 0.0;
-    rebuild(cache, list, p, cutoff, step);
+    const long since = entry.stats.queries - entry.built_at;
+    const double step = entry.valid && since > 0 ? delta / static_cast<double>(since) : 0.0;
+    rebuild(entry, list, p, cutoff, step);
     delta = 0;
   }
-  if (cache.overflow) {
-    ++cache.stats.overflow_fallbacks;
+  if (entry.overflow) {
+    ++entry.stats.overflow_fallbacks;
     exact_.find_closest(p, cutoff, out);
     return;
   }
+  query_list(entry, list, p, delta, cutoff, out);
+}
+
+void CachedSearch::query_list(detail::NodeCandidates& cache, const detail::Candidate* list,
+                              const Vec3& p, double delta, double cutoff, ClosestPoint& out) const {
   const detail::TieTolerance& tol = exact_.tolerance();
   const std::vector<detail::TriangleProjector>& projectors = exact_.projectors();
   detail::TieSet ties(tol);
@@ -189,23 +203,14 @@ void CachedSearch::find_closest_for_node(int node, const Vec3& p, double cutoff,
   }
 }
 
-CachedSearchStatistics CachedSearch::statistics() const {
-  CachedSearchStatistics sum;
-  for (const NodeCache& c : nodes_) {
-    sum.queries += c.stats.queries;
-    sum.rebuilds += c.stats.rebuilds;
-    sum.overflow_fallbacks += c.stats.overflow_fallbacks;
-    sum.tie_fallbacks += c.stats.tie_fallbacks;
-    sum.shrunk_lists += c.stats.shrunk_lists;
-    sum.candidates_tested += c.stats.candidates_tested;
-    sum.rebuild_tests += c.stats.rebuild_tests;
-  }
-  return sum;
+CachedSearchStatistics CachedSearch::statistics(const SearchCache& cache) const {
+  const CandidateCache* lists = candidates(&cache);
+  return lists ? lists->statistics() : CachedSearchStatistics{};
 }
 
-void CachedSearch::reset_statistics() {
-  for (NodeCache& c : nodes_) {
-    c.stats = CachedSearchStatistics{};
+void CachedSearch::reset_statistics(SearchCache& cache) const {
+  if (CandidateCache* lists = candidates(&cache)) {
+    lists->reset_statistics();
   }
 }
 

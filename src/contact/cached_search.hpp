@@ -2,24 +2,14 @@
 // "cached": exactly the modified search's answer (Wawrzyk & Kowalczyk; the same ClosestPoint, bit
 // for bit, as "modified"), at a lower cost per node and cycle, by keeping for every blank node a
 // short list of candidate triangles that is valid while the node stays near where it was built.
+#include <memory>
 #include <string_view>
 #include <vector>
 
+#include "contact/candidate_cache.hpp"
 #include "contact/modified_search.hpp"
 
 namespace sf {
-
-/// Counts of what the cached search did (summed over the nodes).
-struct CachedSearchStatistics {
-  long queries = 0;             ///< find_closest_for_node calls
-  long rebuilds = 0;            ///< candidate lists built (the first one of each node included)
-  long shrunk_lists = 0;        ///< builds that overflowed the capacity and kept a shorter reach
-  long overflow_fallbacks = 0;  ///< queries answered by the full grid: the list had overflowed
-  long tie_fallbacks = 0;       ///< queries answered by the full grid: more ties than max_set_size
-  long candidates_tested = 0;   ///< point-triangle tests in queries answered from the lists
-  long rebuild_tests = 0;       ///< point-triangle tests while building the lists
-  long fallbacks() const { return overflow_fallbacks + tie_fallbacks; }
-};
 
 /// "cached": the modified search with a per-node candidate list.
 ///
@@ -64,8 +54,9 @@ struct CachedSearchStatistics {
 /// from 0.05 to 0.5 edge the cost per node-cycle varies little at 1e-3 mm per cycle; at 2e-2 mm
 /// per cycle 0.1-0.25 edge is cheapest.
 ///
-/// Thread safety: find_closest is const and thread-safe; find_closest_for_node touches only the
-/// state of its node (statistics included), so different nodes may be queried concurrently.
+/// The lists live in a CandidateCache (make_cache) that the caller owns; the search itself is
+/// immutable. Thread safety: find_closest is thread-safe; find_closest_for_node touches only the
+/// cache entry of its node (statistics included), so different nodes may be queried concurrently.
 class CachedSearch final : public ContactSearch {
  public:
   static constexpr int default_capacity = 32;
@@ -80,44 +71,37 @@ class CachedSearch final : public ContactSearch {
 
   /// The modified (grid) search's answer, without any cache.
   void find_closest(const Vec3& p, double cutoff, ClosestPoint& out) const override;
-  /// Allocates the lists of `node_count` nodes (all invalid: each is built at its first query)
-  /// and clears the statistics.
-  void prepare(int node_count) override;
-  /// The modified search's answer for node `node` at p, from its list. A node outside
-  /// [0, node_count) or a non-finite p is answered by the full grid search.
-  void find_closest_for_node(int node, const Vec3& p, double cutoff, ClosestPoint& out) override;
+  /// The lists of `node_count` nodes (all invalid: each is built at its first query), with
+  /// cleared statistics.
+  std::unique_ptr<SearchCache> make_cache(int node_count) const override;
+  /// The modified search's answer for node `node` at p, from its list in `cache` (made by this
+  /// search). No cache (nullptr or another search's), a node outside [0, node count) or a
+  /// non-finite p: answered by the full grid search.
+  void find_closest_for_node(SearchCache* cache, int node, const Vec3& p, double cutoff,
+                             ClosestPoint& out) const override;
   std::string_view name() const override { return "cached"; }
 
   double margin() const { return margin_; }
   int capacity() const { return capacity_; }
-  /// Sums the per-node counters.
-  CachedSearchStatistics statistics() const;
-  void reset_statistics();
+  /// The counters summed over the nodes of `cache` (made by this search; zero otherwise).
+  CachedSearchStatistics statistics(const SearchCache& cache) const;
+  /// Clears the counters of `cache` (made by this search).
+  void reset_statistics(SearchCache& cache) const;
 
  private:
-  struct Candidate {
-    double distance;  ///< d(anchor, triangle), mm
-    int triangle;
-  };
-  struct NodeCache {
-    Vec3 anchor = Vec3::Zero();  ///< where the list was built, mm
-    double cutoff = 0;           ///< the cutoff it was built for, mm
-    double reach = 0;            ///< the list serves |p - anchor| <= reach (<= margin), mm
-    long built_at = 0;           ///< stats.queries at the last build
-    int count = 0;               ///< candidates in the list
-    bool valid = false;
-    bool overflow = false;
-    CachedSearchStatistics stats;
-  };
-
+  /// `cache` as this search's CandidateCache, or nullptr when another search made it.
+  CandidateCache* candidates(SearchCache* cache) const;
+  const CandidateCache* candidates(const SearchCache* cache) const;
   /// Builds node's list at p0; `step` is the node's recent motion per query (mm, 0 if unknown).
-  void rebuild(NodeCache& cache, Candidate* list, const Vec3& p0, double cutoff, double step);
+  void rebuild(detail::NodeCandidates& cache, detail::Candidate* list, const Vec3& p0,
+               double cutoff, double step) const;
+  /// Answers a query at p from a valid list, |p - anchor| = delta <= its reach.
+  void query_list(detail::NodeCandidates& cache, const detail::Candidate* list, const Vec3& p,
+                  double delta, double cutoff, ClosestPoint& out) const;
 
   ModifiedSearch exact_;
   double margin_;
   int capacity_;
-  std::vector<NodeCache> nodes_;
-  std::vector<Candidate> candidates_;  ///< node i's list: [i * capacity_, (i + 1) * capacity_)
 };
 
 }  // namespace sf

@@ -38,7 +38,27 @@ struct ClosestPoint {
   bool set_truncated = false;
 };
 
-/// Finds the closest point of a rigid triangle surface to a query point.
+class ContactSearch;
+
+/// Per-node state that a search keeps between cycles (the cached search's candidate lists). It
+/// belongs to the caller (ContactState), not to the search, so that a search is immutable once
+/// built and one search can serve several independent runs. Made by ContactSearch::make_cache.
+class SearchCache {
+ public:
+  virtual ~SearchCache() = default;
+  SearchCache(const SearchCache&) = delete;
+  SearchCache& operator=(const SearchCache&) = delete;
+  /// The search that made this cache (only that search may use it).
+  const ContactSearch* owner() const { return owner_; }
+
+ protected:
+  explicit SearchCache(const ContactSearch& owner) : owner_(&owner) {}
+
+ private:
+  const ContactSearch* owner_;
+};
+
+/// Finds the closest point of a rigid triangle surface to a query point. Immutable once built.
 class ContactSearch {
  public:
   virtual ~ContactSearch() = default;
@@ -46,14 +66,20 @@ class ContactSearch {
   /// `cutoff` (mm, may be +infinity); out.triangle = -1 if none. Does not allocate; thread-safe
   /// (const, no shared scratch).
   virtual void find_closest(const Vec3& p, double cutoff, ClosestPoint& out) const = 0;
-  /// Sizes any per-node state for `node_count` blank nodes; called once before
-  /// `find_closest_for_node` is used (may allocate). The default keeps no state.
-  virtual void prepare(int node_count) { (void)node_count; }
-  /// The query of blank node `node` (0 <= node < the count given to `prepare`) at p: the same
-  /// answer as find_closest(p, cutoff, out). Searches that keep per-node state between cycles
-  /// (a candidate cache) override it; calls for different nodes may run concurrently, calls for
-  /// one node may not. Does not allocate.
-  virtual void find_closest_for_node(int node, const Vec3& p, double cutoff, ClosestPoint& out) {
+  /// The per-node state of `node_count` blank nodes for `find_closest_for_node` (may allocate);
+  /// nullptr for a search that keeps none (the default).
+  virtual std::unique_ptr<SearchCache> make_cache(int node_count) const {
+    (void)node_count;
+    return nullptr;
+  }
+  /// The query of blank node `node` at p: the same answer as find_closest(p, cutoff, out).
+  /// `cache` is what make_cache returned (0 <= node < its node count), or nullptr (then no state
+  /// is used). Searches that keep per-node state between cycles (a candidate cache) override it;
+  /// calls for different nodes may run concurrently, calls for one node may not. Does not
+  /// allocate.
+  virtual void find_closest_for_node(SearchCache* cache, int node, const Vec3& p, double cutoff,
+                                     ClosestPoint& out) const {
+    (void)cache;
     (void)node;
     find_closest(p, cutoff, out);
   }

@@ -4,31 +4,151 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string_view>
 
 #include "core/errors.hpp"
 
 namespace sf {
 
-ContactResult compute_penalty_contact(ContactPair& pair, const ContactKinematics& kinematics,
-                                      Matrix3X& f_contact) {
+namespace {
+
+// Sizes the state for n nodes and the pair's search (the only allocations: on the first call).
+void size_state(const ContactPair& pair, ContactState& state, int n, bool friction) {
+  if (state.node_count != n || state.search != pair.search.get()) {
+    state.search_cache = pair.search->make_cache(n);
+    state.search = pair.search.get();
+    state.node_count = n;
+  }
+  if (pair.distance_bound && state.distance_bounds.node_count() != n) {
+    state.distance_bounds.resize(n);
+  }
+  if (friction && state.stick_force.cols() != n) {
+    state.stick_force.setZero(3, n);
+  }
+}
+
+// Bounds node i's distance to the tool afresh at p; whether that proves it beyond the cutoff.
+// The search finds a triangle only when its computed distance is <= cutoff; the rounding
+// allowance (1e-9 of the lengths involved) also covers its tie window (1e-12 of them).
+bool bound_node(const ContactPair& pair, NodeDistanceBounds& bounds, int i, const Vec3& p) {
+  const ToolDistanceBound& tool = *pair.distance_bound;
+  const double lower = tool.lower_bound(p, distance_bound_reach_factor * pair.cutoff);
+  const double allowance = tool.rounding_allowance(p.cwiseAbs().maxCoeff(), lower);
+  bounds.set(i, p, lower - pair.cutoff - allowance);
+  return bounds.beyond_cutoff(i, p);
+}
+
+// Whether node i at p provably has no tool triangle within the cutoff (then the search would
+// find none and the node exerts no force). A node that had the tool within the cutoff at its
+// last query is searched without bounding it first (it most likely still has).
+bool provably_beyond_cutoff(const ContactPair& pair, NodeDistanceBounds& bounds, int i,
+                            const Vec3& p) {
+  if (bounds.beyond_cutoff(i, p)) {
+    return true;
+  }
+  return !bounds.was_within_cutoff(i) && bound_node(pair, bounds, i, p);
+}
+
+// The distance D along the normal and the unit normal of the gap of a node at p whose search
+// answer is cp (a triangle within the cutoff), per pair.projection.
+void gap_geometry(const ContactPair& pair, const Vec3& p, const ClosestPoint& cp,
+                  ContactResult& result, double& distance, Vec3& normal) {
+  distance = cp.signed_distance;
+  normal = cp.normal;
+  if (pair.projection == ContactProjection::interpolated) {
+    InterpolatedProjection ip;
+    pair.projector->project(p, cp, ip);
+    result.projection_fallbacks += ip.fallback ? 1 : 0;
+    distance = ip.distance;
+    normal = ip.normal;
+  }
+}
+
+// The penalty and friction force on node i with gap g = distance - h < 0 along `normal`, into
+// f_contact and result; updates the node's stick force.
+void add_node_force(const ContactPair& pair, ContactState& state,
+                    const ContactKinematics& kinematics, int i, double g, const Vec3& normal,
+                    ContactResult& result, Matrix3X& f_contact) {
+  const double k = pair.stiffness[i];
+  const double normal_force = k * (-g);
+  Vec3 f = normal_force * normal;
+  result.energy += 0.5 * k * g * g;
+  ++result.nodes_in_contact;
+  if (pair.friction.active()) {
+    const Vec3 increment =
+        kinematics.dt * kinematics.v.col(i) - kinematics.tool_displacement_increment;
+    Vec3 stored = state.stick_force.col(i);
+    const FrictionStep step =
+        coulomb_friction_update(pair.friction, stored, normal, increment, kinematics.dt,
+                                normal_force, pair.friction.tangential_stiffness_ratio * k);
+    state.stick_force.col(i) = stored;
+    f += step.force;
+    result.friction_work += step.work;
+    ++(step.sliding ? result.sliding_nodes : result.sticking_nodes);
+  }
+  f_contact.col(i) += f;
+  result.force_on_tool -= f;
+}
+
+// What happened to a node in one call.
+enum class NodeOutcome {
+  skipped,  ///< its distance bound proved it beyond the cutoff: not searched
+  apart,    ///< searched, not in contact
+  pressed,  ///< in contact: a force was added
+};
+
+// The contact of node i at p: searched (or skipped when its distance bound allows), then the
+// force if it penetrates.
+NodeOutcome node_contact(const ContactPair& pair, ContactState& state,
+                         const ContactKinematics& kinematics, int i, const Vec3& p,
+                         ContactResult& result, Matrix3X& f_contact) {
+  const bool bounded = pair.distance_bound != nullptr;
+  if (bounded && provably_beyond_cutoff(pair, state.distance_bounds, i, p)) {
+    return NodeOutcome::skipped;
+  }
+  ClosestPoint cp;
+  pair.search->find_closest_for_node(state.search_cache.get(), i, p, pair.cutoff, cp);
+  if (bounded) {
+    if (cp.triangle >= 0) {
+      state.distance_bounds.set_within_cutoff(i);
+    } else {
+      bound_node(pair, state.distance_bounds, i, p);  // for the next calls
+    }
+  }
+  if (cp.triangle < 0) {
+    return NodeOutcome::apart;
+  }
+  double distance = 0;
+  Vec3 normal;
+  gap_geometry(pair, p, cp, result, distance, normal);
+  const double h = kinematics.half_thickness[i];
+  const double g = distance - h;
+  if (!(g < 0 && distance > -h - pair.cutoff)) {
+    return NodeOutcome::apart;
+  }
+  add_node_force(pair, state, kinematics, i, g, normal, result, f_contact);
+  return NodeOutcome::pressed;
+}
+
+}  // namespace
+
+ContactResult compute_penalty_contact(const ContactPair& pair, ContactState& state,
+                                      const ContactKinematics& kinematics, Matrix3X& f_contact) {
   ContactResult result;
   const Matrix3X& x = kinematics.x;
   const int n = static_cast<int>(x.cols());
   const std::string_view tool_name = pair.surface ? std::string_view(pair.surface->name()) : "?";
-  const bool interpolated = pair.projection == ContactProjection::interpolated;
   const bool friction = pair.friction.active();
   if (friction) {
     pair.friction.validate(tool_name);
-    if (pair.stick_force.cols() != n) {
-      pair.stick_force.setZero(3, n);
-    }
   }
-  if (interpolated && !pair.projector) {
-    pair.projector = std::make_unique<InterpolatedProjector>(*pair.surface);
+  if (pair.projection == ContactProjection::interpolated && !pair.projector) {
+    throw std::invalid_argument(fmt::format(
+        "contact with tool '{}': the interpolated projection needs ContactPair::projector",
+        tool_name));
   }
-  ClosestPoint cp;
-  InterpolatedProjection ip;
+  size_state(pair, state, n, friction);
   for (int i = 0; i < n; ++i) {
     const double h = kinematics.half_thickness[i];
     if (!(pair.cutoff > h)) {
@@ -38,43 +158,13 @@ ContactResult compute_penalty_contact(ContactPair& pair, const ContactKinematics
           tool_name, pair.cutoff, h, i));
     }
     const Vec3 p = x.col(i) - kinematics.tool_displacement;
-    pair.search->find_closest_for_node(i, p, pair.cutoff, cp);
-    bool in_contact = false;
-    if (cp.triangle >= 0) {
-      double distance = cp.signed_distance;
-      Vec3 normal = cp.normal;
-      if (interpolated) {
-        pair.projector->project(p, cp, ip);
-        result.projection_fallbacks += ip.fallback ? 1 : 0;
-        distance = ip.distance;
-        normal = ip.normal;
-      }
-      const double g = distance - h;
-      in_contact = g < 0 && distance > -h - pair.cutoff;
-      if (in_contact) {
-        const double k = pair.stiffness[i];
-        const double normal_force = k * (-g);
-        Vec3 f = normal_force * normal;
-        result.energy += 0.5 * k * g * g;
-        ++result.nodes_in_contact;
-        if (friction) {
-          const Vec3 increment =
-              kinematics.dt * kinematics.v.col(i) - kinematics.tool_displacement_increment;
-          Vec3 stored = pair.stick_force.col(i);
-          const FrictionStep step =
-              coulomb_friction_update(pair.friction, stored, normal, increment, kinematics.dt,
-                                      normal_force, pair.friction.tangential_stiffness_ratio * k);
-          pair.stick_force.col(i) = stored;
-          f += step.force;
-          result.friction_work += step.work;
-          ++(step.sliding ? result.sliding_nodes : result.sticking_nodes);
-        }
-        f_contact.col(i) += f;
-        result.force_on_tool -= f;
-      }
-    }
-    if (friction && !in_contact) {
-      pair.stick_force.col(i).setZero();
+    // A skipped node's stick force is zero already, so it is not written (memory traffic is
+    // most of a skipped node's cost): a node is skipped only while its bound is positive, and a
+    // bound is set in a call where the node is out of contact -- skipped, or searched and apart
+    // (its stick force reset then) -- and lost (slack -1) when a search finds the tool.
+    const NodeOutcome outcome = node_contact(pair, state, kinematics, i, p, result, f_contact);
+    if (friction && outcome == NodeOutcome::apart) {
+      state.stick_force.col(i).setZero();
     }
   }
   return result;

@@ -5,8 +5,10 @@
 #include <memory>
 
 #include "contact/contact_search.hpp"
+#include "contact/contact_state.hpp"
 #include "contact/coulomb_friction.hpp"
 #include "contact/interpolated_projection.hpp"
+#include "contact/tool_distance_bound.hpp"
 #include "core/types.hpp"
 #include "mesh/triangle_surface.hpp"
 
@@ -23,7 +25,7 @@ enum class ContactProjection {
   interpolated,
 };
 
-/// One tool against all blank nodes.
+/// One tool against all blank nodes: what is fixed for the run (ContactState holds what changes).
 struct ContactPair {
   const TriangleSurface* surface = nullptr;  ///< the tool, reference configuration
   std::unique_ptr<ContactSearch> search;     ///< a search over *surface
@@ -35,14 +37,17 @@ struct ContactPair {
   /// default is the paper's interpolated projection (build_model sets it; the driver counts the
   /// contact energy as the work of the contact forces, which holds for either: docs/contact.md).
   ContactProjection projection = ContactProjection::orthogonal;
+  /// The interpolated projection over *surface: required with ContactProjection::interpolated.
+  std::unique_ptr<const InterpolatedProjector> projector;
   FrictionParameters friction;  ///< frictionless unless friction.static_coefficient > 0
-
-  // State, sized on the first call of compute_penalty_contact (then never reallocated):
-  /// Interpolated projection over *surface (built on first use).
-  std::unique_ptr<InterpolatedProjector> projector;
-  /// Per blank node: the stored elastic stick force on the node, N (zero out of contact).
-  Matrix3X stick_force;
+  /// Distance bounds over *surface: when set, a node that provably cannot be within the cutoff
+  /// is not searched (the same forces, bit for bit); nullptr: every node is searched every call.
+  std::unique_ptr<const ToolDistanceBound> distance_bound;
 };
+
+/// How far ahead (in cutoffs) a node's distance to the tool is measured when it is bounded: a
+/// node at least this far away may then move (factor - 1) cutoffs before it is looked at again.
+inline constexpr double distance_bound_reach_factor = 4.0;
 
 /// What compute_penalty_contact needs of the blank and the tool for one call.
 struct ContactKinematics {
@@ -66,22 +71,23 @@ struct ContactResult {
 };
 
 /// For every blank node i: queries the surface at p = x_i - tool_displacement (reference frame)
-/// within pair.cutoff (search->find_closest_for_node); D = the signed distance (orthogonal) or the
-/// interpolated projection's D, n the matching normal; gap g = D - half_thickness[i] (mm); if
-/// g < 0 and D > -half_thickness[i] - cutoff (nodes that passed far behind the surface are
-/// ignored), adds the normal force k_i (-g) n to f_contact.col(i) (N; the caller zeroes
-/// f_contact) and its reaction to the tool's force. With friction active, the node's relative
-/// tangential displacement over the step, dt v_i - tool_displacement_increment projected on the
-/// tangent plane of n, drives coulomb_friction_update with the normal force k_i (-g) and
-/// k_t = ratio * k_i; its force is added likewise and its dissipation summed. A node out of
-/// contact has its stick force reset to zero.
-/// Orthogonal: the normal force is minus the gradient of 1/2 k g^2. Interpolated: it is not a
-/// gradient in general (`energy` is then only the penalty spring's stored energy).
-/// Deterministic (nodes in order); allocates only on the first call (the pair's state).
-/// Throws InputError when pair.cutoff does not exceed a node's half thickness or the friction
-/// parameters are invalid.
-ContactResult compute_penalty_contact(ContactPair& pair, const ContactKinematics& kinematics,
-                                      Matrix3X& f_contact);
+/// within pair.cutoff (search->find_closest_for_node with the state's search cache); D = the signed
+/// distance (orthogonal) or the interpolated projection's D, n the matching normal; gap g = D -
+/// half_thickness[i] (mm); if g < 0 and D > -half_thickness[i] - cutoff (nodes that passed far
+/// behind the surface are ignored), adds the normal force k_i (-g) n to f_contact.col(i) (N; the
+/// caller zeroes f_contact) and its reaction to the tool's force. With friction active, the node's
+/// relative tangential displacement over the step, dt v_i - tool_displacement_increment projected
+/// on the tangent plane of n, drives coulomb_friction_update with the normal force k_i (-g) and k_t
+/// = ratio * k_i; its force is added likewise and its dissipation summed. A node out of contact has
+/// its stick force reset to zero. Orthogonal: the normal force is minus the gradient of 1/2 k g^2.
+/// Interpolated: it is not a gradient in general (`energy` is then only the penalty spring's stored
+/// energy). With pair.distance_bound, a node whose distance bound (state.distance_bounds) proves it
+/// beyond the cutoff is not searched: the search would have found nothing, so the result is the
+/// same. Deterministic (nodes in order); allocates only on the first call (sizing `state`). Throws
+/// InputError when pair.cutoff does not exceed a node's half thickness or the friction parameters
+/// are invalid, std::invalid_argument when the interpolated projection has no pair.projector.
+ContactResult compute_penalty_contact(const ContactPair& pair, ContactState& state,
+                                      const ContactKinematics& kinematics, Matrix3X& f_contact);
 
 /// Per-node penalty stiffness of a shell blank (N/mm):
 ///   k_i = scale * K * A_i / d_i,  K = E / (3 (1 - 2 nu)) (bulk modulus, MPa),

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <type_traits>
 #include <variant>
 
@@ -324,7 +325,8 @@ void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& s
     contact.pair.surface = &tool.surface;
     contact.pair.search = make_contact_search(cc.search, tool.surface,
                                               SearchOptions{.cached_margin = cc.search_margin});
-    contact.pair.search->prepare(static_cast<int>(model.blank.mesh.nodes.cols()));
+    // Nodes far from the tool are skipped until their motion could bring them within reach.
+    contact.pair.distance_bound = std::make_unique<ToolDistanceBound>(tool.surface);
     // The contact spring adds to the element stiffness at a node: with the element part at
     // w_e dt <= 2 x safety (1.8), the total stays below the stability limit w dt = 2 when the
     // contact part keeps w_c dt <= sqrt(4 - 1.8^2) = 0.87, i.e. a cap factor of 0.87 / 2.
@@ -356,6 +358,9 @@ void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& s
     contact.pair.projection = cc.projection == ContactConfig::Projection::interpolated
                                   ? ContactProjection::interpolated
                                   : ContactProjection::orthogonal;
+    if (contact.pair.projection == ContactProjection::interpolated) {
+      contact.pair.projector = std::make_unique<InterpolatedProjector>(tool.surface);
+    }
     contact.pair.friction.static_coefficient = cc.friction_static;
     contact.pair.friction.dynamic_coefficient = cc.friction_dynamic;
     contact.pair.friction.decay = cc.friction_decay;

@@ -104,7 +104,8 @@ struct ContactInterface {
   int tool = -1;       ///< index into Model::tools
   std::string search;  ///< the search's name ("standard", "modified", "cached")
   bool audit = false;  ///< the output counts, per frame, the nodes where the search is not exact
-  ContactPair pair;
+  ContactPair pair;    ///< fixed for the run
+  ContactState state;  ///< what changes during the run (sized by the first contact call)
 };
 
 /// How the run steps and when it ends.

@@ -70,7 +70,7 @@ void compute_contact_forces(Model& model, SolutionState& s, double dt) {
                                        .tool_displacement = tool.displacement,
                                        .tool_displacement_increment = tool_step,
                                        .dt = dt};
-    const ContactResult r = compute_penalty_contact(c.pair, kinematics, s.f_contact);
+    const ContactResult r = compute_penalty_contact(c.pair, c.state, kinematics, s.f_contact);
     tool.force += r.force_on_tool;
     tool.nodes_in_contact += r.nodes_in_contact;
     s.contact_spring_energy += r.energy;

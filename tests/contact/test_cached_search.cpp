@@ -44,7 +44,7 @@ CachedSearchStatistics expect_identical_along_walks(const TriangleSurface& s,
                                                     const Walk& walk, CachedSearch& cached) {
   const ModifiedSearch modified(s);
   const int n = static_cast<int>(start.size());
-  cached.prepare(n);
+  const auto cache = cached.make_cache(n);
   std::mt19937 rng(walk.seed);
   std::normal_distribution<double> g(0.0, 1.0);
   std::vector<Vec3> p = start;
@@ -59,7 +59,7 @@ CachedSearchStatistics expect_identical_along_walks(const TriangleSurface& s,
     for (int i = 0; i < n; ++i) {
       ClosestPoint want, got;
       modified.find_closest(p[i], cutoff, want);
-      cached.find_closest_for_node(i, p[i], cutoff, got);
+      cached.find_closest_for_node(cache.get(), i, p[i], cutoff, got);
       const auto same = test::identical(got, want);
       if (!same && ++mismatches <= 5) {
         ADD_FAILURE() << s.name() << " step " << k << " node " << i << " p " << p[i].transpose()
@@ -69,7 +69,7 @@ CachedSearchStatistics expect_identical_along_walks(const TriangleSurface& s,
     }
   }
   EXPECT_EQ(mismatches, 0) << s.name();
-  const CachedSearchStatistics st = cached.statistics();
+  const CachedSearchStatistics st = cached.statistics(*cache);
   EXPECT_EQ(st.queries, static_cast<long>(n) * walk.steps);
   std::printf(
       "%s: %d nodes x %d steps of %g mm (margin %g mm, capacity %d, cutoff %g%s): rebuilds %ld "
@@ -234,7 +234,8 @@ TEST(CachedSearch, OversizedTieSetFallsBackToTheGrid) {
   const auto st = expect_identical_along_walks(s, start, walk, cached);
   EXPECT_EQ(st.tie_fallbacks, 1);
   ClosestPoint cp;
-  cached.find_closest_for_node(0, start[0], 2.0, cp);
+  const auto cache = cached.make_cache(1);
+  cached.find_closest_for_node(cache.get(), 0, start[0], 2.0, cp);
   EXPECT_TRUE(cp.set_truncated);
   EXPECT_EQ(cp.feature, ClosestPoint::Feature::vertex);
 }
@@ -260,19 +261,19 @@ TEST(CachedSearch, QueriesDoNotAllocate) {
   const TriangleSurface s = test::make_height_field("warped 20x20", 20, 20, -1, 1, -1, 1, warp);
   const auto pts = near_warped_surface(300, 9);
   CachedSearch cached(s, 0, 4);  // small capacity: some lists overflow
-  cached.prepare(static_cast<int>(pts.size()));
+  const auto cache = cached.make_cache(static_cast<int>(pts.size()));
   ClosestPoint cp;
   double sum = 0;
   const long before = test::allocation_count();
   for (int k = 0; k < 20; ++k) {
     for (int i = 0; i < static_cast<int>(pts.size()); ++i) {
       const Vec3 p = pts[i] + Vec3(0.01 * k, 0.0, 0.0);
-      cached.find_closest_for_node(i, p, k % 3 == 0 ? kInf : 0.2, cp);
+      cached.find_closest_for_node(cache.get(), i, p, k % 3 == 0 ? kInf : 0.2, cp);
       sum += cp.distance;
     }
   }
   EXPECT_EQ(test::allocation_count() - before, 0);
-  const auto st = cached.statistics();
+  const auto st = cached.statistics(*cache);
   EXPECT_GT(st.rebuilds, 300);
   EXPECT_GT(st.overflow_fallbacks, 0);
   EXPECT_GT(st.candidates_tested, 0);
@@ -286,13 +287,13 @@ TEST(CachedSearch, NodesMayBeQueriedConcurrently) {
   const auto pts = near_warped_surface(400, 10);
   const int n = static_cast<int>(pts.size());
   CachedSearch cached(s);
-  cached.prepare(n);
+  const auto cache = cached.make_cache(n);
   const int steps = 50;
   std::vector<ClosestPoint> got(static_cast<std::size_t>(n) * steps);
   auto run = [&](int first, int last) {
     for (int k = 0; k < steps; ++k) {
       for (int i = first; i < last; ++i) {
-        cached.find_closest_for_node(i, pts[i] + Vec3(0, 0.003 * k, 0), 0.2,
+        cached.find_closest_for_node(cache.get(), i, pts[i] + Vec3(0, 0.003 * k, 0), 0.2,
                                      got[static_cast<std::size_t>(k) * n + i]);
       }
     }
@@ -308,19 +309,19 @@ TEST(CachedSearch, NodesMayBeQueriedConcurrently) {
       ASSERT_TRUE(test::identical(got[static_cast<std::size_t>(k) * n + i], want));
     }
   }
-  EXPECT_EQ(cached.statistics().queries, static_cast<long>(n) * steps);
+  EXPECT_EQ(cached.statistics(*cache).queries, static_cast<long>(n) * steps);
 }
 
 TEST(CachedSearch, OutOfRangeNodeIsAnsweredByTheGrid) {
   const TriangleSurface s = test::make_height_field("warped 10x10", 10, 10, -1, 1, -1, 1, warp);
   CachedSearch cached(s);
-  cached.prepare(2);
+  const auto cache = cached.make_cache(2);
   const ModifiedSearch modified(s);
   ClosestPoint a, b;
-  cached.find_closest_for_node(5, Vec3(0.1, 0.2, 0.3), kInf, a);
+  cached.find_closest_for_node(cache.get(), 5, Vec3(0.1, 0.2, 0.3), kInf, a);
   modified.find_closest(Vec3(0.1, 0.2, 0.3), kInf, b);
   EXPECT_TRUE(test::identical(a, b));
-  EXPECT_EQ(cached.statistics().queries, 0);
+  EXPECT_EQ(cached.statistics(*cache).queries, 0);
 }
 
 }  // namespace

@@ -61,15 +61,18 @@ SlideFigures slide(int facets, ContactProjection projection, double indentation)
   // |y| < 10 holds the sheet (its nodal normals are radial).
   TriangleSurface surface;
   ContactPair pair;
+  ContactState state;
   if (facets > 0) {
     surface =
         test::make_faceted_cylinder(radius, facets, -std::numbers::pi / 2, -20, 20, 4, z_axis);
     pair.surface = &surface;
     pair.search = make_contact_search("modified", surface);
-    pair.search->prepare(n);
     pair.stiffness = VectorX::Constant(n, stiffness);
     pair.cutoff = 3.0;  // > half; reaches nodes up to 2.5 mm behind the surface
     pair.projection = projection;
+    if (projection == ContactProjection::interpolated) {
+      pair.projector = std::make_unique<InterpolatedProjector>(surface);
+    }
   }
   const VectorX h = VectorX::Constant(n, half);
   const Matrix3X v = Matrix3X::Zero(3, n);
@@ -90,8 +93,8 @@ SlideFigures slide(int facets, ContactProjection projection, double indentation)
     }
     if (facets > 0) {
       f.setZero();
-      const ContactResult r =
-          compute_penalty_contact(pair, {x, v, h, displacement, Vec3(sample_step, 0, 0), 1e-3}, f);
+      const ContactResult r = compute_penalty_contact(
+          pair, state, {x, v, h, displacement, Vec3(sample_step, 0, 0), 1e-3}, f);
       out.fallbacks += r.projection_fallbacks;
       for (int i = 0; i < n; ++i) {
         const double error = std::abs(f.col(i).norm() - f_smooth.col(i).norm());

@@ -140,14 +140,20 @@ TriangleSurface make_table() {
                                  [](double, double) { return 0.0; });
 }
 
-ContactPair make_pair(const TriangleSurface& s, int n, double k, const FrictionParameters& law) {
+/// A contact pair and its state.
+struct Contact {
   ContactPair pair;
-  pair.surface = &s;
-  pair.search = make_contact_search("modified", s);
-  pair.stiffness = VectorX::Constant(n, k);
-  pair.cutoff = 2.0;
-  pair.friction = law;
-  return pair;
+  ContactState state;
+};
+
+Contact make_pair(const TriangleSurface& s, int n, double k, const FrictionParameters& law) {
+  Contact c;
+  c.pair.surface = &s;
+  c.pair.search = make_contact_search("modified", s);
+  c.pair.stiffness = VectorX::Constant(n, k);
+  c.pair.cutoff = 2.0;
+  c.pair.friction = law;
+  return c;
 }
 
 TEST(PenaltyFriction, BlockPulledAtConstantVelocity) {
@@ -162,7 +168,7 @@ TEST(PenaltyFriction, BlockPulledAtConstantVelocity) {
   const double k = 1000, h = 0.5, speed = 50, dt = 1e-5, fn = 100;
   const int n = 4, steps = 2000;  // travel 1 mm
   for (bool tool_moves : {false, true}) {
-    ContactPair pair = make_pair(table, n, k, law);
+    Contact pair = make_pair(table, n, k, law);
     Matrix3X x(3, n);
     x << 0, 1, 0, 1,  //
         0, 0, 1, 1,   //
@@ -183,7 +189,7 @@ TEST(PenaltyFriction, BlockPulledAtConstantVelocity) {
         x.row(0).array() += speed * dt;
       }
       f.setZero();
-      r = compute_penalty_contact(pair, {x, v, half, tool, tool_step, dt}, f);
+      r = compute_penalty_contact(pair.pair, pair.state, {x, v, half, tool, tool_step, dt}, f);
       ASSERT_GE(r.friction_work, 0.0);
       work += r.friction_work;
     }
@@ -215,7 +221,7 @@ template <class Pull>
 PullResult pull_pressed_mass(const FrictionParameters& law, double m, double k, double press,
                              Pull pull, double dt, double t_end) {
   const TriangleSurface table = make_table();
-  ContactPair pair = make_pair(table, 1, k, law);
+  Contact pair = make_pair(table, 1, k, law);
   const double h = 0.5;
   Matrix3X x = Vec3(0, 0, h - press / k);  // normal equilibrium: k (-g) = P
   Matrix3X v = Matrix3X::Zero(3, 1);       // mid-step velocity
@@ -225,8 +231,8 @@ PullResult pull_pressed_mass(const FrictionParameters& law, double m, double k, 
   double dt_taken = 0, t = 0;
   while (t < t_end) {
     f.setZero();
-    const ContactResult r =
-        compute_penalty_contact(pair, {x, v, half, Vec3::Zero(), Vec3::Zero(), dt_taken}, f);
+    const ContactResult r = compute_penalty_contact(
+        pair.pair, pair.state, {x, v, half, Vec3::Zero(), Vec3::Zero(), dt_taken}, f);
     out.work += r.friction_work;
     if (r.sliding_nodes > 0) {
       if (out.sliding_steps == 0) {
@@ -289,7 +295,7 @@ TEST(PenaltyFriction, ForceWithinTheConeAndWorkNonNegativeOnRandomHistories) {
   const FrictionParameters law = make_law(0.35, 0.2, 0.003);
   const TriangleSurface table = make_table();
   const int n = 50;
-  ContactPair pair = make_pair(table, n, 800, law);
+  Contact pair = make_pair(table, n, 800, law);
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> u(-1, 1);
   Matrix3X x(3, n), v(3, n), f(3, n);
@@ -309,7 +315,8 @@ TEST(PenaltyFriction, ForceWithinTheConeAndWorkNonNegativeOnRandomHistories) {
     x += dt * v;
     x.row(2) = x.row(2).cwiseMax(0.1).cwiseMin(0.9);  // keep them near the tool
     f.setZero();
-    const ContactResult r = compute_penalty_contact(pair, {x, v, half, tool, tool_step, dt}, f);
+    const ContactResult r =
+        compute_penalty_contact(pair.pair, pair.state, {x, v, half, tool, tool_step, dt}, f);
     ASSERT_GE(r.friction_work, 0.0);
     sliding += r.sliding_nodes;
     sticking += r.sticking_nodes;
@@ -329,27 +336,28 @@ TEST(PenaltyFriction, ForceWithinTheConeAndWorkNonNegativeOnRandomHistories) {
 TEST(PenaltyFriction, LeavingContactResetsTheStickForce) {
   const FrictionParameters law = make_law(0.3, 0.3, 0);
   const TriangleSurface table = make_table();
-  ContactPair pair = make_pair(table, 1, 1000, law);
+  Contact pair = make_pair(table, 1, 1000, law);
   const VectorX half = VectorX::Constant(1, 0.5);
   Matrix3X x = Vec3(0, 0, 0.45);  // F_n = 50 N
   const Matrix3X v = Vec3(10, 0, 0);
   Matrix3X f = Matrix3X::Zero(3, 1);
   // A 0.01 mm tangential step: stick force -10 N.
-  compute_penalty_contact(pair, {x, v, half, Vec3::Zero(), Vec3::Zero(), 1e-3}, f);
+  compute_penalty_contact(pair.pair, pair.state, {x, v, half, Vec3::Zero(), Vec3::Zero(), 1e-3}, f);
   EXPECT_NEAR(f(0, 0), -10.0, 1e-12);
-  EXPECT_NEAR(pair.stick_force(0, 0), -10.0, 1e-12);
+  EXPECT_NEAR(pair.state.stick_force(0, 0), -10.0, 1e-12);
   // Lifted off: no force, the stored force is cleared.
   x(2, 0) = 0.6;
   f.setZero();
   const Matrix3X rest = Matrix3X::Zero(3, 1);
-  compute_penalty_contact(pair, {x, rest, half, Vec3::Zero(), Vec3::Zero(), 1e-3}, f);
+  compute_penalty_contact(pair.pair, pair.state, {x, rest, half, Vec3::Zero(), Vec3::Zero(), 1e-3},
+                          f);
   EXPECT_EQ(f.norm(), 0.0);
-  EXPECT_EQ(pair.stick_force.norm(), 0.0);
+  EXPECT_EQ(pair.state.stick_force.norm(), 0.0);
   // Back in contact at rest: the normal force only.
   x(2, 0) = 0.45;
   f.setZero();
-  const ContactResult r =
-      compute_penalty_contact(pair, {x, rest, half, Vec3::Zero(), Vec3::Zero(), 1e-3}, f);
+  const ContactResult r = compute_penalty_contact(
+      pair.pair, pair.state, {x, rest, half, Vec3::Zero(), Vec3::Zero(), 1e-3}, f);
   EXPECT_NEAR((f.col(0) - Vec3(0, 0, 50)).norm(), 0, 1e-12);
   EXPECT_EQ(r.sticking_nodes, 1);
 }
@@ -360,9 +368,9 @@ TEST(PenaltyFriction, ContactStepDoesNotAllocate) {
       "warped", 20, 20, -5, 5, -5, 5,
       [](double x, double y) { return 0.8 * std::sin(0.7 * x) * std::cos(0.5 * y); });
   const int n = 100;
-  ContactPair pair = make_pair(s, n, 500, make_law(0.3, 0.2, 0.01));
-  pair.projection = ContactProjection::interpolated;
-  pair.search->prepare(n);
+  Contact pair = make_pair(s, n, 500, make_law(0.3, 0.2, 0.01));
+  pair.pair.projection = ContactProjection::interpolated;
+  pair.pair.projector = std::make_unique<InterpolatedProjector>(s);
   std::mt19937 rng(29);
   std::uniform_real_distribution<double> u(-4, 4);
   Matrix3X x(3, n), v(3, n), f(3, n);
@@ -374,13 +382,15 @@ TEST(PenaltyFriction, ContactStepDoesNotAllocate) {
   const VectorX half = VectorX::Constant(n, 0.5);
   const double dt = 1e-4;
   f.setZero();
-  compute_penalty_contact(pair, {x, v, half, Vec3::Zero(), Vec3::Zero(), dt}, f);  // sizes state
+  compute_penalty_contact(pair.pair, pair.state, {x, v, half, Vec3::Zero(), Vec3::Zero(), dt},
+                          f);  // sizes state
   const long before = test::allocation_count();
   int in_contact = 0;
   for (int step = 0; step < 20; ++step) {
     x += dt * v;
     f.setZero();
-    in_contact += compute_penalty_contact(pair, {x, v, half, Vec3::Zero(), Vec3::Zero(), dt}, f)
+    in_contact += compute_penalty_contact(pair.pair, pair.state,
+                                          {x, v, half, Vec3::Zero(), Vec3::Zero(), dt}, f)
                       .nodes_in_contact;
   }
   EXPECT_EQ(test::allocation_count() - before, 0);

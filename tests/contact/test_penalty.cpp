@@ -21,22 +21,32 @@ TriangleSurface make_flat(double z) {
   return test::make_height_field("die", 4, 4, 0, 4, 0, 4, [z](double, double) { return z; });
 }
 
-ContactPair make_pair(const TriangleSurface& s, int n_nodes, double k, double cutoff,
-                      ContactProjection projection = ContactProjection::orthogonal) {
+/// A contact pair and its state.
+struct Contact {
   ContactPair pair;
-  pair.surface = &s;
-  pair.search = make_contact_search("modified", s);
-  pair.stiffness = VectorX::Constant(n_nodes, k);
-  pair.cutoff = cutoff;
-  pair.projection = projection;
-  return pair;
+  ContactState state;
+};
+
+Contact make_pair(const TriangleSurface& s, int n_nodes, double k, double cutoff,
+                  ContactProjection projection = ContactProjection::orthogonal) {
+  Contact c;
+  c.pair.surface = &s;
+  c.pair.search = make_contact_search("modified", s);
+  c.pair.stiffness = VectorX::Constant(n_nodes, k);
+  c.pair.cutoff = cutoff;
+  c.pair.projection = projection;
+  if (projection == ContactProjection::interpolated) {
+    c.pair.projector = std::make_unique<InterpolatedProjector>(s);
+  }
+  return c;
 }
 
 /// Contact of nodes at rest (no relative motion: frictionless behaviour).
-ContactResult contact_at_rest(ContactPair& pair, const Matrix3X& x, const VectorX& h,
+ContactResult contact_at_rest(Contact& c, const Matrix3X& x, const VectorX& h,
                               const Vec3& tool_displacement, Matrix3X& f) {
   const Matrix3X v = Matrix3X::Zero(3, x.cols());
-  return compute_penalty_contact(pair, {x, v, h, tool_displacement, Vec3::Zero(), 0.0}, f);
+  return compute_penalty_contact(c.pair, c.state, {x, v, h, tool_displacement, Vec3::Zero(), 0.0},
+                                 f);
 }
 
 TEST(PenaltyContact, ForceIsStiffnessTimesPenetrationAlongNormal) {
@@ -48,7 +58,7 @@ TEST(PenaltyContact, ForceIsStiffnessTimesPenetrationAlongNormal) {
   x.col(2) = Vec3(3.2, 0.4, -0.3);  // behind the surface, g = -0.8: f = 80 N up
   x.col(3) = Vec3(2.0, 2.0, -3.0);  // far behind (beyond the search radius): ignored
   x.col(4) = Vec3(9.0, 2.0, 0.0);   // off the tool, 5 mm away: ignored
-  ContactPair pair = make_pair(s, 5, 100.0, 2.0);
+  Contact pair = make_pair(s, 5, 100.0, 2.0);
   const VectorX h = VectorX::Constant(5, 0.5);
   Matrix3X f = Matrix3X::Zero(3, 5);
   const ContactResult r = contact_at_rest(pair, x, h, Vec3::Zero(), f);
@@ -65,14 +75,14 @@ TEST(PenaltyContact, ForceIsStiffnessTimesPenetrationAlongNormal) {
   Matrix3X x2 = x.col(0);
   x2(2, 0) += 1.0;
   Matrix3X f2 = Matrix3X::Zero(3, 1);
-  ContactPair pair1 = make_pair(s, 1, 100.0, 2.0);
+  Contact pair1 = make_pair(s, 1, 100.0, 2.0);
   contact_at_rest(pair1, x2, h.head(1), Vec3(0, 0, 1.0), f2);
   EXPECT_NEAR((f2.col(0) - Vec3(0, 0, 40)).norm(), 0, 1e-12);
 }
 
 TEST(PenaltyContact, CutoffMustExceedHalfThickness) {
   const TriangleSurface s = make_flat(0.0);
-  ContactPair pair = make_pair(s, 1, 100.0, 0.4);
+  Contact pair = make_pair(s, 1, 100.0, 0.4);
   Matrix3X x = Vec3(1, 1, 0.1);
   Matrix3X f = Matrix3X::Zero(3, 1);
   EXPECT_THROW(contact_at_rest(pair, x, VectorX::Constant(1, 0.5), Vec3::Zero(), f), InputError);
@@ -93,7 +103,7 @@ TEST(PenaltyContact, ForceIsMinusGradientOfPenaltyEnergy) {
   const TriangleSurface s("ridge", nodes, t);
   const double k = 7.0;
   const VectorX h = VectorX::Constant(1, 0.2);
-  ContactPair pair = make_pair(s, 1, k, 1.0);
+  Contact pair = make_pair(s, 1, k, 1.0);
   auto energy_and_force = [&](const Vec3& p, Vec3& force) {
     Matrix3X x = p;
     Matrix3X f = Matrix3X::Zero(3, 1);
@@ -134,8 +144,8 @@ TEST(PenaltyContact, InterpolatedOnAFlatToolEqualsOrthogonal) {
     x.col(i) = Vec3(px, py, 0.2 * px + 0.1 * py + dz(rng));
   }
   const VectorX h = VectorX::Constant(n, 0.5);
-  ContactPair orthogonal = make_pair(s, n, 100.0, 1.5, ContactProjection::orthogonal);
-  ContactPair interpolated = make_pair(s, n, 100.0, 1.5, ContactProjection::interpolated);
+  Contact orthogonal = make_pair(s, n, 100.0, 1.5, ContactProjection::orthogonal);
+  Contact interpolated = make_pair(s, n, 100.0, 1.5, ContactProjection::interpolated);
   Matrix3X fo = Matrix3X::Zero(3, n), fi = Matrix3X::Zero(3, n);
   const ContactResult ro = contact_at_rest(orthogonal, x, h, Vec3::Zero(), fo);
   const ContactResult ri = contact_at_rest(interpolated, x, h, Vec3::Zero(), fi);
@@ -158,8 +168,8 @@ TEST(PenaltyContact, InterpolatedContactInTheFoldDeadZone) {
   const Vec3 dir = (Vec3::UnitZ() + Vec3(slope, 0, 1).normalized()).normalized();
   Matrix3X x = Vec3(Vec3(0, 0.45, 0) + 0.3 * dir);
   const VectorX h = VectorX::Constant(1, 0.5);
-  ContactPair orthogonal = make_pair(s, 1, 100.0, 1.5, ContactProjection::orthogonal);
-  ContactPair interpolated = make_pair(s, 1, 100.0, 1.5, ContactProjection::interpolated);
+  Contact orthogonal = make_pair(s, 1, 100.0, 1.5, ContactProjection::orthogonal);
+  Contact interpolated = make_pair(s, 1, 100.0, 1.5, ContactProjection::interpolated);
   Matrix3X fo = Matrix3X::Zero(3, 1), fi = Matrix3X::Zero(3, 1);
   const ContactResult ro = contact_at_rest(orthogonal, x, h, Vec3::Zero(), fo);
   const ContactResult ri = contact_at_rest(interpolated, x, h, Vec3::Zero(), fi);
@@ -185,7 +195,7 @@ TEST(PenaltyContact, InterpolatedForceIsNotAGradient) {
   const int steps = 4000;
   double work[2] = {0, 0};
   for (int m = 0; m < 2; ++m) {
-    ContactPair pair = make_pair(
+    Contact pair = make_pair(
         s, 1, k, 1.5, m == 0 ? ContactProjection::orthogonal : ContactProjection::interpolated);
     for (int i = 0; i < steps; ++i) {
       const double a0 = 2 * std::numbers::pi * i / steps,
@@ -246,7 +256,7 @@ struct Bounce {
 /// z = 5 mm displaced by (0, 0, -5) (so at z = 0), central differences with step dt (s).
 Bounce simulate_bounce(double m, double k, double v0, double dt) {
   const TriangleSurface s = make_flat(5.0);
-  ContactPair pair = make_pair(s, 1, k, 3.0);
+  Contact pair = make_pair(s, 1, k, 3.0);
   const VectorX h = VectorX::Constant(1, 0.5);
   const Vec3 tool_displacement(0, 0, -5.0);
   Matrix3X x = Vec3(1.3, 2.1, 0.5 + 0.25);  // gap 0.25 mm

@@ -36,10 +36,18 @@ constexpr const char* kAllSearches[] = {"standard", "standard_brute_force", "mod
 
 /// Makes `name` over s, prepared for one blank node: the configuration tests query node 0, so
 /// that the cached search answers from its candidate list (the others from find_closest).
-std::unique_ptr<ContactSearch> make_for_one_node(const char* name, const TriangleSurface& s) {
-  auto search = make_contact_search(name, s);
-  search->prepare(1);
-  return search;
+struct OneNodeSearch {
+  std::unique_ptr<ContactSearch> search;
+  std::unique_ptr<SearchCache> cache;  ///< for one node
+  /// The query of node 0.
+  void query(const Vec3& p, double cutoff, ClosestPoint& out) const {
+    search->find_closest_for_node(cache.get(), 0, p, cutoff, out);
+  }
+};
+OneNodeSearch make_for_one_node(const char* name, const TriangleSurface& s) {
+  OneNodeSearch one{make_contact_search(name, s), nullptr};
+  one.cache = one.search->make_cache(1);
+  return one;
 }
 
 double surface_size(const TriangleSurface& s) {
@@ -182,7 +190,7 @@ TEST(ContactConfigurations, ConcaveFoldDeadZone) {
     const auto search = make_for_one_node(name, s);
     const Vec3 p(0.2, 0.1, -0.5);
     ClosestPoint cp;
-    search->find_closest_for_node(0, p, 2.0, cp);
+    search.query(p, 2.0, cp);
     ASSERT_GE(cp.triangle, 0) << name;
     EXPECT_EQ(cp.feature, Feature::edge) << name;
     EXPECT_NEAR(cp.distance, std::hypot(0.1, 0.5), 1e-14) << name;
@@ -209,7 +217,7 @@ TEST(ContactConfigurations, ConvexRidgeNormalIsContinuous) {
     double max_jump = 0;
     for (int k = 0; k <= steps; ++k) {
       const Vec3 p(0.1, -0.5 + k * dy, 0.3);
-      search->find_closest_for_node(0, p, 5.0, cp);
+      search.query(p, 5.0, cp);
       ASSERT_GE(cp.triangle, 0);
       EXPECT_GT(cp.signed_distance, 0);
       if (k > 0) {
@@ -220,10 +228,10 @@ TEST(ContactConfigurations, ConvexRidgeNormalIsContinuous) {
     }
     EXPECT_LT(max_jump, 1.01 * dy / 0.3);
     // Over the ridge line the normal is +z, and far on either side the face normals.
-    search->find_closest_for_node(0, Vec3(0.1, 0, 0.3), 5.0, cp);
+    search.query(Vec3(0.1, 0, 0.3), 5.0, cp);
     EXPECT_NEAR((cp.normal - Vec3::UnitZ()).norm(), 0.0, 1e-14);
     EXPECT_EQ(cp.set_size, 2);
-    search->find_closest_for_node(0, Vec3(0.1, 0.5, 0.3), 5.0, cp);
+    search.query(Vec3(0.1, 0.5, 0.3), 5.0, cp);
     EXPECT_EQ(cp.feature, Feature::face);
     EXPECT_NEAR((cp.normal - s.triangle_normals().col(cp.triangle)).norm(), 0.0, 1e-14);
   }
@@ -237,7 +245,7 @@ TEST(ContactConfigurations, ExactEdgeHitGivesBothTriangles) {
     ClosestPoint cp;
     // Cell (0, 0) is split by its diagonal (0,0)-(1,1): the point above (0.3, 0.3) is on it.
     for (double h : {0.7, 0.0, -0.4}) {
-      search->find_closest_for_node(0, Vec3(0.3, 0.3, h), 1.0, cp);
+      search.query(Vec3(0.3, 0.3, h), 1.0, cp);
       EXPECT_EQ(cp.set_size, 2) << name << " h = " << h;
       EXPECT_EQ(cp.set[0], 0);
       EXPECT_EQ(cp.set[1], 1);
@@ -261,7 +269,7 @@ TEST(ContactConfigurations, ExactVertexHitGivesAllTrianglesAtTheVertex) {
     for (const char* name : kAllSearches) {
       const auto search = make_for_one_node(name, s);
       ClosestPoint cp;
-      search->find_closest_for_node(0, Vec3(2, 2, apex + 0.5), 2.0, cp);
+      search.query(Vec3(2, 2, apex + 0.5), 2.0, cp);
       ASSERT_EQ(cp.set_size, static_cast<int>(expected.size())) << name;
       EXPECT_TRUE(std::equal(expected.begin(), expected.end(), cp.set.begin())) << name;
       EXPECT_EQ(cp.feature, Feature::vertex) << name;
@@ -277,14 +285,14 @@ TEST(ContactConfigurations, NothingWithinCutoff) {
   for (const char* name : kAllSearches) {
     const auto search = make_for_one_node(name, s);
     ClosestPoint cp;
-    search->find_closest_for_node(0, Vec3(2, 2, 1.5), 1.0, cp);
+    search.query(Vec3(2, 2, 1.5), 1.0, cp);
     EXPECT_EQ(cp.triangle, -1) << name;
     EXPECT_EQ(cp.set_size, 0) << name;
-    search->find_closest_for_node(0, Vec3(2, 2, 0.9), 1.0, cp);
+    search.query(Vec3(2, 2, 0.9), 1.0, cp);
     EXPECT_GE(cp.triangle, 0) << name;
-    search->find_closest_for_node(0, Vec3(50, 2, 0), 1.0, cp);  // far off the grid
+    search.query(Vec3(50, 2, 0), 1.0, cp);  // far off the grid
     EXPECT_EQ(cp.triangle, -1) << name;
-    search->find_closest_for_node(0, Vec3(50, 2, 0), std::numeric_limits<double>::infinity(), cp);
+    search.query(Vec3(50, 2, 0), std::numeric_limits<double>::infinity(), cp);
     EXPECT_NEAR(cp.distance, 46.0, 1e-12) << name;
   }
 }
