@@ -95,8 +95,8 @@ LoadedCase load(const Arguments& args) {
 }
 
 int run(const Arguments& args) {
-  LoadedCase loaded = load(args);
-  sf::Model& model = loaded.model;
+  const LoadedCase loaded = load(args);
+  const sf::Model& model = loaded.model;
   sf::print_model(loaded.config, model);
   // 3. Prepare the results folder and keep the resolved case beside the results.
   const fs::path out = output_directory(args, loaded.config);

@@ -104,8 +104,7 @@ struct ContactInterface {
   int tool = -1;       ///< index into Model::tools
   std::string search;  ///< the search's name ("standard", "modified", "cached")
   bool audit = false;  ///< the output counts, per frame, the nodes where the search is not exact
-  ContactPair pair;    ///< fixed for the run
-  ContactState state;  ///< what changes during the run (sized by the first contact call)
+  ContactPair pair;    ///< fixed for the run (its changing state: SolutionState::contacts)
 };
 
 /// How the run steps and when it ends.

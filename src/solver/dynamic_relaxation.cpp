@@ -114,7 +114,7 @@ struct FrozenLoads {
 /// 280 nodes touch at any one time): frozen, that snapshot is a set of unbalanced point loads of
 /// a few N on a flange whose tip stiffness is 0.03 N/mm, and the flange swung up by 36 degrees.
 /// Call with the contact off and the velocities zeroed; moves the loads into state.f_ext, m_ext.
-FrozenLoads freeze_tool_forces(Model& model, SolutionState& s, double release_time,
+FrozenLoads freeze_tool_forces(const Model& model, SolutionState& s, double release_time,
                                const Matrix3X& contact_force) {
   FrozenLoads frozen;
   for (Eigen::Index i = 0; i < contact_force.cols(); ++i) {
@@ -315,7 +315,7 @@ class RelaxationProgress {
 
 }  // namespace
 
-DynamicRelaxationResult run_dynamic_relaxation(Model& model, SolutionState& state,
+DynamicRelaxationResult run_dynamic_relaxation(const Model& model, SolutionState& state,
                                                FrameOutput* output,
                                                const SpringbackConfig& config) {
   SolutionState& s = state;

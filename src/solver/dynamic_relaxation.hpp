@@ -49,7 +49,7 @@ struct DynamicRelaxationResult {
 /// has passed after the release (a warning then, not an error). Writes frames (about
 /// control.output_frames / 4 of them, at least 2) and history rows to `output` (may be null).
 /// Throws InstabilityError when the run goes unstable.
-DynamicRelaxationResult run_dynamic_relaxation(Model& model, SolutionState& state,
+DynamicRelaxationResult run_dynamic_relaxation(const Model& model, SolutionState& state,
                                                FrameOutput* output, const SpringbackConfig& config);
 
 }  // namespace sf

@@ -15,7 +15,7 @@
 
 namespace sf {
 
-RunSummary run_explicit(Model& model, const RunOptions& options, SolutionState* final_state) {
+RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionState* final_state) {
   const auto wall_start = std::chrono::steady_clock::now();
   SolutionState s = make_initial_state(model);
   for (std::size_t t = 0; t < s.tools.size(); ++t) {

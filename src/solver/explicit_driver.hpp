@@ -19,7 +19,7 @@ struct RunOptions {
 /// case's springback if it has one; the final state goes to `final_state` when given. Throws
 /// InstabilityError (after writing what it can) when the run goes unstable, ConvergenceError when
 /// an implicit springback cannot converge.
-RunSummary run_explicit(Model& model, const RunOptions& options,
+RunSummary run_explicit(const Model& model, const RunOptions& options,
                         SolutionState* final_state = nullptr);
 
 }  // namespace sf

@@ -16,7 +16,7 @@ void keep_previous_forces(SolutionState& s) {
   s.f_contact_previous.swap(s.f_contact);
 }
 
-void take_step(Model& model, SolutionState& s, double dt, double dt_previous) {
+void take_step(const Model& model, SolutionState& s, double dt, double dt_previous) {
   const double time_before = s.time;  // t(n)
   update_half_kick_reference(model, s, dt, dt_previous);
   const double weight = velocity_update_weight(dt, dt_previous);
@@ -31,7 +31,7 @@ void take_step(Model& model, SolutionState& s, double dt, double dt_previous) {
 
 }  // namespace
 
-void advance_one_step(Model& model, SolutionState& s, double dt, double dt_previous) {
+void advance_one_step(const Model& model, SolutionState& s, double dt, double dt_previous) {
   // The nodal phases' time: the step's less the element and contact passes' (timed inside).
   const double inner_before = s.times.elements + s.times.contact;
   double step_seconds = 0.0;

@@ -14,6 +14,6 @@ namespace sf {
 /// energies (the kinetic energy at the step end, from v(n+1) = v(n+1/2) + dt/2 a(n+1); state.v
 /// stays at the half step). dt_previous is the step before (0 on the first step, and after a
 /// restart from rest).
-void advance_one_step(Model& model, SolutionState& state, double dt, double dt_previous);
+void advance_one_step(const Model& model, SolutionState& state, double dt, double dt_previous);
 
 }  // namespace sf

@@ -27,6 +27,7 @@ SolutionState make_initial_state(const Model& model) {
                              model.initial.thickness);
   initialize_directors(model.blank.part, model.blank.mesh.nodes, s.shell);
   s.tools.resize(model.tools.size());
+  s.contacts.resize(model.contacts.size());
   for (const InitialVelocityConfig& iv : model.initial.velocities) {
     const auto set = [&](int node) {
       const Vec3 p = model.blank.mesh.nodes.col(node);  // mm, the initial coordinates

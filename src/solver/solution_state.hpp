@@ -4,6 +4,7 @@
 // The Model stays const; a run is its model plus this state.
 #include <vector>
 
+#include "contact/contact_state.hpp"
 #include "contact/penalty_contact.hpp"
 #include "element/shell_bt.hpp"
 #include "model/mass_scaling.hpp"
@@ -77,6 +78,9 @@ struct SolutionState {
   double contact_spring_energy = 0.0;
   ShellState shell;
   std::vector<ToolState> tools;
+  /// One per Model::contacts: the search caches, distance bounds and stick forces (sized by the
+  /// first contact call).
+  std::vector<ContactState> contacts;
   /// Springback by dynamic relaxation: the contact is off, and the forces the tools held the
   /// blank with act as these nodal loads (released over time) besides the model's own.
   bool contact_off = false;

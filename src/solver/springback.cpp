@@ -7,7 +7,7 @@
 
 namespace sf {
 
-SpringbackSummary run_springback(Model& model, SolutionState& s, FrameOutput* output) {
+SpringbackSummary run_springback(const Model& model, SolutionState& s, FrameOutput* output) {
   const auto start = std::chrono::steady_clock::now();
   const SpringbackConfig& config = *model.springback;
   const Matrix3X formed = s.x;

@@ -31,7 +31,7 @@ struct SpringbackSummary {
 /// Runs the case's [springback] from the end-of-forming state `state` (changed to the sprung
 /// shape), writing its frames to `output` (may be null). Throws ConvergenceError when the
 /// implicit step cannot converge, InstabilityError when the explicit route goes unstable.
-SpringbackSummary run_springback(Model& model, SolutionState& state, FrameOutput* output);
+SpringbackSummary run_springback(const Model& model, SolutionState& state, FrameOutput* output);
 
 /// The implicit method: the blank's internal forces at the end of forming are the tool forces'
 /// reactions; they are released, (1 - lambda) of them applied as lambda goes 0 -> 1, by the

@@ -49,7 +49,7 @@ void update_contact_offsets(const Model& model, SolutionState& s) {
 
 // The penalty contact of every pair into state.f_contact (zeroed here), the tools' reactions and
 // contact counts, the spring energy and the friction work.
-void compute_contact_forces(Model& model, SolutionState& s, double dt) {
+void compute_contact_forces(const Model& model, SolutionState& s, double dt) {
   s.f_contact.setZero();
   s.contact_spring_energy = 0.0;
   for (ToolState& t : s.tools) {
@@ -59,7 +59,8 @@ void compute_contact_forces(Model& model, SolutionState& s, double dt) {
   if (s.contact_off) {
     return;
   }
-  for (ContactInterface& c : model.contacts) {
+  for (std::size_t k = 0; k < model.contacts.size(); ++k) {
+    const ContactInterface& c = model.contacts[k];
     ToolState& tool = s.tools[static_cast<std::size_t>(c.tool)];
     // s.v is the mid-step velocity of the step dt just taken (dt = 0 on the first call).
     const Vec3 tool_step =
@@ -70,7 +71,7 @@ void compute_contact_forces(Model& model, SolutionState& s, double dt) {
                                        .tool_displacement = tool.displacement,
                                        .tool_displacement_increment = tool_step,
                                        .dt = dt};
-    const ContactResult r = compute_penalty_contact(c.pair, c.state, kinematics, s.f_contact);
+    const ContactResult r = compute_penalty_contact(c.pair, s.contacts[k], kinematics, s.f_contact);
     tool.force += r.force_on_tool;
     tool.nodes_in_contact += r.nodes_in_contact;
     s.contact_spring_energy += r.energy;
@@ -80,7 +81,7 @@ void compute_contact_forces(Model& model, SolutionState& s, double dt) {
 
 }  // namespace
 
-ShellForceResult compute_forces(Model& model, SolutionState& s, double dt) {
+ShellForceResult compute_forces(const Model& model, SolutionState& s, double dt) {
   compute_external_forces(model, s.time, s.x, s.f_ext, s.m_ext, s.released_loads);
   const Clock::time_point element_start = Clock::now();
   const ShellForceResult elements = compute_internal_forces(model, s, dt);

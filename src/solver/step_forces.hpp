@@ -10,6 +10,6 @@ namespace sf {
 /// External, internal and contact forces at the current state (state.x, state.v, dt in s: the
 /// step just taken, 0 before the first); returns the element pass's hourglass and plastic work
 /// (N mm). Element and contact wall times are added to state.times.
-ShellForceResult compute_forces(Model& model, SolutionState& state, double dt);
+ShellForceResult compute_forces(const Model& model, SolutionState& state, double dt);
 
 }  // namespace sf
