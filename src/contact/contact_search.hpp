@@ -87,6 +87,21 @@ class ContactSearch {
   virtual std::string_view name() const = 0;
 };
 
+/// The contact searches, by the names a case file gives them (make_contact_search).
+enum class ContactSearchKind {
+  standard,
+  standard_brute_force,
+  modified,
+  modified_brute_force,
+  cached,
+};
+
+/// The search's name ("standard", ..., "cached"): the one name table, used both ways.
+std::string_view contact_search_name(ContactSearchKind kind);
+/// The search called `name`. Throws InputError for an unknown name, listing the accepted ones
+/// (`where` starts the message, e.g. the tool).
+ContactSearchKind parse_contact_search(std::string_view name, std::string_view where);
+
 /// Options of the searches that have any (the others ignore them).
 struct SearchOptions {
   /// "cached": how far (mm) a node may move from where its candidate list was built before the
@@ -109,6 +124,10 @@ struct SearchOptions {
 ///    candidate triangles, rebuilt when the node has moved more than `options.cached_margin`.
 /// Throws InputError for an unknown name, listing the accepted ones.
 std::unique_ptr<ContactSearch> make_contact_search(std::string_view name,
+                                                   const TriangleSurface& surface,
+                                                   const SearchOptions& options = {});
+/// The same, by kind.
+std::unique_ptr<ContactSearch> make_contact_search(ContactSearchKind kind,
                                                    const TriangleSurface& surface,
                                                    const SearchOptions& options = {});
 

@@ -316,14 +316,15 @@ void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& s
   const MaterialConfig& material = config.blank_material();
   for (const ContactConfig& cc : config.contacts) {
     ContactInterface contact;
-    contact.search = cc.search;
+    contact.search = parse_contact_search(
+        cc.search, fmt::format("{}: contact with tool '{}'", config.file.string(), cc.tool));
     contact.audit = cc.audit;
     const auto found = std::find_if(model.tools.begin(), model.tools.end(),
                                     [&](const Tool& t) { return t.name == cc.tool; });
     contact.tool = static_cast<int>(found - model.tools.begin());
     const Tool& tool = model.tools[static_cast<std::size_t>(contact.tool)];
     contact.pair.surface = &tool.surface;
-    contact.pair.search = make_contact_search(cc.search, tool.surface,
+    contact.pair.search = make_contact_search(contact.search, tool.surface,
                                               SearchOptions{.cached_margin = cc.search_margin});
     // Nodes far from the tool are skipped until their motion could bring them within reach.
     contact.pair.distance_bound = std::make_unique<ToolDistanceBound>(tool.surface);

@@ -101,8 +101,8 @@ struct Tool {
 
 /// A contact pair between all blank nodes and one tool's triangles.
 struct ContactInterface {
-  int tool = -1;       ///< index into Model::tools
-  std::string search;  ///< the search's name ("standard", "modified", "cached")
+  int tool = -1;  ///< index into Model::tools
+  ContactSearchKind search = ContactSearchKind::modified;
   bool audit = false;  ///< the output counts, per frame, the nodes where the search is not exact
   ContactPair pair;    ///< fixed for the run (its changing state: SolutionState::contacts)
 };

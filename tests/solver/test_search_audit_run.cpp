@@ -30,7 +30,7 @@ TEST(SearchAuditRun, RecorderCountsTheStandardSearchMissesLikeTheOracle) {
   model.tools.push_back(std::move(tool));
   ContactInterface contact;
   contact.tool = 0;
-  contact.search = "standard";
+  contact.search = ContactSearchKind::standard;
   contact.audit = true;
   contact.pair.surface = &model.tools[0].surface;
   contact.pair.search = make_contact_search("standard", model.tools[0].surface);
