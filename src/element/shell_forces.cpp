@@ -12,6 +12,7 @@
 #include "core/errors.hpp"
 #include "element/shell_geometry.hpp"
 #include "element/shell_geometry_batch.hpp"
+#include "element/shell_mass.hpp"
 #include "element/shell_nodal_access.hpp"
 #include "element/shell_quad_assumed_strain.hpp"
 #include "element/shell_section_update.hpp"
@@ -29,7 +30,7 @@ constexpr int kBtModes = 5;
 template <class Law>
 ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Matrix3X& x,
                                 const Matrix3X& v, const Matrix3X& omega, double dt, ShellState& st,
-                                Matrix3X& f_int, Matrix3X& m_int) {
+                                Matrix3X& f_int, Matrix3X& m_int, double* element_dt) {
   const int n_el = static_cast<int>(part.quads.cols());
   const double shear_modulus = 0.5 * law.E / (1.0 + law.nu);
   const double ks_g = 5.0 / 6.0 * shear_modulus;  // shear correction factor 5/6
@@ -49,6 +50,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
   double* hg_state = st.hourglass.data();
   const double* material_angle = part.material_angle.empty() ? nullptr : part.material_angle.data();
   ShellForceResult result;
+  const double wave_speed = part_wave_speed(part);  // mm/s, for the elements' time steps
 
   QuadGeometryBlock geometry;  // of the block of elements holding e
   for (int e = 0; e < n_el; ++e) {
@@ -115,6 +117,9 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     const ShellGeometry& g = geometry.end[lane];
     if (!geometry.end_ok[lane]) {
       throw_invalid_geometry(e, "end of step");
+    }
+    if (element_dt) {
+      element_dt[e] = quad_time_step(xe, g.area, wave_speed);  // the next step's bound, at x
     }
     const double a = g.area;
     const Row4 gx = g.b.row(0);
@@ -224,8 +229,8 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
 
 ShellForceResult compute_shell_internal_forces(const ShellPart& part, const Matrix3X& x,
                                                const Matrix3X& v, const Matrix3X& omega, double dt,
-                                               ShellState& state, Matrix3X& f_int,
-                                               Matrix3X& m_int) {
+                                               ShellState& state, Matrix3X& f_int, Matrix3X& m_int,
+                                               std::span<double> element_dt) {
   const auto n_nodes = x.cols();
   const auto n_el = static_cast<Eigen::Index>(element_count(part));
   if (v.cols() != n_nodes || omega.cols() != n_nodes || f_int.cols() != n_nodes ||
@@ -235,18 +240,23 @@ ShellForceResult compute_shell_internal_forces(const ShellPart& part, const Matr
       state.thickness.size() != static_cast<std::size_t>(n_el) ||
       state.hourglass.size() != static_cast<std::size_t>(n_el * kHourglassModes) ||
       (!part.material_angle.empty() &&
-       part.material_angle.size() != static_cast<std::size_t>(n_el))) {
+       part.material_angle.size() != static_cast<std::size_t>(n_el)) ||
+      (!element_dt.empty() && element_dt.size() != static_cast<std::size_t>(n_el))) {
     throw std::invalid_argument("compute_shell_internal_forces: inconsistent array sizes");
   }
   ShellForceResult result;
   if (part.quads.cols() > 0 && part.formulation == ShellFormulation::assumed_strain) {
-    result = compute_assumed_strain_quad_forces(part, x, v, omega, dt, state, f_int, m_int);
+    result = compute_assumed_strain_quad_forces(part, x, v, omega, dt, state, f_int, m_int,
+                                                element_dt.data());
   } else if (part.quads.cols() > 0) {
     result = std::visit(
         [&](const auto& law) {
-          return compute_forces(part, law, x, v, omega, dt, state, f_int, m_int);
+          return compute_forces(part, law, x, v, omega, dt, state, f_int, m_int, element_dt.data());
         },
         part.material);
+  }
+  if (!element_dt.empty()) {
+    compute_triangle_time_steps(part, x, element_dt);
   }
   const ShellForceResult tri =
       part.formulation == ShellFormulation::assumed_strain

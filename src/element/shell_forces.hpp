@@ -3,6 +3,8 @@
 // triangles. The Belytschko-Lin-Tsay quad (Belytschko, Lin & Tsay 1984; Hallquist, LS-DYNA Theory
 // Manual) with viscous or stiffness hourglass control (Flanagan & Belytschko 1981) is here; the
 // assumed-strain quad in shell_quad_assumed_strain.hpp, the triangle in shell_triangle.hpp.
+#include <span>
+
 #include "core/types.hpp"
 #include "element/shell_part.hpp"
 
@@ -29,8 +31,12 @@ struct ShellForceResult {
 /// velocities (rad/s) at mid-step; dt: step (s). Strain increments are taken on the mid-step
 /// configuration x - dt/2 v, forces on x. Throws InstabilityError naming the element on
 /// inversion, collapse or a non-finite value.
+/// With element_dt (one per element), also each element's critical step L / c at x (s, as
+/// compute_element_time_steps gives it: the same bits), the quads' from the end-of-step geometry
+/// the forces use, so that the time-step control needs no pass of its own.
 ShellForceResult compute_shell_internal_forces(const ShellPart& part, const Matrix3X& x,
                                                const Matrix3X& v, const Matrix3X& omega, double dt,
-                                               ShellState& state, Matrix3X& f_int, Matrix3X& m_int);
+                                               ShellState& state, Matrix3X& f_int, Matrix3X& m_int,
+                                               std::span<double> element_dt = {});
 
 }  // namespace sf

@@ -43,16 +43,6 @@ void compute_lumped_mass(const ShellPart& part, const Matrix3X& x, const ShellSt
 
 namespace {
 
-// L / c of quad e with projected area `area` (compute_shell_geometry): L = A / max side (LS-DYNA
-// ISDO = 0), c the plate wave speed.
-double quad_time_step(const Quad3& xe, double area, double c) {
-  double side2 = 0.0;
-  for (int i = 0; i < 4; ++i) {
-    side2 = std::max(side2, (xe.col((i + 1) % 4) - xe.col(i)).squaredNorm());
-  }
-  return area / (std::sqrt(side2) * c);
-}
-
 // L / c of triangle e (element index, quads first): L = 2 A / max side, the smallest altitude.
 double triangle_time_step(const Matrix3X& x, const ShellPart& part, int e, double c,
                           TriangleGeometry& tg) {
@@ -65,8 +55,7 @@ double triangle_time_step(const Matrix3X& x, const ShellPart& part, int e, doubl
 // kBlockLanes from the SIMD geometry kernel (the time loop evaluates this every cycle).
 template <class Step>
 void for_each_time_step(const ShellPart& part, const Matrix3X& x, Step step) {
-  const double c = plane_stress_wave_speed(young_modulus(part.material),
-                                           poisson_ratio(part.material), part.density);
+  const double c = part_wave_speed(part);
   const int n_quads = static_cast<int>(part.quads.cols());
   for (int e0 = 0; e0 < n_quads; e0 += kBlockLanes) {
     const int count = std::min(kBlockLanes, n_quads - e0);
@@ -88,6 +77,38 @@ void for_each_time_step(const ShellPart& part, const Matrix3X& x, Step step) {
 }
 
 }  // namespace
+
+double part_wave_speed(const ShellPart& part) {
+  return plane_stress_wave_speed(young_modulus(part.material), poisson_ratio(part.material),
+                                 part.density);
+}
+
+double quad_time_step(const Quad3& xe, double area, double wave_speed) {
+  double side2 = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    side2 = std::max(side2, (xe.col((i + 1) % 4) - xe.col(i)).squaredNorm());
+  }
+  return area / (std::sqrt(side2) * wave_speed);
+}
+
+void compute_triangle_time_steps(const ShellPart& part, const Matrix3X& x,
+                                 std::span<double> element_dt) {
+  const double c = part_wave_speed(part);
+  TriangleGeometry tg;
+  for (int e = static_cast<int>(part.quads.cols()); e < element_count(part); ++e) {
+    element_dt[static_cast<std::size_t>(e)] = triangle_time_step(x, part, e, c, tg);
+  }
+}
+
+StableStep smallest_time_step(std::span<const double> element_dt) {
+  StableStep best{std::numeric_limits<double>::infinity(), -1};
+  for (std::size_t e = 0; e < element_dt.size(); ++e) {
+    if (element_dt[e] < best.dt) {
+      best = {element_dt[e], static_cast<int>(e)};
+    }
+  }
+  return best;
+}
 
 StableStep compute_stable_time_step(const ShellPart& part, const Matrix3X& x,
                                     const ShellState& /*state*/) {

@@ -37,6 +37,21 @@ StableStep compute_stable_time_step(const ShellPart& part, const Matrix3X& x,
 StableStep compute_element_time_steps(const ShellPart& part, const Matrix3X& x,
                                       std::span<double> element_dt);
 
+/// The plate wave speed c (mm/s) of the part's material at part.density.
+double part_wave_speed(const ShellPart& part);
+
+/// L / c (s) of a quad with nodes xe and projected area `area` (mm^2, compute_shell_geometry's):
+/// L = A / max side (LS-DYNA ISDO = 0), c = wave_speed (mm/s). The element force pass and
+/// compute_element_time_steps both use it (the same bits).
+double quad_time_step(const Quad3& xe, double area, double wave_speed);
+
+/// The triangles' entries of element_dt (as compute_element_time_steps); the quads' are left.
+void compute_triangle_time_steps(const ShellPart& part, const Matrix3X& x,
+                                 std::span<double> element_dt);
+
+/// The smallest of per-element steps and its element (the first one in element order on a tie).
+StableStep smallest_time_step(std::span<const double> element_dt);
+
 /// Each element's mass rho t A (tonne, at part.density and the thickness in `state`) and its
 /// rotational inertia factor alpha = (A + t^2) / 4 (mm^2), so that it gives m / 4 of mass and
 /// alpha m / 4 of rotational inertia to each of its nodes (as compute_lumped_mass). Both vectors

@@ -10,6 +10,7 @@
 #include "element/shell_directors.hpp"
 #include "element/shell_geometry.hpp"
 #include "element/shell_geometry_batch.hpp"
+#include "element/shell_mass.hpp"
 #include "element/shell_nodal_access.hpp"
 #include "element/shell_quad_directors.hpp"
 #include "element/shell_quad_hourglass.hpp"
@@ -136,8 +137,9 @@ DirectorResultants make_director_resultants(const CartesianMap& map, double area
 template <class Law>
 ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Matrix3X& x,
                                 const Matrix3X& v, const Matrix3X& omega, double dt, ShellState& st,
-                                Matrix3X& f_int, Matrix3X& m_int) {
+                                Matrix3X& f_int, Matrix3X& m_int, double* element_dt) {
   const int n_el = static_cast<int>(part.quads.cols());
+  const double wave_speed = part_wave_speed(part);  // mm/s, for the elements' time steps
   const Constants c{law.E, law.nu, 5.0 / 6.0 * 0.5 * law.E / (1.0 + law.nu),
                     plane_stress_stiffness(law.E, law.nu)};
   const SectionConstants section = make_section_constants(part.section);
@@ -218,6 +220,9 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     if (!geometry.end_ok[lane]) {
       throw_invalid_geometry(e, "end of step");
     }
+    if (element_dt) {
+      element_dt[e] = quad_time_step(xe, g.area, wave_speed);  // the next step's bound, at x
+    }
     const double a = g.area;
     Quad3 fl;
     fl.row(0) = a * (sr.n(0) * g.b.row(0) + sr.n(2) * g.b.row(1));
@@ -240,7 +245,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
 ShellForceResult compute_assumed_strain_quad_forces(const ShellPart& part, const Matrix3X& x,
                                                     const Matrix3X& v, const Matrix3X& omega,
                                                     double dt, ShellState& state, Matrix3X& f_int,
-                                                    Matrix3X& m_int) {
+                                                    Matrix3X& m_int, double* element_dt) {
   if (state.director.size() != static_cast<std::size_t>(3 * kDirectorNodes) *
                                    static_cast<std::size_t>(state.n_elements) ||
       state.hourglass.size() !=
@@ -249,7 +254,7 @@ ShellForceResult compute_assumed_strain_quad_forces(const ShellPart& part, const
   }
   return std::visit(
       [&](const auto& law) {
-        return compute_forces(part, law, x, v, omega, dt, state, f_int, m_int);
+        return compute_forces(part, law, x, v, omega, dt, state, f_int, m_int, element_dt);
       },
       part.material);
 }

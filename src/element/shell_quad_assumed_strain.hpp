@@ -14,10 +14,11 @@ namespace sf {
 /// updating their state (stresses, thickness, stabilisation resultants and directors: the
 /// directors are turned by dt omega). Same conventions as compute_shell_internal_forces; the
 /// directors must have been set (initialize_directors). Throws InstabilityError naming the
-/// element on inversion, collapse or a non-finite value.
+/// element on inversion, collapse or a non-finite value. element_dt (when not null, one per element
+/// of the part): each quad's critical step at x (compute_shell_internal_forces).
 ShellForceResult compute_assumed_strain_quad_forces(const ShellPart& part, const Matrix3X& x,
                                                     const Matrix3X& v, const Matrix3X& omega,
                                                     double dt, ShellState& state, Matrix3X& f_int,
-                                                    Matrix3X& m_int);
+                                                    Matrix3X& m_int, double* element_dt = nullptr);
 
 }  // namespace sf

@@ -22,6 +22,12 @@ TimeStepCheck scale_mass_to_time_step(const ShellPart& part, const Matrix3X& x,
                                       MassScaling& scaling, VectorX& nodal_mass,
                                       VectorX& rotational_inertia) {
   const StableStep physical = compute_element_time_steps(part, x, scaling.element_dt);
+  return scale_mass_to_element_steps(part, physical, scaling, nodal_mass, rotational_inertia);
+}
+
+TimeStepCheck scale_mass_to_element_steps(const ShellPart& part, const StableStep& physical,
+                                          MassScaling& scaling, VectorX& nodal_mass,
+                                          VectorX& rotational_inertia) {
   TimeStepCheck check;
   if (!scaling.enabled()) {
     check.dt = scaling.safety * physical.dt;

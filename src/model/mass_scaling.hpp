@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "element/shell_mass.hpp"
 #include "element/shell_part.hpp"
 
 namespace sf {
@@ -53,5 +54,12 @@ void set_up_mass_scaling(const ShellPart& part, const Matrix3X& x, const ShellSt
 TimeStepCheck scale_mass_to_time_step(const ShellPart& part, const Matrix3X& x,
                                       MassScaling& scaling, VectorX& nodal_mass,
                                       VectorX& rotational_inertia);
+
+/// The same from the elements' critical steps already in scaling.element_dt (at the physical
+/// density, e.g. from the element force pass: compute_shell_internal_forces) with `physical`
+/// their smallest and its element.
+TimeStepCheck scale_mass_to_element_steps(const ShellPart& part, const StableStep& physical,
+                                          MassScaling& scaling, VectorX& nodal_mass,
+                                          VectorX& rotational_inertia);
 
 }  // namespace sf

@@ -67,10 +67,13 @@ struct SolutionState {
   VectorX mass;                ///< tonne per node (grows under mass scaling)
   VectorX rotational_inertia;  ///< tonne mm^2 per node (likewise)
   MassScaling scaling;         ///< the elements' density factors and the added mass so far
-  VectorX inverse_mass;        ///< 1/tonne per node, 1 / mass (update_inverse_masses)
-  VectorX inverse_inertia;     ///< 1/(tonne mm^2) per node, 1 / rotational_inertia
-  VectorX mass_before;         ///< tonne per node, scratch: the masses before this cycle's scaling
-  VectorX inertia_before;      ///< tonne mm^2 per node, likewise
+  /// The cycle at which the element force pass last filled scaling.element_dt (the elements'
+  /// critical steps at x); -1: never. compute_time_step uses them when they are of this cycle.
+  long element_dt_cycle = -1;
+  VectorX inverse_mass;     ///< 1/tonne per node, 1 / mass (update_inverse_masses)
+  VectorX inverse_inertia;  ///< 1/(tonne mm^2) per node, 1 / rotational_inertia
+  VectorX mass_before;      ///< tonne per node, scratch: the masses before this cycle's scaling
+  VectorX inertia_before;   ///< tonne mm^2 per node, likewise
   /// N, the contact forces on the blank nodes a step ago (for the contact work increment).
   Matrix3X f_contact_previous;
   /// N mm, sum of 1/2 k g^2 over the penalty springs at the current state: a diagnostic only

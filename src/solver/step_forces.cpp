@@ -21,8 +21,11 @@ ShellForceResult compute_internal_forces(const Model& model, SolutionState& s, d
   s.f_int.setZero();
   s.m_int.setZero();
   try {
-    return compute_shell_internal_forces(model.blank.part, s.x, s.v, s.omega, dt, s.shell, s.f_int,
-                                         s.m_int);
+    // The elements' critical steps at x come with the forces (the next step's bound).
+    const ShellForceResult r = compute_shell_internal_forces(
+        model.blank.part, s.x, s.v, s.omega, dt, s.shell, s.f_int, s.m_int, s.scaling.element_dt);
+    s.element_dt_cycle = s.cycle;
+    return r;
   } catch (const InstabilityError& e) {
     throw InstabilityError(fmt::format("{} at t = {:.6e} s, cycle {}", e.what(), s.time, s.cycle));
   }

@@ -70,8 +70,13 @@ double compute_time_step(const Model& model, SolutionState& s) {
     s.mass_before = s.mass;  // same size: no allocation
     s.inertia_before = s.rotational_inertia;
   }
+  // The element pass of this cycle has the elements' steps at x already; otherwise compute them.
+  const StableStep physical =
+      s.element_dt_cycle == s.cycle
+          ? smallest_time_step(s.scaling.element_dt)
+          : compute_element_time_steps(blank.part, s.x, s.scaling.element_dt);
   const TimeStepCheck check =
-      scale_mass_to_time_step(blank.part, s.x, s.scaling, s.mass, s.rotational_inertia);
+      scale_mass_to_element_steps(blank.part, physical, s.scaling, s.mass, s.rotational_inertia);
   if (check.mass_added > 0.0) {
     keep_momentum(model, s, check.dt);
     update_inverse_masses(s);
