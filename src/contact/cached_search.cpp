@@ -46,12 +46,17 @@ std::unique_ptr<SearchCache> CachedSearch::make_cache(int node_count) const {
 }
 
 CandidateCache* CachedSearch::candidates(SearchCache* cache) const {
-  // Only this search makes caches owned by it, and they are CandidateCaches.
-  return cache && cache->owner() == this ? static_cast<CandidateCache*>(cache) : nullptr;
+  return const_cast<CandidateCache*>(candidates(static_cast<const SearchCache*>(cache)));
 }
 
 const CandidateCache* CachedSearch::candidates(const SearchCache* cache) const {
-  return cache && cache->owner() == this ? static_cast<const CandidateCache*>(cache) : nullptr;
+  // Only this search makes caches owned by it, and they are CandidateCaches (the capacity check
+  // guards against a cache outliving its search and meeting another at the same address).
+  if (!cache || cache->owner() != this) {
+    return nullptr;
+  }
+  const auto* lists = static_cast<const CandidateCache*>(cache);
+  return lists->capacity() == capacity_ ? lists : nullptr;
 }
 
 void CachedSearch::rebuild(detail::NodeCandidates& cache, detail::Candidate* list, const Vec3& p0,

@@ -56,6 +56,7 @@ class CandidateCache final : public SearchCache {
         capacity_(capacity) {}
 
   int node_count() const { return static_cast<int>(nodes_.size()); }
+  int capacity() const { return capacity_; }
   detail::NodeCandidates& node(int i) { return nodes_[static_cast<std::size_t>(i)]; }
   /// Node i's list: `capacity` slots.
   detail::Candidate* list(int i) {
