@@ -28,7 +28,10 @@ double mean_edge_length(const TriangleSurface& surface) {
 CachedSearch::CachedSearch(const TriangleSurface& surface, double margin, int capacity)
     : exact_(surface),
       margin_(margin > 0 ? margin : 0.25 * mean_edge_length(surface)),
-      capacity_(capacity) {
+      capacity_(capacity),
+      // The tie tolerance's absolute part is 1e-12 of the tool's size.
+      direction_floor_(1e6 * exact_.tolerance().absolute),
+      half_space_allowance_(1e4 * exact_.tolerance().absolute) {
   if (capacity < 1 || !std::isfinite(margin_)) {
     throw InputError(
         fmt::format("tool '{}': cached contact search needs a capacity >= 1 and a finite margin "
@@ -46,12 +49,30 @@ std::unique_ptr<SearchCache> CachedSearch::make_cache(int node_count) const {
 }
 
 CandidateCache* CachedSearch::candidates(SearchCache* cache) const {
-  // Only this search makes caches owned by it, and they are CandidateCaches.
-  return cache && cache->owner() == this ? static_cast<CandidateCache*>(cache) : nullptr;
+  return const_cast<CandidateCache*>(candidates(static_cast<const SearchCache*>(cache)));
 }
 
 const CandidateCache* CachedSearch::candidates(const SearchCache* cache) const {
-  return cache && cache->owner() == this ? static_cast<const CandidateCache*>(cache) : nullptr;
+  // Only this search makes caches owned by it, and they are CandidateCaches (the capacity check
+  // guards against a cache outliving its search and meeting another at the same address).
+  if (!cache || cache->owner() != this) {
+    return nullptr;
+  }
+  const auto* lists = static_cast<const CandidateCache*>(cache);
+  return lists->capacity() == capacity_ ? lists : nullptr;
+}
+
+void CachedSearch::set_directions(detail::Candidate* list, int count, const Vec3& p0) const {
+  const std::vector<detail::TriangleProjector>& projectors = exact_.projectors();
+  for (int k = 0; k < count; ++k) {
+    Vec3 point, barycentric;
+    detail::project(projectors[static_cast<std::size_t>(list[k].triangle)], p0, point, barycentric);
+    // Below a millionth of the tool's size the direction would carry the point's rounding
+    // (~1e-16 of the size) magnified; zero keeps the bound d(p0, T) + 0 valid (if useless).
+    const Vec3 away = p0 - point;
+    const double length = away.norm();
+    list[k].away = length > direction_floor_ ? Vec3(away / length) : Vec3::Zero();
+  }
 }
 
 void CachedSearch::rebuild(detail::NodeCandidates& cache, detail::Candidate* list, const Vec3& p0,
@@ -117,6 +138,7 @@ void CachedSearch::rebuild(detail::NodeCandidates& cache, detail::Candidate* lis
     }
     list[j] = c;
   }
+  set_directions(list, kept, p0);
   // The list holds every triangle nearer than `lost` (those dropped for room are all at least that
   // far), so it serves the reaches r with R(best, r) < lost. If some were dropped within the
   // radius, shrink the node's reach to the largest such r (R is piecewise linear in r: slope
@@ -182,10 +204,18 @@ void CachedSearch::query_list(detail::NodeCandidates& cache, const detail::Candi
   // exceeds it (beyond the rounding allowance) ends the scan.
   double bound = tol.window(cutoff);
   const double slack = delta + tol.absolute;
+  const Vec3 moved = p - cache.anchor;
   long tests = 0;
   for (int k = 0; k < cache.count; ++k) {
     if (list[k].distance - slack > bound) {
       break;
+    }
+    // The half-space bound (Candidate::away): a triangle provably beyond the bound is not
+    // tested; the modified search would not take it either (its computed distance exceeds the
+    // bound too). The allowance, 1e-8 of the tool's size, covers the rounding of `away` (at most
+    // ~1e-10 of it with the direction floor) times the lengths involved, and of the dot product.
+    if (list[k].distance + moved.dot(list[k].away) - half_space_allowance_ > bound) {
+      continue;
     }
     const int t = list[k].triangle;
     const double d2 = detail::squared_distance(projectors[t], p);

@@ -29,7 +29,9 @@ namespace sf {
 /// d(p0, T) - delta > bound (+ a): since d(p, T) >= d(p0, T) - delta, that triangle and all the
 /// later ones are beyond the bound, where the modified search does not take them either. The
 /// distance, the tie set and therefore every field of the answer (detail::TieSet::fill) are those
-/// of "modified".
+/// of "modified". Within the scan, a candidate whose half-space bound
+/// d(p0, T) + (p - p0) . u_T (detail::Candidate::away) exceeds the bound is not tested either:
+/// it too lies beyond the bound, and the bound stays tight when the node slides sideways.
 ///
 /// The list is rebuilt when delta exceeds the node's reach (the margin, or less, below), when the
 /// cutoff grows beyond the one it was built for, or on the first query of the node.
@@ -95,6 +97,8 @@ class CachedSearch final : public ContactSearch {
   /// Builds node's list at p0; `step` is the node's recent motion per query (mm, 0 if unknown).
   void rebuild(detail::NodeCandidates& cache, detail::Candidate* list, const Vec3& p0,
                double cutoff, double step) const;
+  /// Sets Candidate::away of the first `count` candidates of a list built at p0.
+  void set_directions(detail::Candidate* list, int count, const Vec3& p0) const;
   /// Answers a query at p from a valid list, |p - anchor| = delta <= its reach.
   void query_list(detail::NodeCandidates& cache, const detail::Candidate* list, const Vec3& p,
                   double delta, double cutoff, ClosestPoint& out) const;
@@ -102,6 +106,8 @@ class CachedSearch final : public ContactSearch {
   ModifiedSearch exact_;
   double margin_;
   int capacity_;
+  double direction_floor_;       ///< mm: Candidate::away only beyond 1e-6 of the tool's size
+  double half_space_allowance_;  ///< mm: rounding allowance of the half-space bound (1e-8 size)
 };
 
 }  // namespace sf

@@ -29,6 +29,11 @@ namespace detail {
 struct Candidate {
   double distance;  ///< d(anchor, triangle), mm
   int triangle;
+  /// The unit vector from the triangle's point closest to the anchor to the anchor (zero when the
+  /// anchor lies on the triangle). The triangle lies in the half-space behind that point, so
+  /// d(p, triangle) >= distance + (p - anchor) . away for every p: a bound that a sideways or
+  /// receding motion does not loosen, unlike distance - |p - anchor|.
+  Vec3 away = Vec3::Zero();
 };
 
 /// One node's list header (its triangles are in CandidateCache::list).
@@ -56,6 +61,7 @@ class CandidateCache final : public SearchCache {
         capacity_(capacity) {}
 
   int node_count() const { return static_cast<int>(nodes_.size()); }
+  int capacity() const { return capacity_; }
   detail::NodeCandidates& node(int i) { return nodes_[static_cast<std::size_t>(i)]; }
   /// Node i's list: `capacity` slots.
   detail::Candidate* list(int i) {

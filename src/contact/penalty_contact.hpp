@@ -27,9 +27,9 @@ enum class ContactProjection {
 
 /// One tool against all blank nodes: what is fixed for the run (ContactState holds what changes).
 struct ContactPair {
-  const TriangleSurface* surface = nullptr;  ///< the tool, reference configuration
-  std::unique_ptr<ContactSearch> search;     ///< a search over *surface
-  VectorX stiffness;                         ///< penalty stiffness per blank node, N/mm
+  const TriangleSurface* surface = nullptr;     ///< the tool, reference configuration
+  std::unique_ptr<const ContactSearch> search;  ///< a search over *surface (immutable)
+  VectorX stiffness;                            ///< penalty stiffness per blank node, N/mm
   /// Search radius, mm (e.g. max half thickness + a margin). Must exceed every half thickness:
   /// a node on the positive side is in contact when its distance is below its half thickness.
   double cutoff = 0;
