@@ -126,14 +126,9 @@ StableStep compute_element_time_steps(const ShellPart& part, const Matrix3X& x,
   if (element_dt.size() != static_cast<std::size_t>(element_count(part))) {
     throw std::invalid_argument("compute_element_time_steps: one value per element expected");
   }
-  StableStep best{std::numeric_limits<double>::infinity(), -1};
-  for_each_time_step(part, x, [&best, element_dt](int e, double dt) {
-    element_dt[static_cast<std::size_t>(e)] = dt;
-    if (dt < best.dt) {
-      best = {dt, e};
-    }
-  });
-  return best;
+  for_each_time_step(
+      part, x, [element_dt](int e, double dt) { element_dt[static_cast<std::size_t>(e)] = dt; });
+  return smallest_time_step(element_dt);
 }
 
 void compute_element_masses(const ShellPart& part, const Matrix3X& x, const ShellState& state,

@@ -51,18 +51,26 @@ void half_kick_rate(const Model& model, const SolutionState& s, Eigen::Index i, 
 //   D(n+1) = 1/2 sum m |dt/2 u(n+1)|^2 = dt^2 / 8 F.M^-1.F (undamped),
 // which is second order in dt: total - supplied = D(n+1) - D(0) at a constant step, for any
 // forces (docs/time-integration.md).
-KineticEnergy whole_step_kinetic_energy(const Model& model, const SolutionState& s, double dt) {
-  const double h = 0.5 * dt;
-  KineticEnergy e;
-  const Eigen::Index n = s.v.cols();
+namespace {
+
+// Node i's terms of whole_step_kinetic_energy (twice the energies), h = dt / 2, added to e.
+inline void add_whole_step_kinetic(const Model& model, const SolutionState& s, Eigen::Index i,
+                                   double h, KineticEnergy& e) {
   Vec3 u, u_omega;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const double m = s.mass[i];
-    const double j = s.rotational_inertia[i];
-    half_kick_rate(model, s, i, s.inverse_mass[i], s.inverse_inertia[i], u, u_omega);
-    e.kinetic +=
-        m * (s.v.col(i) + h * u).squaredNorm() + j * (s.omega.col(i) + h * u_omega).squaredNorm();
-    e.half_kick += h * h * (m * u.squaredNorm() + j * u_omega.squaredNorm());
+  const double m = s.mass[i];
+  const double j = s.rotational_inertia[i];
+  half_kick_rate(model, s, i, s.inverse_mass[i], s.inverse_inertia[i], u, u_omega);
+  e.kinetic +=
+      m * (s.v.col(i) + h * u).squaredNorm() + j * (s.omega.col(i) + h * u_omega).squaredNorm();
+  e.half_kick += h * h * (m * u.squaredNorm() + j * u_omega.squaredNorm());
+}
+
+}  // namespace
+
+KineticEnergy whole_step_kinetic_energy(const Model& model, const SolutionState& s, double dt) {
+  KineticEnergy e;
+  for (Eigen::Index i = 0; i < s.v.cols(); ++i) {
+    add_whole_step_kinetic(model, s, i, 0.5 * dt, e);
   }
   e.kinetic *= 0.5;
   e.half_kick *= 0.5;
@@ -97,9 +105,7 @@ struct StepNodeSums {
 
 StepNodeSums sum_over_nodes(const Model& model, const SolutionState& s, double dt) {
   StepNodeSums sums;
-  const double h = 0.5 * dt;
   const Eigen::Index n = s.x.cols();
-  Vec3 u, u_omega;
   for (Eigen::Index i = 0; i < n; ++i) {
     const auto v = s.v.col(i);
     const auto omega = s.omega.col(i);
@@ -110,12 +116,9 @@ StepNodeSums sum_over_nodes(const Model& model, const SolutionState& s, double d
     sums.load_work += 0.5 * dt *
                       ((s.f_ext.col(i) + s.f_ext_previous.col(i)).dot(v) +
                        (s.m_ext.col(i) + s.m_ext_previous.col(i)).dot(omega));
-    const double m = s.mass[i];
-    const double j = s.rotational_inertia[i];
-    sums.damping_power += m * v.squaredNorm() + j * omega.squaredNorm();
-    half_kick_rate(model, s, i, s.inverse_mass[i], s.inverse_inertia[i], u, u_omega);
-    sums.kinetic.kinetic += m * (v + h * u).squaredNorm() + j * (omega + h * u_omega).squaredNorm();
-    sums.kinetic.half_kick += h * h * (m * u.squaredNorm() + j * u_omega.squaredNorm());
+    sums.damping_power +=
+        s.mass[i] * v.squaredNorm() + s.rotational_inertia[i] * omega.squaredNorm();
+    add_whole_step_kinetic(model, s, i, 0.5 * dt, sums.kinetic);
   }
   sums.kinetic.kinetic *= 0.5;
   sums.kinetic.half_kick *= 0.5;
@@ -130,19 +133,15 @@ void account_step_energies(const Model& model, SolutionState& s,
   // The work increments by the trapezoidal rule.
   Energies& e = s.energies;
   const StepNodeSums sums = sum_over_nodes(model, s, dt);
-  const double element_work = sums.element_work;
-  const double load_work = sums.load_work;
-  const double damping_power = sums.damping_power;
-  const double contact_work = sums.contact_work;
-  e.external_work += load_work + prescribed_work;
-  e.damping += model.loads.damping * damping_power * dt;
+  e.external_work += sums.load_work + prescribed_work;
+  e.damping += model.loads.damping * sums.damping_power * dt;
   const double hourglass_work = element_result.hourglass_work;
   e.plastic_work += element_result.plastic_work;
   e.hourglass += hourglass_work;
-  e.internal += element_work - hourglass_work;
+  e.internal += sums.element_work - hourglass_work;
   // The contact energy is the work done against the contact forces, on the blank and on the tools
   // (for the frictionless penalty: the spring energy 1/2 k g^2 up to the trapezoidal rule).
-  e.contact -= contact_work;
+  e.contact -= sums.contact_work;
   double tool_kinetic = 0.0;
   for (std::size_t t = 0; t < s.tools.size(); ++t) {
     ToolState& tool = s.tools[t];

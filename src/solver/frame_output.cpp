@@ -111,9 +111,7 @@ FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& direct
 }
 
 void FrameOutput::write_frame(const Model& model, const SolutionState& s) {
-  if (!s.contact_off) {
-    audits_.record(model, s);  // no audit with the contact off (springback)
-  }
+  audits_.record(model, s);
   displacement_ = s.x - model.blank.mesh.nodes;
   compute_element_stress_output(model.blank.part, stress_geometry_ ? *stress_geometry_ : s.x,
                                 s.shell, stress_mid_, stress_top_, stress_bottom_, plastic_strain_);
@@ -169,9 +167,7 @@ void FrameOutput::append_history(const Model& model, const SolutionState& s) {
     return;  // this cycle's row is there already
   }
   last_history_cycle_ = s.cycle;
-  if (!s.contact_off) {
-    audits_.record(model, s);  // no audit with the contact off (springback)
-  }
+  audits_.record(model, s);
   std::size_t k = 0;
   const Energies& e = s.energies;
   const MassScaling& scaling = s.scaling;

@@ -22,7 +22,7 @@ SearchAuditRecorder::SearchAuditRecorder(const Model& model) {
 }
 
 void SearchAuditRecorder::record(const Model& model, const SolutionState& s) {
-  if (records_.empty() || s.cycle == last_cycle_) {
+  if (records_.empty() || s.cycle == last_cycle_ || s.contact_off) {  // nothing to audit
     return;
   }
   last_cycle_ = s.cycle;

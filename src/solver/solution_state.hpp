@@ -34,10 +34,6 @@ struct ToolState {
   bool held = false;
 };
 
-struct SolutionState;
-/// Sets state.inverse_mass and inverse_inertia from the masses (after they change).
-void update_inverse_masses(SolutionState& state);
-
 struct SolutionState {
   double time = 0.0;  ///< s
   long cycle = 0;
@@ -93,6 +89,7 @@ struct SolutionState {
   PhaseTimes times;                 ///< wall time per phase of the steps
 };
 
+/// Sets state.inverse_mass and inverse_inertia from the masses (after they change).
 inline void update_inverse_masses(SolutionState& s) {
   s.inverse_mass = s.mass.cwiseInverse();  // same size after the first call: no allocation
   s.inverse_inertia = s.rotational_inertia.cwiseInverse();
