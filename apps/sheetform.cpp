@@ -5,11 +5,15 @@
 //   sheetform check CASE            validate a case and print the model it builds
 //   sheetform mesh  CASE [-o DIR]   write only the meshes (HDF5 + XDMF, and .msh of each .geo)
 //
+// run takes --threads N (OpenMP; default OMP_NUM_THREADS, else every core): the results are the
+// same bits for any thread count (docs/parallel.md).
+//
 // Each takes --set KEY=VALUE (repeatable): a case-file key overridden before the case is read,
 // e.g. --set blank.parameters.n=32 for a .geo parameter (docs/case-file.md).
 //
 // Exit codes: 0 success, 2 bad input, 3 the run went unstable, 4 a static step did not converge
 // (or its stiffness is singular), 1 an internal error.
+#include <omp.h>
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <fstream>
@@ -38,6 +42,7 @@ struct Arguments {
   double end_time = -1.0;        // s; < 0 = as in the case
   std::string search;            // "" = as in the case; else the search of every [[contact]]
   std::vector<std::string> set;  // --set KEY=VALUE: case-file keys overridden before reading
+  int threads = 0;               // 0 = OMP_NUM_THREADS, else every core
   bool quiet = false;
   bool verbose = false;
 };
@@ -102,7 +107,9 @@ int run(const Arguments& args) {
   const fs::path out = output_directory(args, loaded.config);
   fs::create_directories(out);
   std::ofstream(out / "case.resolved.toml") << model.output.resolved_case;
-  sf::log_info("Results     {}\n\n", out.string());
+  sf::log_info("Results     {}\n", out.string());
+  sf::log_info("Threads     {} (OpenMP, {} cores here)\n\n", omp_get_max_threads(),
+               omp_get_num_procs());
   // 4. Run the explicit time loop (and springback when the case asks), or the static analysis.
   sf::RunOptions options;
   options.output_directory = out;
@@ -183,6 +190,11 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--stroke", args.stroke, "override the end condition: stroke in mm");
   run_cmd->add_option("--end-time", args.end_time, "override the end condition: end time in s");
   run_cmd
+      ->add_option("--threads", args.threads,
+                   "OpenMP threads (default: OMP_NUM_THREADS, else every core); results are the "
+                   "same bits for any count")
+      ->check(CLI::Range(1, 4096));
+  run_cmd
       ->add_option("--search", args.search,
                    "override the search of every [[contact]]: standard, modified or cached")
       ->check(CLI::IsMember(
@@ -198,6 +210,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? sf::exit_ok : sf::exit_input_error;
+  }
+  if (args.threads > 0) {
+    omp_set_num_threads(args.threads);  // before gmsh: its session restores this count
   }
   if (args.quiet) {
     sf::verbosity() = sf::Verbosity::quiet;

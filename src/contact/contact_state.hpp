@@ -1,13 +1,35 @@
 #pragma once
 // What changes during a run in the penalty contact of one tool (ContactPair holds what is fixed):
 // the search's per-node caches, the per-node distance bounds and the friction's stick forces.
+#include <climits>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "contact/contact_search.hpp"
 #include "contact/node_distance_bounds.hpp"
+#include "core/exact_sum.hpp"
 #include "core/types.hpp"
 
 namespace sf {
+
+/// What one thread's share of the blank nodes sums in a contact call: exactly (the tool's reaction
+/// and the energies), so that the totals do not depend on how the nodes were shared out.
+struct alignas(64) ContactShare {
+  ExactSum force_on_tool[3];  ///< N, components of the reaction on the tool
+  ExactSum energy;            ///< N mm, penalty spring energy
+  ExactSum friction_work;     ///< N mm
+  int nodes_in_contact = 0;
+  int sliding_nodes = 0;
+  int sticking_nodes = 0;
+  int projection_fallbacks = 0;
+  int thin_node = INT_MAX;  ///< the lowest node whose half thickness reaches the cutoff
+  double thin_half_thickness = 0.0;
+  int failed_node = INT_MAX;  ///< the lowest node of a block whose computation threw
+  std::string failure;        ///< what it threw
+
+  void reset() { *this = ContactShare(); }
+};
 
 /// The state of one ContactPair over a run. Sized by compute_penalty_contact on its first call
 /// (or when the node count changes), never reallocated afterwards.
@@ -19,6 +41,7 @@ struct ContactState {
   /// Per blank node: the stored elastic stick force on the node, N (zero out of contact; sized
   /// only with friction).
   Matrix3X stick_force;
+  std::vector<ContactShare> shares;  ///< one per thread (scratch)
 };
 
 }  // namespace sf

@@ -1,8 +1,10 @@
 #include "contact/penalty_contact.hpp"
 
 #include <fmt/core.h>
+#include <omp.h>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <stdexcept>
 #include <string_view>
@@ -53,7 +55,7 @@ bool provably_beyond_cutoff(const ContactPair& pair, NodeDistanceBounds& bounds,
 // The distance D along the normal and the unit normal of the gap of a node at p whose search
 // answer is cp (a triangle within the cutoff), per pair.projection.
 void gap_geometry(const ContactPair& pair, const Vec3& p, const ClosestPoint& cp,
-                  ContactResult& result, double& distance, Vec3& normal) {
+                  ContactShare& result, double& distance, Vec3& normal) {
   distance = cp.signed_distance;
   normal = cp.normal;
   if (pair.projection == ContactProjection::interpolated) {
@@ -69,11 +71,11 @@ void gap_geometry(const ContactPair& pair, const Vec3& p, const ClosestPoint& cp
 // f_contact and result; updates the node's stick force.
 void add_node_force(const ContactPair& pair, ContactState& state,
                     const ContactKinematics& kinematics, int i, double g, const Vec3& normal,
-                    ContactResult& result, Matrix3X& f_contact) {
+                    ContactShare& result, Matrix3X& f_contact) {
   const double k = pair.stiffness[i];
   const double normal_force = k * (-g);
   Vec3 f = normal_force * normal;
-  result.energy += 0.5 * k * g * g;
+  result.energy.add(0.5 * k * g * g);
   ++result.nodes_in_contact;
   if (pair.friction.active()) {
     const Vec3 increment =
@@ -84,11 +86,13 @@ void add_node_force(const ContactPair& pair, ContactState& state,
                                 normal_force, pair.friction.tangential_stiffness_ratio * k);
     state.stick_force.col(i) = stored;
     f += step.force;
-    result.friction_work += step.work;
+    result.friction_work.add(step.work);
     ++(step.sliding ? result.sliding_nodes : result.sticking_nodes);
   }
   f_contact.col(i) += f;
-  result.force_on_tool -= f;
+  for (int c = 0; c < 3; ++c) {
+    result.force_on_tool[c].add(-f[c]);
+  }
 }
 
 // What happened to a node in one call.
@@ -102,7 +106,7 @@ enum class NodeOutcome {
 // force if it penetrates.
 NodeOutcome node_contact(const ContactPair& pair, ContactState& state,
                          const ContactKinematics& kinematics, int i, const Vec3& p,
-                         ContactResult& result, Matrix3X& f_contact) {
+                         ContactShare& result, Matrix3X& f_contact) {
   const bool bounded = pair.distance_bound != nullptr;
   if (bounded && provably_beyond_cutoff(pair, state.distance_bounds, i, p)) {
     return NodeOutcome::skipped;
@@ -133,11 +137,90 @@ NodeOutcome node_contact(const ContactPair& pair, ContactState& state,
 
 }  // namespace
 
+namespace {
+
+// Blank nodes per unit of work the threads take (dynamically: contact nodes cluster).
+constexpr int kContactBlock = 256;
+
+// Nodes [begin, end) into `share`. The half thickness is checked here, where the node is read,
+// and a failure recorded, not thrown (threads must not throw out of a parallel region).
+void contact_block(const ContactPair& pair, ContactState& state,
+                   const ContactKinematics& kinematics, int begin, int end, ContactShare& share,
+                   Matrix3X& f_contact) {
+  const bool friction = pair.friction.active();
+  for (int i = begin; i < end; ++i) {
+    const double h = kinematics.half_thickness[i];
+    if (!(pair.cutoff > h)) {
+      if (i < share.thin_node) {
+        share.thin_node = i;
+        share.thin_half_thickness = h;
+      }
+      continue;
+    }
+    const Vec3 p = kinematics.x.col(i) - kinematics.tool_displacement;
+    // A skipped node's stick force is zero already, so it is not written (memory traffic is
+    // most of a skipped node's cost): a node is skipped only while its bound is positive, and a
+    // bound is set in a call where the node is out of contact -- skipped, or searched and apart
+    // (its stick force reset then) -- and lost (slack -1) when a search finds the tool.
+    const NodeOutcome outcome = node_contact(pair, state, kinematics, i, p, share, f_contact);
+    if (friction && outcome == NodeOutcome::apart) {
+      state.stick_force.col(i).setZero();
+    }
+  }
+}
+
+// The shares' sums, exactly, and their first failures.
+ContactResult merge_shares(std::vector<ContactShare>& shares, int used, std::string_view tool,
+                           double cutoff) {
+  ContactShare& total = shares[0];
+  for (int t = 1; t < used; ++t) {
+    const ContactShare& share = shares[static_cast<std::size_t>(t)];
+    for (int c = 0; c < 3; ++c) {
+      total.force_on_tool[c].merge(share.force_on_tool[c]);
+    }
+    total.energy.merge(share.energy);
+    total.friction_work.merge(share.friction_work);
+    total.nodes_in_contact += share.nodes_in_contact;
+    total.sliding_nodes += share.sliding_nodes;
+    total.sticking_nodes += share.sticking_nodes;
+    total.projection_fallbacks += share.projection_fallbacks;
+    if (share.thin_node < total.thin_node) {
+      total.thin_node = share.thin_node;
+      total.thin_half_thickness = share.thin_half_thickness;
+    }
+    if (share.failed_node < total.failed_node) {
+      total.failed_node = share.failed_node;
+      total.failure = share.failure;
+    }
+  }
+  if (total.thin_node != INT_MAX) {
+    throw InputError(fmt::format(
+        "contact with tool '{}': search radius {} mm does not exceed the half thickness {} mm "
+        "of blank node {}",
+        tool, cutoff, total.thin_half_thickness, total.thin_node));
+  }
+  if (total.failed_node != INT_MAX) {
+    throw std::runtime_error(fmt::format("contact with tool '{}', blank nodes from {}: {}", tool,
+                                         total.failed_node, total.failure));
+  }
+  ContactResult result;
+  for (int c = 0; c < 3; ++c) {
+    result.force_on_tool[c] = total.force_on_tool[c].round();
+  }
+  result.energy = total.energy.round();
+  result.friction_work = total.friction_work.round();
+  result.nodes_in_contact = total.nodes_in_contact;
+  result.sliding_nodes = total.sliding_nodes;
+  result.sticking_nodes = total.sticking_nodes;
+  result.projection_fallbacks = total.projection_fallbacks;
+  return result;
+}
+
+}  // namespace
+
 ContactResult compute_penalty_contact(const ContactPair& pair, ContactState& state,
                                       const ContactKinematics& kinematics, Matrix3X& f_contact) {
-  ContactResult result;
-  const Matrix3X& x = kinematics.x;
-  const int n = static_cast<int>(x.cols());
+  const int n = static_cast<int>(kinematics.x.cols());
   const std::string_view tool_name = pair.surface ? std::string_view(pair.surface->name()) : "?";
   const bool friction = pair.friction.active();
   if (friction) {
@@ -149,25 +232,38 @@ ContactResult compute_penalty_contact(const ContactPair& pair, ContactState& sta
         tool_name));
   }
   size_state(pair, state, n, friction);
-  for (int i = 0; i < n; ++i) {
-    const double h = kinematics.half_thickness[i];
-    if (!(pair.cutoff > h)) {
-      throw InputError(fmt::format(
-          "contact with tool '{}': search radius {} mm does not exceed the half thickness {} mm "
-          "of blank node {}",
-          tool_name, pair.cutoff, h, i));
+  // A few blocks on one thread: a parallel region costs microseconds.
+  const int threads = n >= 2 * kContactBlock ? omp_get_max_threads() : 1;
+  if (state.shares.size() < static_cast<std::size_t>(threads)) {
+    state.shares.resize(static_cast<std::size_t>(threads));
+  }
+  const int blocks = (n + kContactBlock - 1) / kContactBlock;
+  int used = 1;
+  // Each node writes only its own columns and cache entries; the sums are exact, so the dynamic
+  // share-out of the blocks cannot change a bit of the result.
+#pragma omp parallel num_threads(threads)
+  {
+    const int t = omp_get_thread_num();
+    if (t == 0) {
+      used = omp_get_num_threads();
     }
-    const Vec3 p = x.col(i) - kinematics.tool_displacement;
-    // A skipped node's stick force is zero already, so it is not written (memory traffic is
-    // most of a skipped node's cost): a node is skipped only while its bound is positive, and a
-    // bound is set in a call where the node is out of contact -- skipped, or searched and apart
-    // (its stick force reset then) -- and lost (slack -1) when a search finds the tool.
-    const NodeOutcome outcome = node_contact(pair, state, kinematics, i, p, result, f_contact);
-    if (friction && outcome == NodeOutcome::apart) {
-      state.stick_force.col(i).setZero();
+    ContactShare& share = state.shares[static_cast<std::size_t>(t)];
+    share.reset();
+#pragma omp for schedule(dynamic, 1)
+    for (int b = 0; b < blocks; ++b) {
+      const int begin = b * kContactBlock;
+      try {
+        contact_block(pair, state, kinematics, begin, std::min(n, begin + kContactBlock), share,
+                      f_contact);
+      } catch (const std::exception& error) {
+        if (begin < share.failed_node) {
+          share.failed_node = begin;
+          share.failure = error.what();
+        }
+      }
     }
   }
-  return result;
+  return merge_shares(state.shares, used, tool_name, pair.cutoff);
 }
 
 VectorX compute_penalty_stiffness(const Matrix3X& nodes, const QuadConn& quads,

@@ -1,11 +1,16 @@
 #pragma once
-// Internal forces of the shell part: quadrilaterals of either formulation (ShellFormulation) and
-// triangles. The Belytschko-Lin-Tsay quad (Belytschko, Lin & Tsay 1984; Hallquist, LS-DYNA Theory
-// Manual) with viscous or stiffness hourglass control (Flanagan & Belytschko 1981) is here; the
-// assumed-strain quad in shell_quad_assumed_strain.hpp, the triangle in shell_triangle.hpp.
+// Internal forces of the shell part: one element pass over the quads of either formulation
+// (ShellFormulation; Belytschko-Lin-Tsay in shell_quad_bt.hpp, assumed strain in
+// shell_quad_assumed_strain.hpp) and the triangles (shell_triangle.hpp). Threads share out the
+// elements; each element writes only its own corner slots and state, the works are summed
+// exactly, and the nodes sum their corners in a fixed order (corner_forces.hpp): the results do
+// not depend on the thread count.
 #include <span>
+#include <vector>
 
 #include "core/types.hpp"
+#include "element/corner_forces.hpp"
+#include "element/element_pass.hpp"
 #include "element/shell_part.hpp"
 
 namespace sf {
@@ -22,18 +27,29 @@ struct ShellForceResult {
                                ///< the points' d_plastic_work on the same quadrature
 };
 
-/// Adds every element's (quads, then triangles: see shell_triangle.hpp) internal nodal forces (N)
-/// and moments (N mm) into f_int and m_int
-/// (3 x n_nodes, global components; the caller zeroes them), updating stresses, plastic strains and
-/// thicknesses in `state`. Sign: f_int resists the motion, M a = f_ext - f_int, and
-/// f_int . v + m_int . omega is the stress power.
-/// x: nodal coordinates at the end of the step (mm); v: velocities (mm/s) and omega: angular
-/// velocities (rad/s) at mid-step; dt: step (s). Strain increments are taken on the mid-step
-/// configuration x - dt/2 v, forces on x. Throws InstabilityError naming the element on
-/// inversion, collapse or a non-finite value.
-/// With element_dt (one per element), also each element's critical step L / c at x (s, as
-/// compute_element_time_steps gives it: the same bits), the quads' from the end-of-step geometry
-/// the forces use, so that the time-step control needs no pass of its own.
+/// The scratch of the element passes over one part: the corner buffer and one output share per
+/// thread. Sized by the first pass; later passes allocate nothing.
+struct ElementPass {
+  std::vector<double> corners;         ///< kCornerWidth per corner slot
+  std::vector<ElementOutputs> shares;  ///< one per thread of the last pass
+};
+
+/// Every element's (quads, then triangles) internal nodal forces (N) and moments (N mm) into its
+/// corner slots of pass.corners (global components), updating stresses, plastic strains and
+/// thicknesses in `state`. Sign: the forces resist the motion, M a = f_ext - f_int, and
+/// f_int . v + m_int . omega is the stress power. in.x: nodal coordinates at the end of the step
+/// (mm); in.v: velocities (mm/s) and in.omega: angular velocities (rad/s) at mid-step; in.dt:
+/// step (s). Strain increments are taken on the mid-step configuration x - dt/2 v, forces on x.
+/// With element_dt (one per element), also each element's critical step L / c at x (s, the same
+/// bits as compute_element_time_steps), so that the time-step control needs no pass of its own.
+/// Throws InstabilityError naming the lowest failing element (inversion, collapse, a non-finite
+/// value): the element a serial pass stops at, whatever the thread count.
+ShellForceResult run_element_pass(const ShellPart& part, const ElementInputs& in, ShellState& state,
+                                  ElementPass& pass, std::span<double> element_dt = {});
+
+/// The same, with the corners summed at the nodes and added into f_int and m_int (3 x n_nodes;
+/// the caller zeroes them): for callers outside the time loop (the static analysis, tests), which
+/// may allocate.
 ShellForceResult compute_shell_internal_forces(const ShellPart& part, const Matrix3X& x,
                                                const Matrix3X& v, const Matrix3X& omega, double dt,
                                                ShellState& state, Matrix3X& f_int, Matrix3X& m_int,

@@ -92,10 +92,12 @@ double quad_time_step(const Quad3& xe, double area, double wave_speed) {
 }
 
 void compute_triangle_time_steps(const ShellPart& part, const Matrix3X& x,
-                                 std::span<double> element_dt) {
+                                 std::span<double> element_dt, int begin, int end) {
   const double c = part_wave_speed(part);
+  const int n_quads = static_cast<int>(part.quads.cols());
+  const int last = end < 0 ? static_cast<int>(part.triangles.cols()) : end;
   TriangleGeometry tg;
-  for (int e = static_cast<int>(part.quads.cols()); e < element_count(part); ++e) {
+  for (int e = n_quads + begin; e < n_quads + last; ++e) {
     element_dt[static_cast<std::size_t>(e)] = triangle_time_step(x, part, e, c, tg);
   }
 }

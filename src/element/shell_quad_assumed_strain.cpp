@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "core/errors.hpp"
+#include "element/corner_forces.hpp"
 #include "element/shell_directors.hpp"
 #include "element/shell_geometry.hpp"
 #include "element/shell_geometry_batch.hpp"
@@ -135,10 +136,10 @@ DirectorResultants make_director_resultants(const CartesianMap& map, double area
 }
 
 template <class Law>
-ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Matrix3X& x,
-                                const Matrix3X& v, const Matrix3X& omega, double dt, ShellState& st,
-                                Matrix3X& f_int, Matrix3X& m_int, double* element_dt) {
-  const int n_el = static_cast<int>(part.quads.cols());
+void compute_forces(const ShellPart& part, const Law& law, const ElementInputs& in, ShellState& st,
+                    int begin, int end, ElementOutputs& out) {
+  const Matrix3X& x = in.x;
+  const double dt = in.dt;
   const double wave_speed = part_wave_speed(part);  // mm/s, for the elements' time steps
   const Constants c{law.E, law.nu, 5.0 / 6.0 * 0.5 * law.E / (1.0 + law.nu),
                     plane_stress_stiffness(law.E, law.nu)};
@@ -146,25 +147,24 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
   const auto kernel = point_kernel(law);  // the material update's constants
   const int* conn = part.quads.data();
   const double* material_angle = part.material_angle.empty() ? nullptr : part.material_angle.data();
-  ShellForceResult result;
 
   QuadGeometryBlock geometry;  // of the block of elements holding e
-  for (int e = 0; e < n_el; ++e) {
-    const int lane = e % kBlockLanes;
+  for (int e = begin; e < end; ++e) {
+    out.current = e;
+    const int lane = (e - begin) % kBlockLanes;  // begin is a multiple of kBlockLanes
     if (lane == 0) {
-      compute_quad_geometry_block(x.data(), v.data(), conn, e, std::min(kBlockLanes, n_el - e), dt,
-                                  geometry);
+      compute_quad_geometry_block(x.data(), in.v.data(), conn, e, std::min(kBlockLanes, end - e),
+                                  dt, geometry);
     }
     const int* nodes = conn + 4 * static_cast<std::ptrdiff_t>(e);
     Quad3 xe;
     Quad3 ve;
     Quad3 we;
     gather_nodes(x.data(), nodes, xe);
-    gather_nodes(v.data(), nodes, ve);
-    gather_nodes(omega.data(), nodes, we);
+    gather_nodes(in.v.data(), nodes, ve);
+    gather_nodes(in.omega.data(), nodes, we);
     if (!ve.allFinite() || !we.allFinite()) {
-      throw InstabilityError("shell element " + std::to_string(e) +
-                             ": non-finite nodal velocity or angular velocity");
+      return out.fail(e, ElementFailure::Kind::non_finite_velocity);
     }
 
     // 1. Strain increments. Membrane: the one-point velocity strain on the mid-step geometry
@@ -174,7 +174,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     const Quad3 xs = xe - dt * ve;
     const ShellGeometry& gm = geometry.mid[lane];
     if (!geometry.mid_ok[lane]) {
-      throw_invalid_geometry(e, "mid-step");
+      return out.fail(e, ElementFailure::Kind::invalid_geometry, "mid-step");
     }
     const Quad3 vl = gm.frame.transpose() * ve;
     const Vec3 d_membrane(gm.b.row(0).dot(vl.row(0)), gm.b.row(1).dot(vl.row(1)),
@@ -197,10 +197,10 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     st.sxz[e] = s_new(0);
     st.syz[e] = s_new(1);
     const double work = sr.work + t * 0.5 * (s_old + s_new).dot(inc.shear);
-    result.internal_work += gm.area * work;
-    result.plastic_work += gm.area * sr.plastic_work;
+    out.internal_work.add(gm.area * work);
+    out.plastic_work.add(gm.area * sr.plastic_work);
     if (!sr.n.allFinite() || !sr.m.allFinite() || !s_new.allFinite()) {
-      throw InstabilityError("shell element " + std::to_string(e) + ": non-finite stress");
+      return out.fail(e, ElementFailure::Kind::non_finite_stress);
     }
     st.thickness[e] = t * (1.0 + sr.d_ezz_mean);
 
@@ -212,16 +212,16 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
                                                                      c.young, c.poisson, t, c.ks_g);
     double* hs = st.hourglass.data() + kHourglassModes * static_cast<std::ptrdiff_t>(e);
     const double ratio = incremental_stiffness_ratio(c, t, dt * d_membrane, inc.curvature, sr);
-    result.hourglass_work += update_stabilization(k, part.stabilization_unloading, ratio,
-                                                  membrane_hg, inc.hourglass, inc.shear_linear, hs);
+    out.hourglass_work.add(update_stabilization(k, part.stabilization_unloading, ratio, membrane_hg,
+                                                inc.hourglass, inc.shear_linear, hs));
 
     // 4. Nodal forces and moments on the end-of-step configuration (conjugate to step 1).
     const ShellGeometry& g = geometry.end[lane];
     if (!geometry.end_ok[lane]) {
-      throw_invalid_geometry(e, "end of step");
+      return out.fail(e, ElementFailure::Kind::invalid_geometry, "end of step");
     }
-    if (element_dt) {
-      element_dt[e] = quad_time_step(xe, g.area, wave_speed);  // the next step's bound, at x
+    if (out.element_dt) {
+      out.element_dt[e] = quad_time_step(xe, g.area, wave_speed);  // the next step's bound, at x
     }
     const double a = g.area;
     Quad3 fl;
@@ -235,28 +235,17 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     const CartesianMap map_end = make_cartesian_map(basis_end, g.frame);
     const DirectorResultants r = make_director_resultants(map_end, a, sr.m, t * s_new, hs);
     add_director_forces(xe, d.new_d, basis_mid, r, fg, mg);
-    scatter_add_nodes(fg, mg, nodes, f_int.data(), m_int.data());
+    store_corners(fg, mg, out.corners + kCornerWidth * 4 * static_cast<std::ptrdiff_t>(e));
   }
-  return result;
 }
 
 }  // namespace
 
-ShellForceResult compute_assumed_strain_quad_forces(const ShellPart& part, const Matrix3X& x,
-                                                    const Matrix3X& v, const Matrix3X& omega,
-                                                    double dt, ShellState& state, Matrix3X& f_int,
-                                                    Matrix3X& m_int, double* element_dt) {
-  if (state.director.size() != static_cast<std::size_t>(3 * kDirectorNodes) *
-                                   static_cast<std::size_t>(state.n_elements) ||
-      state.hourglass.size() !=
-          static_cast<std::size_t>(kHourglassModes) * static_cast<std::size_t>(state.n_elements)) {
-    throw std::invalid_argument("compute_assumed_strain_quad_forces: inconsistent array sizes");
-  }
-  return std::visit(
-      [&](const auto& law) {
-        return compute_forces(part, law, x, v, omega, dt, state, f_int, m_int, element_dt);
-      },
-      part.material);
+void compute_assumed_strain_quad_forces(const ShellPart& part, const ElementInputs& in,
+                                        ShellState& state, int begin, int end,
+                                        ElementOutputs& out) {
+  std::visit([&](const auto& law) { compute_forces(part, law, in, state, begin, end, out); },
+             part.material);
 }
 
 }  // namespace sf

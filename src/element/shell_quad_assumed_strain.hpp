@@ -5,20 +5,18 @@
 // (shell_quad_directors.hpp); physical stabilisation of the hourglass fields
 // (shell_quad_stabilization.hpp). See docs/element-and-material.md.
 #include "core/types.hpp"
-#include "element/shell_forces.hpp"
+#include "element/element_pass.hpp"
 #include "element/shell_part.hpp"
 
 namespace sf {
 
-/// Adds the internal forces (N) and moments (N mm) of every quad of `part` into f_int and m_int,
-/// updating their state (stresses, thickness, stabilisation resultants and directors: the
-/// directors are turned by dt omega). Same conventions as compute_shell_internal_forces; the
-/// directors must have been set (initialize_directors). Throws InstabilityError naming the
-/// element on inversion, collapse or a non-finite value. element_dt (when not null, one per element
-/// of the part): each quad's critical step at x (compute_shell_internal_forces).
-ShellForceResult compute_assumed_strain_quad_forces(const ShellPart& part, const Matrix3X& x,
-                                                    const Matrix3X& v, const Matrix3X& omega,
-                                                    double dt, ShellState& state, Matrix3X& f_int,
-                                                    Matrix3X& m_int, double* element_dt = nullptr);
+/// Quads [begin, end) of `part` (begin a multiple of kBlockLanes): their corner forces and
+/// moments into out.corners, their state updated (stresses, thickness, stabilisation resultants
+/// and directors: the directors are turned by dt omega), their works summed into `out`, their
+/// critical steps into out.element_dt (when not null). The directors must have been set
+/// (initialize_directors). Stops at the first failing element, recorded in out.failure.
+/// Conventions: compute_shell_internal_forces.
+void compute_assumed_strain_quad_forces(const ShellPart& part, const ElementInputs& in,
+                                        ShellState& state, int begin, int end, ElementOutputs& out);
 
 }  // namespace sf

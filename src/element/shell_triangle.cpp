@@ -7,7 +7,7 @@
 #include <type_traits>
 #include <variant>
 
-#include "core/errors.hpp"
+#include "element/corner_forces.hpp"
 #include "element/shell_nodal_access.hpp"
 #include "element/shell_section_update.hpp"
 #include "element/shell_triangle_geometry.hpp"
@@ -16,32 +16,25 @@ namespace sf {
 
 namespace {
 
-std::string name_of(int element, int triangle) {
-  return "shell element " + std::to_string(element) + " (triangle " + std::to_string(triangle) +
-         ")";
-}
-
 // The triangle loop, instantiated once per material type (the variant is visited outside it).
 template <class Law>
-ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Matrix3X& x,
-                                const Matrix3X& v, const Matrix3X& omega, double dt, ShellState& st,
-                                Matrix3X& f_int, Matrix3X& m_int) {
+void compute_forces(const ShellPart& part, const Law& law, const ElementInputs& in, ShellState& st,
+                    int begin, int end, ElementOutputs& out) {
+  const Matrix3X& x = in.x;
+  const double dt = in.dt;
   const int n_quads = static_cast<int>(part.quads.cols());
-  const int n_tri = static_cast<int>(part.triangles.cols());
   const double* material_angle = part.material_angle.empty() ? nullptr : part.material_angle.data();
   const double ks_g = 5.0 / 6.0 * 0.5 * law.E / (1.0 + law.nu);  // shear correction factor 5/6
   const SectionConstants section = make_section_constants(part.section);
   const auto kernel = point_kernel(law);  // the material update's constants
   const int* conn = part.triangles.data();
   const double* xd = x.data();
-  const double* vd = v.data();
-  const double* wd = omega.data();
-  double* fd = f_int.data();
-  double* md = m_int.data();
-  ShellForceResult result;
+  const double* vd = in.v.data();
+  const double* wd = in.omega.data();
 
-  for (int k = 0; k < n_tri; ++k) {
+  for (int k = begin; k < end; ++k) {
     const int e = n_quads + k;  // index in the state arrays
+    out.current = e;
     const int* nodes = conn + 3 * static_cast<std::ptrdiff_t>(k);
     Tri3 xe;
     Tri3 ve;
@@ -50,7 +43,7 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     gather_nodes(vd, nodes, ve);
     gather_nodes(wd, nodes, we);
     if (!ve.allFinite() || !we.allFinite()) {
-      throw InstabilityError(name_of(e, k) + ": non-finite nodal velocity or angular velocity");
+      return out.fail(e, ElementFailure::Kind::non_finite_velocity, "", k);
     }
 
     // 1. Velocity strains on the mid-step configuration (exactly zero for a rigid rotation step:
@@ -58,7 +51,9 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     //    linear velocity fields and uniform angular velocity).
     TriangleGeometry gm;
     const Tri3 xm = xe - (0.5 * dt) * ve;
-    compute_triangle_geometry_or_throw(xm, e, k, "mid-step", gm);
+    if (!compute_triangle_geometry(xm, gm)) {
+      return out.fail(e, ElementFailure::Kind::invalid_geometry, "mid-step", k);
+    }
     const Tri3 vl = gm.frame.transpose() * ve;
     const Tri3 wl = gm.frame.transpose() * we;
     // Mindlin, v^ = v^m - z e3 x theta^: eps(z) = eps_m - z kappa (engineering shear), as the quad.
@@ -87,18 +82,20 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     const double q_x = t * sxz_new;
     const double q_y = t * syz_new;
     work += t * dt * 0.5 * ((sxz_old + sxz_new) * g_s(0) + (syz_old + syz_new) * g_s(1));
-    result.internal_work += gm.area * work;
-    result.plastic_work += gm.area * sr.plastic_work;
+    out.internal_work.add(gm.area * work);
+    out.plastic_work.add(gm.area * sr.plastic_work);
     if (!sr.n.allFinite() || !sr.m.allFinite() || !std::isfinite(q_x + q_y)) {
-      throw InstabilityError(name_of(e, k) + ": non-finite stress");
+      return out.fail(e, ElementFailure::Kind::non_finite_stress, "", k);
     }
     st.thickness[e] = t * (1.0 + sr.d_ezz_mean);
 
     // 3. Nodal forces and moments on the end-of-step configuration (the transpose of step 1).
     TriangleGeometry g;
-    compute_triangle_geometry_or_throw(xe, e, k, "end of step", g);
+    if (!compute_triangle_geometry(xe, g)) {
+      return out.fail(e, ElementFailure::Kind::invalid_geometry, "end of step", k);
+    }
     if (!(g.frame.col(2).dot(gm.frame.col(2)) > 0.0)) {
-      throw InstabilityError(name_of(e, k) + ": inverted (the normal flipped within the step)");
+      return out.fail(e, ElementFailure::Kind::inverted, "", k);
     }
     const double a = g.area;
     Tri3 fl;
@@ -111,25 +108,18 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     ml.row(2).setZero();
     const Tri3 fg = g.frame * fl;
     const Tri3 mg = g.frame * ml;
-    scatter_add_nodes(fg, mg, nodes, fd, md);
+    store_corners(fg, mg,
+                  out.corners + kCornerWidth * static_cast<std::ptrdiff_t>(
+                                                   triangle_corner_slot(n_quads, k, 0)));
   }
-  return result;
 }
 
 }  // namespace
 
-ShellForceResult compute_triangle_internal_forces(const ShellPart& part, const Matrix3X& x,
-                                                  const Matrix3X& v, const Matrix3X& omega,
-                                                  double dt, ShellState& state, Matrix3X& f_int,
-                                                  Matrix3X& m_int) {
-  if (part.triangles.cols() == 0) {
-    return {};
-  }
-  return std::visit(
-      [&](const auto& law) {
-        return compute_forces(part, law, x, v, omega, dt, state, f_int, m_int);
-      },
-      part.material);
+void compute_triangle_forces(const ShellPart& part, const ElementInputs& in, ShellState& state,
+                             int begin, int end, ElementOutputs& out) {
+  std::visit([&](const auto& law) { compute_forces(part, law, in, state, begin, end, out); },
+             part.material);
 }
 
 }  // namespace sf

@@ -2,7 +2,7 @@
 #include <string>
 #include <variant>
 
-#include "core/errors.hpp"
+#include "element/corner_forces.hpp"
 #include "element/shell_directors.hpp"
 #include "element/shell_nodal_access.hpp"
 #include "element/shell_section_update.hpp"
@@ -14,11 +14,6 @@ namespace sf {
 
 namespace {
 
-std::string name_of(int element, int triangle) {
-  return "shell element " + std::to_string(element) + " (triangle " + std::to_string(triangle) +
-         ")";
-}
-
 // The Cartesian map of the triangle's natural basis (x_1 - x_0, x_2 - x_0) in `frame`.
 CartesianMap make_triangle_map(const Tri3& x, const Mat3& frame) {
   const EdgeDual dual = compute_edge_dual(x.col(1) - x.col(0), x.col(2) - x.col(0));
@@ -27,28 +22,28 @@ CartesianMap make_triangle_map(const Tri3& x, const Mat3& frame) {
 }
 
 template <class Law>
-ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Matrix3X& x,
-                                const Matrix3X& v, const Matrix3X& omega, double dt, ShellState& st,
-                                Matrix3X& f_int, Matrix3X& m_int) {
+void compute_forces(const ShellPart& part, const Law& law, const ElementInputs& in, ShellState& st,
+                    int first, int last, ElementOutputs& out) {
+  const Matrix3X& x = in.x;
+  const double dt = in.dt;
   const int n_quads = static_cast<int>(part.quads.cols());
-  const int n_tri = static_cast<int>(part.triangles.cols());
   const double* material_angle = part.material_angle.empty() ? nullptr : part.material_angle.data();
   const double ks_g = 5.0 / 6.0 * 0.5 * law.E / (1.0 + law.nu);  // shear correction factor 5/6
   const SectionConstants section = make_section_constants(part.section);
   const auto kernel = point_kernel(law);  // the material update's constants
-  ShellForceResult result;
 
-  for (int k = 0; k < n_tri; ++k) {
+  for (int k = first; k < last; ++k) {
     const int e = n_quads + k;  // index in the state arrays
+    out.current = e;
     const int* nodes = part.triangles.data() + 3 * static_cast<std::ptrdiff_t>(k);
     Tri3 xe;
     Tri3 ve;
     Tri3 we;
     gather_nodes(x.data(), nodes, xe);
-    gather_nodes(v.data(), nodes, ve);
-    gather_nodes(omega.data(), nodes, we);
+    gather_nodes(in.v.data(), nodes, ve);
+    gather_nodes(in.omega.data(), nodes, we);
     if (!ve.allFinite() || !we.allFinite()) {
-      throw InstabilityError(name_of(e, k) + ": non-finite nodal velocity or angular velocity");
+      return out.fail(e, ElementFailure::Kind::non_finite_velocity, "", k);
     }
 
     // 1. Membrane strain from the velocities on the mid-step geometry; curvature and shear from
@@ -56,7 +51,9 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     TriangleGeometry gm;
     const Tri3 xm = xe - (0.5 * dt) * ve;
     const Tri3 xs = xe - dt * ve;
-    compute_triangle_geometry_or_throw(xm, e, k, "mid-step", gm);
+    if (!compute_triangle_geometry(xm, gm)) {
+      return out.fail(e, ElementFailure::Kind::invalid_geometry, "mid-step", k);
+    }
     const Tri3 vl = gm.frame.transpose() * ve;
     const Vec3 d_membrane(gm.bx.dot(vl.row(0)), gm.by.dot(vl.row(1)),
                           gm.by.dot(vl.row(0)) + gm.bx.dot(vl.row(1)));
@@ -83,18 +80,20 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     const Vec2 s_new = s_old + shear_modulus * d_shear;
     st.sxz[e] = s_new(0);
     st.syz[e] = s_new(1);
-    result.internal_work += gm.area * (sr.work + t * 0.5 * (s_old + s_new).dot(d_shear));
-    result.plastic_work += gm.area * sr.plastic_work;
+    out.internal_work.add(gm.area * (sr.work + t * 0.5 * (s_old + s_new).dot(d_shear)));
+    out.plastic_work.add(gm.area * sr.plastic_work);
     if (!sr.n.allFinite() || !sr.m.allFinite() || !s_new.allFinite()) {
-      throw InstabilityError(name_of(e, k) + ": non-finite stress");
+      return out.fail(e, ElementFailure::Kind::non_finite_stress, "", k);
     }
     st.thickness[e] = t * (1.0 + sr.d_ezz_mean);
 
     // 3. Nodal forces and moments on the end-of-step configuration (conjugate to step 1).
     TriangleGeometry g;
-    compute_triangle_geometry_or_throw(xe, e, k, "end of step", g);
+    if (!compute_triangle_geometry(xe, g)) {
+      return out.fail(e, ElementFailure::Kind::invalid_geometry, "end of step", k);
+    }
     if (!(g.frame.col(2).dot(gm.frame.col(2)) > 0.0)) {
-      throw InstabilityError(name_of(e, k) + ": inverted (the normal flipped within the step)");
+      return out.fail(e, ElementFailure::Kind::inverted, "", k);
     }
     const double a = g.area;
     Tri3 fl;
@@ -109,25 +108,19 @@ ShellForceResult compute_forces(const ShellPart& part, const Law& law, const Mat
     const Eigen::Vector3d gap_force = shear_end.transpose() * shear_force;
     const double gap[3] = {gap_force(0), gap_force(1), gap_force(2)};
     add_triangle_director_forces(xe, d_end, moment, gap, fg, mg);
-    scatter_add_nodes(fg, mg, nodes, f_int.data(), m_int.data());
+    store_corners(fg, mg,
+                  out.corners + kCornerWidth * static_cast<std::ptrdiff_t>(
+                                                   triangle_corner_slot(n_quads, k, 0)));
   }
-  return result;
 }
 
 }  // namespace
 
-ShellForceResult compute_assumed_strain_triangle_forces(const ShellPart& part, const Matrix3X& x,
-                                                        const Matrix3X& v, const Matrix3X& omega,
-                                                        double dt, ShellState& state,
-                                                        Matrix3X& f_int, Matrix3X& m_int) {
-  if (part.triangles.cols() == 0) {
-    return {};
-  }
-  return std::visit(
-      [&](const auto& law) {
-        return compute_forces(part, law, x, v, omega, dt, state, f_int, m_int);
-      },
-      part.material);
+void compute_assumed_strain_triangle_forces(const ShellPart& part, const ElementInputs& in,
+                                            ShellState& state, int begin, int end,
+                                            ElementOutputs& out) {
+  std::visit([&](const auto& law) { compute_forces(part, law, in, state, begin, end, out); },
+             part.material);
 }
 
 }  // namespace sf

@@ -134,8 +134,11 @@ void read_blank(const CaseConfig& config, Model& model) {
                        fmt::format("{}: springback.u_channel.section", file));
   }
   for (const auto& [name, key] : names) {
+    // (A named reference: lambdas capture structured bindings only from clang 16, and the
+    // ThreadSanitizer build, scripts/tsan.sh, uses clang 14.)
+    const std::string& wanted = name;
     const bool seen = std::any_of(blank.groups.begin(), blank.groups.end(),
-                                  [&](const NodeGroup& g) { return g.name == name; });
+                                  [&](const NodeGroup& g) { return g.name == wanted; });
     if (!seen) {
       try {
         blank.groups.push_back(extract_node_group(gmsh_model, blank.mesh, name));
@@ -169,6 +172,7 @@ void read_blank(const CaseConfig& config, Model& model) {
   const MaterialConfig& material = config.blank_material();
   blank.part.quads = blank.mesh.quads;
   blank.part.triangles = blank.mesh.triangles;
+  blank.node_corners = build_node_corners(blank.part, static_cast<int>(blank.mesh.nodes.cols()));
   blank.part.section = make_section(bc.integration_points,
                                     bc.integration_rule == BlankConfig::IntegrationRule::lobatto
                                         ? ThroughThicknessRule::lobatto

@@ -31,6 +31,7 @@ struct Blank {
   double physical_mass = 0.0;     ///< tonne, before mass scaling
   MassScaling scaling;            ///< at time 0: per-element density factors and the added mass
   VectorX inverse_element_count;  ///< per node, 1 / (elements sharing it), for nodal averages
+  NodeCorners node_corners;       ///< each node's element corners, in the order they are summed
   VectorX physical_nodal_mass;    ///< tonne per node before mass scaling (for gravity)
   std::vector<NodeGroup> groups;  ///< every node group the case names, each once
 

@@ -6,17 +6,16 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "core/exact_sums.hpp"
 
 namespace sf {
 
 double kinetic_energy(const Model& model, const SolutionState& s) {
-  double e = 0.0;
-  const Eigen::Index n = s.v.cols();
-  for (Eigen::Index i = 0; i < n; ++i) {
-    e += s.mass[i] * s.v.col(i).squaredNorm() +
-         s.rotational_inertia[i] * s.omega.col(i).squaredNorm();
-  }
-  return 0.5 * e;
+  const auto e = sum_exactly<1>(s.v.cols(), [&](long i, double* t) {
+    t[0] = s.mass[i] * s.v.col(i).squaredNorm() +
+           s.rotational_inertia[i] * s.omega.col(i).squaredNorm();
+  });
+  return 0.5 * e[0];
 }
 
 // The velocity change of node i over half a kick: with the state at time n (s.v, s.omega the
@@ -53,28 +52,24 @@ void half_kick_rate(const Model& model, const SolutionState& s, Eigen::Index i, 
 // forces (docs/time-integration.md).
 namespace {
 
-// Node i's terms of whole_step_kinetic_energy (twice the energies), h = dt / 2, added to e.
-inline void add_whole_step_kinetic(const Model& model, const SolutionState& s, Eigen::Index i,
-                                   double h, KineticEnergy& e) {
+// Node i's terms of whole_step_kinetic_energy (twice the energies), h = dt / 2: the kinetic one
+// into t[0], the half-kick one into t[1].
+inline void whole_step_kinetic_terms(const Model& model, const SolutionState& s, Eigen::Index i,
+                                     double h, double* t) {
   Vec3 u, u_omega;
   const double m = s.mass[i];
   const double j = s.rotational_inertia[i];
   half_kick_rate(model, s, i, s.inverse_mass[i], s.inverse_inertia[i], u, u_omega);
-  e.kinetic +=
-      m * (s.v.col(i) + h * u).squaredNorm() + j * (s.omega.col(i) + h * u_omega).squaredNorm();
-  e.half_kick += h * h * (m * u.squaredNorm() + j * u_omega.squaredNorm());
+  t[0] = m * (s.v.col(i) + h * u).squaredNorm() + j * (s.omega.col(i) + h * u_omega).squaredNorm();
+  t[1] = h * h * (m * u.squaredNorm() + j * u_omega.squaredNorm());
 }
 
 }  // namespace
 
 KineticEnergy whole_step_kinetic_energy(const Model& model, const SolutionState& s, double dt) {
-  KineticEnergy e;
-  for (Eigen::Index i = 0; i < s.v.cols(); ++i) {
-    add_whole_step_kinetic(model, s, i, 0.5 * dt, e);
-  }
-  e.kinetic *= 0.5;
-  e.half_kick *= 0.5;
-  return e;
+  const auto sums = sum_exactly<2>(
+      s.v.cols(), [&](long i, double* t) { whole_step_kinetic_terms(model, s, i, 0.5 * dt, t); });
+  return {.kinetic = 0.5 * sums[0], .half_kick = 0.5 * sums[1]};
 }
 
 void update_half_kick_reference(const Model& model, SolutionState& s, double dt,
@@ -92,9 +87,9 @@ void update_half_kick_reference(const Model& model, SolutionState& s, double dt,
 
 namespace {
 
-// The node sums of a step, in one pass over the nodes (each sum in node order, as separate
-// passes would give it): the trapezoidal work increments (N mm), the damping power's sum m |v|^2
-// (N mm/s), and the kinetic and half-kick energies at the step end (whole_step_kinetic_energy).
+// The node sums of a step, in one pass over the nodes, each exact (core/exact_sums.hpp): the
+// trapezoidal work increments (N mm), the damping power's sum m |v|^2 (N mm/s), and the kinetic
+// and half-kick energies at the step end (whole_step_kinetic_energy).
 struct StepNodeSums {
   double element_work = 0.0;
   double load_work = 0.0;
@@ -104,25 +99,24 @@ struct StepNodeSums {
 };
 
 StepNodeSums sum_over_nodes(const Model& model, const SolutionState& s, double dt) {
-  StepNodeSums sums;
-  const Eigen::Index n = s.x.cols();
-  for (Eigen::Index i = 0; i < n; ++i) {
+  const auto sums = sum_exactly<6>(s.x.cols(), [&](long i, double* t) {
     const auto v = s.v.col(i);
     const auto omega = s.omega.col(i);
-    sums.element_work += 0.5 * dt *
-                         ((s.f_int.col(i) + s.f_int_previous.col(i)).dot(v) +
-                          (s.m_int.col(i) + s.m_int_previous.col(i)).dot(omega));
-    sums.contact_work += 0.5 * dt * (s.f_contact.col(i) + s.f_contact_previous.col(i)).dot(v);
-    sums.load_work += 0.5 * dt *
-                      ((s.f_ext.col(i) + s.f_ext_previous.col(i)).dot(v) +
-                       (s.m_ext.col(i) + s.m_ext_previous.col(i)).dot(omega));
-    sums.damping_power +=
-        s.mass[i] * v.squaredNorm() + s.rotational_inertia[i] * omega.squaredNorm();
-    add_whole_step_kinetic(model, s, i, 0.5 * dt, sums.kinetic);
-  }
-  sums.kinetic.kinetic *= 0.5;
-  sums.kinetic.half_kick *= 0.5;
-  return sums;
+    t[0] = 0.5 * dt *
+           ((s.f_int.col(i) + s.f_int_previous.col(i)).dot(v) +
+            (s.m_int.col(i) + s.m_int_previous.col(i)).dot(omega));
+    t[1] = 0.5 * dt * (s.f_contact.col(i) + s.f_contact_previous.col(i)).dot(v);
+    t[2] = 0.5 * dt *
+           ((s.f_ext.col(i) + s.f_ext_previous.col(i)).dot(v) +
+            (s.m_ext.col(i) + s.m_ext_previous.col(i)).dot(omega));
+    t[3] = s.mass[i] * v.squaredNorm() + s.rotational_inertia[i] * omega.squaredNorm();
+    whole_step_kinetic_terms(model, s, i, 0.5 * dt, t + 4);
+  });
+  return {.element_work = sums[0],
+          .load_work = sums[2],
+          .damping_power = sums[3],
+          .contact_work = sums[1],
+          .kinetic = {.kinetic = 0.5 * sums[4], .half_kick = 0.5 * sums[5]}};
 }
 
 }  // namespace

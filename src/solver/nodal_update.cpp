@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/errors.hpp"
+#include "core/exact_sums.hpp"  // kMinParallelIndices
 
 namespace sf {
 namespace {
@@ -16,7 +17,8 @@ namespace {
 bool add_force_kicks(const Model& model, SolutionState& s, double weight) {
   const Eigen::Index n = s.v.cols();
   const double c = model.loads.damping;
-  double check = 0.0;
+  bool finite = true;
+#pragma omp parallel for schedule(static) reduction(&& : finite) if (n >= kMinParallelIndices)
   for (Eigen::Index i = 0; i < n; ++i) {
     const double inv_m = s.inverse_mass[i];
     const double inv_i = s.inverse_inertia[i];
@@ -24,10 +26,10 @@ bool add_force_kicks(const Model& model, SolutionState& s, double weight) {
                   (weight * c) * s.v.col(i);
     s.omega.col(i) +=
         (weight * inv_i) * (s.m_ext.col(i) - s.m_int.col(i)) - (weight * c) * s.omega.col(i);
-    check += s.v.col(i).sum() + s.omega.col(i).sum();
+    finite = finite && std::isfinite(s.v.col(i).sum() + s.omega.col(i).sum());
   }
   model.constraints.apply(s.v, s.omega);
-  return std::isfinite(check);
+  return finite;
 }
 
 [[noreturn]] void throw_non_finite(const Model& model, const SolutionState& s) {
@@ -90,8 +92,12 @@ double apply_velocity_conditions(const Model& model, SolutionState& s, double we
 }
 
 void update_positions(SolutionState& s, double dt) {
-  s.x += dt * s.v;
-  s.rotation += dt * s.omega;
+  const Eigen::Index n = s.x.cols();
+#pragma omp parallel for schedule(static) if (n >= kMinParallelIndices)
+  for (Eigen::Index i = 0; i < n; ++i) {
+    s.x.col(i) += dt * s.v.col(i);
+    s.rotation.col(i) += dt * s.omega.col(i);
+  }
   s.time += dt;
   s.cycle += 1;
   s.dt = dt;

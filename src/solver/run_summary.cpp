@@ -1,3 +1,5 @@
+#include <omp.h>
+
 #include "solver/run_summary.hpp"
 
 #include <fmt/core.h>
@@ -66,6 +68,7 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
   r.wall_seconds = wall_seconds;
   r.elements = element_count(model.blank.part);
   r.nodes = static_cast<int>(model.blank.mesh.nodes.cols());
+  r.threads = omp_get_max_threads();
   if (r.cycles > 0 && r.elements > 0) {
     r.ns_per_element_cycle = 1e9 * wall_seconds / (static_cast<double>(r.cycles) * r.elements);
   }
@@ -260,8 +263,10 @@ std::string format_run_summary(const RunSummary& r) {
   } else {
     add(fmt::format("  cycles              {}", r.cycles));
     add(fmt::format("  end time            {:.6e} {}", r.end_time, u.time));
-    add(fmt::format("  wall time           {:.2f} s ({:.0f} ns per element-cycle, {} elements)",
-                    r.wall_seconds, r.ns_per_element_cycle, r.elements));
+    add(fmt::format(
+        "  wall time           {:.2f} s ({:.0f} ns per element-cycle, {} elements, "
+        "{} thread{})",
+        r.wall_seconds, r.ns_per_element_cycle, r.elements, r.threads, r.threads == 1 ? "" : "s"));
     const RunSummary::PhaseCosts& p = r.phase_ns;
     add(
         fmt::format("  per element-cycle   elements {:.0f}, contact {:.0f}, time step {:.0f}, "
@@ -342,6 +347,7 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
   j["contact_ns_per_node_cycle"] = r.contact_ns_per_node_cycle;
   j["elements"] = r.elements;
   j["nodes"] = r.nodes;
+  j["threads"] = r.threads;
   j["energy_Nmm"] = {{"kinetic", r.energies.kinetic},
                      {"internal", r.energies.internal},
                      {"hourglass", r.energies.hourglass},

@@ -71,6 +71,7 @@ struct RunSummary {
   double contact_ns_per_node_cycle = 0.0;  ///< contact wall time per blank node and cycle
   int elements = 0;
   int nodes = 0;
+  int threads = 1;  ///< OpenMP threads the run used (sheetform run --threads)
   Energies energies;
   double peak_kinetic_ratio = 0.0;   ///< largest kinetic/internal after the first tenth
   double physical_mass = 0.0;        ///< tonne, the blank's mass before scaling

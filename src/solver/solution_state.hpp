@@ -76,6 +76,7 @@ struct SolutionState {
   /// (energies.contact is the work done against the contact forces, docs/time-integration.md).
   double contact_spring_energy = 0.0;
   ShellState shell;
+  ElementPass element_pass;  ///< the element passes' corner buffer and per-thread sums (scratch)
   std::vector<ToolState> tools;
   /// One per Model::contacts: the search caches, distance bounds and stick forces (sized by the
   /// first contact call).

@@ -16,14 +16,15 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// The elements' internal forces and moments into state.f_int, m_int (zeroed here).
+// The elements' internal forces and moments into state.f_int, m_int: each element into its
+// corners, then each node sums its corners in a fixed order (element/corner_forces.hpp).
 ShellForceResult compute_internal_forces(const Model& model, SolutionState& s, double dt) {
-  s.f_int.setZero();
-  s.m_int.setZero();
   try {
     // The elements' critical steps at x come with the forces (the next step's bound).
-    const ShellForceResult r = compute_shell_internal_forces(
-        model.blank.part, s.x, s.v, s.omega, dt, s.shell, s.f_int, s.m_int, s.scaling.element_dt);
+    const ShellForceResult r =
+        run_element_pass(model.blank.part, ElementInputs{s.x, s.v, s.omega, dt}, s.shell,
+                         s.element_pass, s.scaling.element_dt);
+    gather_corner_forces(model.blank.node_corners, s.element_pass.corners, s.f_int, s.m_int);
     s.element_dt_cycle = s.cycle;
     return r;
   } catch (const InstabilityError& e) {
@@ -33,21 +34,8 @@ ShellForceResult compute_internal_forces(const Model& model, SolutionState& s, d
 
 // The contact offset of every node: half the mean thickness of the elements around it (mm).
 void update_contact_offsets(const Model& model, SolutionState& s) {
-  s.half_thickness.setZero();
-  const QuadConn& quads = model.blank.part.quads;
-  const TriConn& triangles = model.blank.part.triangles;
-  for (Eigen::Index e = 0; e < quads.cols(); ++e) {
-    for (int a = 0; a < 4; ++a) {
-      s.half_thickness[quads(a, e)] += 0.5 * s.shell.thickness[static_cast<std::size_t>(e)];
-    }
-  }
-  for (Eigen::Index k = 0; k < triangles.cols(); ++k) {
-    const double half = 0.5 * s.shell.thickness[static_cast<std::size_t>(quads.cols() + k)];
-    for (int a = 0; a < 3; ++a) {
-      s.half_thickness[triangles(a, k)] += half;
-    }
-  }
-  s.half_thickness.array() *= model.blank.inverse_element_count.array();
+  gather_half_thickness(model.blank.node_corners, s.shell.thickness,
+                        model.blank.inverse_element_count, s.half_thickness);
 }
 
 // The penalty contact of every pair into state.f_contact (zeroed here), the tools' reactions and

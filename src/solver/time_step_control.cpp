@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "core/errors.hpp"
+#include "core/exact_sums.hpp"
 #include "model/mass_scaling.hpp"
 #include "solver/energy_balance.hpp"
 
@@ -26,39 +27,39 @@ namespace {
 // kinetic-energy drop (1 - r) K(n) would leave (1 - r) D in the balance at every change.
 // dt: the step about to be taken (s); s.dt: the last one taken (0 before the first step).
 void keep_momentum(const Model& model, SolutionState& s, double dt) {
-  const Eigen::Index n = s.v.cols();
   const double h_last = 0.5 * s.dt;
   const double h_next = 0.5 * dt;
-  double removed = 0.0;
-  double kinetic_drop = 0.0;
-  Vec3 u, u_omega;
-  for (Eigen::Index i = 0; i < n; ++i) {
+  // Per node: the energy removed (t[0]) and the kinetic-energy drop (t[1]), summed exactly.
+  const auto sums = sum_exactly<2>(s.v.cols(), [&](long i, double* t) {
+    t[0] = 0.0;
+    t[1] = 0.0;
     const double m_new = s.mass[i];
     const double m_old = s.mass_before[i];
     const double i_new = s.rotational_inertia[i];
     const double i_old = s.inertia_before[i];
     if (m_new == m_old && i_new == i_old) {
-      continue;
+      return;
     }
+    Vec3 u, u_omega;
     half_kick_rate(model, s, i, 1.0 / m_old, 1.0 / i_old, u, u_omega);
     if (m_new != m_old) {
       const double r = m_old / m_new;
       const double drop = 0.5 * (1.0 - r) * m_old * (s.v.col(i) + h_last * u).squaredNorm();
-      kinetic_drop += drop;
-      removed += drop - 0.5 * (1.0 - r) * m_old * h_next * h_next * u.squaredNorm();
+      t[1] += drop;
+      t[0] += drop - 0.5 * (1.0 - r) * m_old * h_next * h_next * u.squaredNorm();
       s.v.col(i) *= r;
     }
     if (i_new != i_old) {
       const double r = i_old / i_new;
       const double drop =
           0.5 * (1.0 - r) * i_old * (s.omega.col(i) + h_last * u_omega).squaredNorm();
-      kinetic_drop += drop;
-      removed += drop - 0.5 * (1.0 - r) * i_old * h_next * h_next * u_omega.squaredNorm();
+      t[1] += drop;
+      t[0] += drop - 0.5 * (1.0 - r) * i_old * h_next * h_next * u_omega.squaredNorm();
       s.omega.col(i) *= r;
     }
-  }
-  s.energies.mass_scaling += removed;
-  s.energies.kinetic -= kinetic_drop;
+  });
+  s.energies.mass_scaling += sums[0];
+  s.energies.kinetic -= sums[1];
 }
 
 }  // namespace

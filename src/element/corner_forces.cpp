@@ -1,0 +1,86 @@
+#include "element/corner_forces.hpp"
+
+#include <cstddef>
+#include <stdexcept>
+
+namespace sf {
+
+namespace {
+// Below this many nodes a gather runs on one thread (a parallel region costs microseconds).
+constexpr int kMinParallelNodes = 1024;
+}  // namespace
+
+NodeCorners build_node_corners(const ShellPart& part, int n_nodes) {
+  const int n_quads = static_cast<int>(part.quads.cols());
+  const int n_triangles = static_cast<int>(part.triangles.cols());
+  NodeCorners list;
+  list.n_quads = n_quads;
+  list.offsets.assign(static_cast<std::size_t>(n_nodes) + 1, 0);
+  auto node_of_slot = [&](int slot) {
+    const int quad_slots = 4 * n_quads;
+    return slot < quad_slots ? part.quads(slot % 4, slot / 4)
+                             : part.triangles((slot - quad_slots) % 3, (slot - quad_slots) / 3);
+  };
+  const int n_slots = 4 * n_quads + 3 * n_triangles;
+  for (int slot = 0; slot < n_slots; ++slot) {
+    const int node = node_of_slot(slot);
+    if (node < 0 || node >= n_nodes) {
+      throw std::invalid_argument("build_node_corners: element node out of range");
+    }
+    ++list.offsets[static_cast<std::size_t>(node) + 1];
+  }
+  for (int i = 0; i < n_nodes; ++i) {
+    list.offsets[static_cast<std::size_t>(i) + 1] += list.offsets[static_cast<std::size_t>(i)];
+  }
+  // Filled in ascending slot order, so each node's slots come out ascending.
+  std::vector<int> next(list.offsets.begin(), list.offsets.end() - 1);
+  list.slots.resize(static_cast<std::size_t>(n_slots));
+  for (int slot = 0; slot < n_slots; ++slot) {
+    list.slots[static_cast<std::size_t>(next[static_cast<std::size_t>(node_of_slot(slot))]++)] =
+        slot;
+  }
+  return list;
+}
+
+void gather_corner_forces(const NodeCorners& nodes, std::span<const double> corners, Matrix3X& f,
+                          Matrix3X& m) {
+  const int n = nodes.node_count();
+  const int* offsets = nodes.offsets.data();
+  const int* slots = nodes.slots.data();
+  const double* c = corners.data();
+  double* fd = f.data();
+  double* md = m.data();
+#pragma omp parallel for schedule(static) if (n >= kMinParallelNodes)
+  for (int i = 0; i < n; ++i) {
+    double sum[kCornerWidth] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    for (int j = offsets[i]; j < offsets[i + 1]; ++j) {
+      const double* corner = c + kCornerWidth * static_cast<std::ptrdiff_t>(slots[j]);
+      for (int k = 0; k < kCornerWidth; ++k) {
+        sum[k] += corner[k];
+      }
+    }
+    double* fi = fd + 3 * static_cast<std::ptrdiff_t>(i);
+    double* mi = md + 3 * static_cast<std::ptrdiff_t>(i);
+    for (int k = 0; k < 3; ++k) {
+      fi[k] = sum[k];
+      mi[k] = sum[3 + k];
+    }
+  }
+}
+
+void gather_half_thickness(const NodeCorners& nodes, std::span<const double> thickness,
+                           const VectorX& inverse_element_count, VectorX& half_thickness) {
+  const int n = nodes.node_count();
+#pragma omp parallel for schedule(static) if (n >= kMinParallelNodes)
+  for (int i = 0; i < n; ++i) {
+    double sum = 0.0;
+    for (int j = nodes.offsets[static_cast<std::size_t>(i)];
+         j < nodes.offsets[static_cast<std::size_t>(i) + 1]; ++j) {
+      const int e = element_of_corner(nodes.n_quads, nodes.slots[static_cast<std::size_t>(j)]);
+      sum += 0.5 * thickness[static_cast<std::size_t>(e)];
+    }
+    half_thickness[i] = sum * inverse_element_count[i];
+  }
+}
+
+}  // namespace sf

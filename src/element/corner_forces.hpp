@@ -1,0 +1,74 @@
+#pragma once
+// The element corners of a shell part and their sum at the nodes (issue 17: deterministic
+// assembly). The element pass writes each element's nodal forces and moments into its own corner
+// slots, never into shared nodal arrays, so elements can run on any thread; every node then sums
+// its corners in one fixed order, ascending corner slot (quads, then triangles, in element
+// order), starting from zero: the order and the bits of a serial scatter into zeroed arrays.
+#include <span>
+#include <vector>
+
+#include "core/types.hpp"
+#include "element/shell_part.hpp"
+
+namespace sf {
+
+/// Values per corner slot: force (N) and moment (N mm), global components.
+inline constexpr int kCornerWidth = 6;
+
+/// Corner slot of corner a of quad e: 4 e + a; of triangle k (element n_quads + k):
+/// 4 n_quads + 3 k + a.
+inline int quad_corner_slot(int e, int a) {
+  return 4 * e + a;
+}
+inline int triangle_corner_slot(int n_quads, int k, int a) {
+  return 4 * n_quads + 3 * k + a;
+}
+inline int corner_count(const ShellPart& part) {
+  return static_cast<int>(4 * part.quads.cols() + 3 * part.triangles.cols());
+}
+
+/// The element a corner slot belongs to (its index in the part's state: quads first).
+inline int element_of_corner(int n_quads, int slot) {
+  const int quad_slots = 4 * n_quads;
+  return slot < quad_slots ? slot / 4 : n_quads + (slot - quad_slots) / 3;
+}
+
+/// Writes an element's N corners, forces f (N) and moments m (N mm) in global components, to its
+/// consecutive corner slots from `corners` (kCornerWidth values each).
+template <int N>
+inline void store_corners(const Eigen::Matrix<double, 3, N>& f,
+                          const Eigen::Matrix<double, 3, N>& m, double* corners) {
+  for (int i = 0; i < N; ++i) {
+    double* c = corners + kCornerWidth * i;
+    c[0] = f(0, i);
+    c[1] = f(1, i);
+    c[2] = f(2, i);
+    c[3] = m(0, i);
+    c[4] = m(1, i);
+    c[5] = m(2, i);
+  }
+}
+
+/// Each node's corner slots, ascending (compressed rows: node i's slots are
+/// slots[offsets[i] .. offsets[i + 1])). Built once per part.
+struct NodeCorners {
+  std::vector<int> offsets;
+  std::vector<int> slots;
+  int n_quads = 0;
+
+  int node_count() const { return offsets.empty() ? 0 : static_cast<int>(offsets.size()) - 1; }
+};
+
+NodeCorners build_node_corners(const ShellPart& part, int n_nodes);
+
+/// f.col(i) and m.col(i) = the sum of node i's corners' forces and moments (0 + c1 + c2 + ...,
+/// in slot order) from corners (kCornerWidth per slot). Threads share out the nodes.
+void gather_corner_forces(const NodeCorners& nodes, std::span<const double> corners, Matrix3X& f,
+                          Matrix3X& m);
+
+/// half_thickness[i] = (sum over node i's corners of half their element's thickness) *
+/// inverse_element_count[i]: the mean half thickness around the node (mm), the contact offset.
+void gather_half_thickness(const NodeCorners& nodes, std::span<const double> thickness,
+                           const VectorX& inverse_element_count, VectorX& half_thickness);
+
+}  // namespace sf

@@ -1,0 +1,30 @@
+#include "element/element_failure.hpp"
+
+namespace sf {
+
+std::string ElementFailure::message() const {
+  std::string name = "shell element " + std::to_string(element);
+  if (triangle >= 0) {
+    name += " (triangle " + std::to_string(triangle) + ")";
+  }
+  switch (kind) {
+    case Kind::none:
+      return name + ": no failure";
+    case Kind::non_finite_velocity:
+      return name + ": non-finite nodal velocity or angular velocity";
+    case Kind::non_finite_stress:
+      return name + ": non-finite stress";
+    case Kind::invalid_geometry:
+      return name +
+             (triangle >= 0 ? ": collapsed or non-finite geometry ("
+                            : ": inverted, collapsed or non-finite geometry (") +
+             when + ")";
+    case Kind::inverted:
+      return name + ": inverted (the normal flipped within the step)";
+    case Kind::thrown:
+      return name + ": " + thrown_text;
+  }
+  return name;
+}
+
+}  // namespace sf

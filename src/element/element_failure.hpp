@@ -1,0 +1,40 @@
+#pragma once
+// What stops an element pass, recorded instead of thrown inside the element loops (issue 17):
+// threads must not throw out of a parallel region, and the run must report the same element
+// whatever the thread count. Each thread stops its share at its first failure; the pass then
+// reports the lowest failing element of all, which is the one a serial pass stops at.
+#include <climits>
+#include <string>
+
+namespace sf {
+
+struct ElementFailure {
+  enum class Kind {
+    none,
+    non_finite_velocity,  ///< a node's velocity or angular velocity
+    non_finite_stress,
+    invalid_geometry,  ///< quad: inverted, collapsed or non-finite; triangle: collapsed
+    inverted,          ///< triangle: the normal flipped within the step
+    thrown,            ///< an exception from deeper code (the material), its text kept
+  };
+  int element = INT_MAX;  ///< index in the part's state (quads first)
+  int triangle = -1;      ///< the triangle's index among the triangles; -1 for a quad
+  Kind kind = Kind::none;
+  const char* when = "";  ///< "mid-step" or "end of step" (geometry)
+  std::string thrown_text;
+  bool internal = false;  ///< thrown: not an InstabilityError (a program error)
+
+  bool failed() const { return kind != Kind::none; }
+
+  /// Keeps the failure of the lower element (the first one a serial pass would meet).
+  void keep_lowest(const ElementFailure& other) {
+    if (other.failed() && (!failed() || other.element < element)) {
+      *this = other;
+    }
+  }
+
+  /// The message a serial pass has always thrown for it (InstabilityError text).
+  std::string message() const;
+};
+
+}  // namespace sf

@@ -1,0 +1,51 @@
+#pragma once
+// The inputs of an internal-force pass and what one share of it (a thread's range of elements)
+// writes: the element kernels (BT and assumed-strain quads, both triangles) take a range of
+// elements and an ElementOutputs, write only their own corner slots, per-element state and time
+// steps, and sum the pass's works exactly (core/exact_sum.hpp), so that neither the nodal forces
+// nor the works depend on how the elements were shared out.
+#include "core/exact_sum.hpp"
+#include "core/types.hpp"
+#include "element/element_failure.hpp"
+
+namespace sf {
+
+/// The kinematics a pass reads: x at the end of the step (mm), v (mm/s) and omega (rad/s) at
+/// mid-step, the step dt (s).
+struct ElementInputs {
+  const Matrix3X& x;
+  const Matrix3X& v;
+  const Matrix3X& omega;
+  double dt = 0.0;
+};
+
+/// One share's outputs. Aligned apart so that threads do not share cache lines.
+struct alignas(64) ElementOutputs {
+  double* corners = nullptr;     ///< kCornerWidth per corner slot (element/corner_forces.hpp)
+  double* element_dt = nullptr;  ///< s per element, the critical step at x; null: not wanted
+  ExactSum internal_work;        ///< N mm, stress work increments (excludes hourglass)
+  ExactSum plastic_work;         ///< N mm, their plastic part
+  ExactSum hourglass_work;       ///< N mm, work of the hourglass (stabilisation) forces
+  ElementFailure failure;        ///< the share's first failure; the kernel stops there
+  int current = -1;              ///< the element being computed (names a thrown failure)
+
+  void reset(double* corner_buffer, double* time_steps) {
+    corners = corner_buffer;
+    element_dt = time_steps;
+    internal_work.clear();
+    plastic_work.clear();
+    hourglass_work.clear();
+    failure = ElementFailure();
+    current = -1;
+  }
+
+  /// Records the share's failure at element e (triangle: its index among the triangles).
+  void fail(int e, ElementFailure::Kind kind, const char* when = "", int triangle = -1) {
+    failure.element = e;
+    failure.triangle = triangle;
+    failure.kind = kind;
+    failure.when = when;
+  }
+};
+
+}  // namespace sf
