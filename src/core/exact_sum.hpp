@@ -29,26 +29,22 @@ class ExactSum {
       add_special(bits);
       return;
     }
-    std::uint64_t significand = bits & ((std::uint64_t{1} << 52) - 1);
-    int shift = 0;  // value = significand 2^(shift - 1074)
-    if (biased != 0) {
-      significand |= std::uint64_t{1} << 52;
-      shift = biased - 1;
-    }
+    // value = significand 2^(shift - 1074): normal numbers have the implicit bit and shift
+    // biased - 1, subnormals (biased 0) neither.
+    const std::uint64_t normal = biased != 0 ? 1 : 0;
+    const std::uint64_t significand = (bits & ((std::uint64_t{1} << 52) - 1)) | (normal << 52);
+    const int shift = biased - static_cast<int>(normal);
     const Uint128 placed = static_cast<Uint128>(significand) << (shift & 31);
     const int k = shift >> 5;
+    // Negative values subtract: x -> (x ^ m) - m negates when m = -1 (no branch on the sign,
+    // which mixed-sign terms would mispredict).
+    const std::int64_t m = -static_cast<std::int64_t>(bits >> 63);
     const auto lo = static_cast<std::int64_t>(static_cast<std::uint32_t>(placed));
     const auto mid = static_cast<std::int64_t>(static_cast<std::uint32_t>(placed >> 32));
     const auto hi = static_cast<std::int64_t>(static_cast<std::uint64_t>(placed >> 64));
-    if (bits >> 63) {
-      digits_[k] -= lo;
-      digits_[k + 1] -= mid;
-      digits_[k + 2] -= hi;
-    } else {
-      digits_[k] += lo;
-      digits_[k + 1] += mid;
-      digits_[k + 2] += hi;
-    }
+    digits_[k] += (lo ^ m) - m;
+    digits_[k + 1] += (mid ^ m) - m;
+    digits_[k + 2] += (hi ^ m) - m;
     if (++pending_ == kCarryInterval) {
       propagate_carries();
     }
