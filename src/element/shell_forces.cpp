@@ -45,30 +45,59 @@ int share_begin(int count, int t, int shares, int align) {
   return static_cast<int>(first - first % align);
 }
 
-// One thread's share: its quads, then its triangles and their time steps. A failure stops the
-// share; an exception from deeper code (the material) is recorded, never thrown out of the
-// parallel region.
-void run_share(const ShellPart& part, const ElementInputs& in, ShellState& state, int t, int shares,
-               ElementOutputs& out) {
+// The elements at positions [first, last) of the concatenated runs, run piece by run piece, to
+// `piece(begin, end)` (state indices). Stops when the share has failed.
+template <class Piece>
+void for_each_piece(std::span<const ElementRun> runs, int first, int last,
+                    const ElementOutputs& out, const Piece& piece) {
+  int offset = 0;  // position of the run's first element
+  for (const ElementRun& run : runs) {
+    const int length = run.end - run.begin;
+    const int a = std::max(first, offset);
+    const int b = std::min(last, offset + length);
+    if (a < b && !out.failure.failed()) {
+      piece(run.begin + (a - offset), run.begin + (b - offset));
+    }
+    offset += length;
+  }
+}
+
+int run_length(std::span<const ElementRun> runs) {
+  int n = 0;
+  for (const ElementRun& run : runs) {
+    n += run.end - run.begin;
+  }
+  return n;
+}
+
+// One thread's share: its positions among the quad runs, then among the triangle runs (and
+// their time steps). A failure stops the share; an exception from deeper code (the material) is
+// recorded, never thrown out of the parallel region.
+void run_share(const ShellPart& part, const ElementInputs& in, ShellState& state,
+               std::span<const ElementRun> quad_runs, std::span<const ElementRun> triangle_runs,
+               int t, int shares, ElementOutputs& out) {
   const int n_quads = static_cast<int>(part.quads.cols());
-  const int n_triangles = static_cast<int>(part.triangles.cols());
-  const int q0 = share_begin(n_quads, t, shares, kBlockLanes);
-  const int q1 = share_begin(n_quads, t + 1, shares, kBlockLanes);
-  const int t0 = share_begin(n_triangles, t, shares, 1);
-  const int t1 = share_begin(n_triangles, t + 1, shares, 1);
+  const int quads = run_length(quad_runs);
+  const int triangles = run_length(triangle_runs);
   const bool assumed_strain = part.formulation == ShellFormulation::assumed_strain;
+  auto quad_piece = [&](int q0, int q1) {
+    assumed_strain ? compute_assumed_strain_quad_forces(part, in, state, q0, q1, out)
+                   : compute_bt_quad_forces(part, in, state, q0, q1, out);
+  };
+  auto triangle_piece = [&](int e0, int e1) {
+    const int t0 = e0 - n_quads;
+    const int t1 = e1 - n_quads;
+    assumed_strain ? compute_assumed_strain_triangle_forces(part, in, state, t0, t1, out)
+                   : compute_triangle_forces(part, in, state, t0, t1, out);
+    if (out.element_dt && !out.failure.failed()) {
+      compute_triangle_time_steps(part, in.x, {out.element_dt, state.thickness.size()}, t0, t1);
+    }
+  };
   try {
-    if (q1 > q0) {
-      assumed_strain ? compute_assumed_strain_quad_forces(part, in, state, q0, q1, out)
-                     : compute_bt_quad_forces(part, in, state, q0, q1, out);
-    }
-    if (t1 > t0 && !out.failure.failed()) {
-      assumed_strain ? compute_assumed_strain_triangle_forces(part, in, state, t0, t1, out)
-                     : compute_triangle_forces(part, in, state, t0, t1, out);
-      if (out.element_dt && !out.failure.failed()) {
-        compute_triangle_time_steps(part, in.x, {out.element_dt, state.thickness.size()}, t0, t1);
-      }
-    }
+    for_each_piece(quad_runs, share_begin(quads, t, shares, kBlockLanes),
+                   share_begin(quads, t + 1, shares, kBlockLanes), out, quad_piece);
+    for_each_piece(triangle_runs, share_begin(triangles, t, shares, 1),
+                   share_begin(triangles, t + 1, shares, 1), out, triangle_piece);
   } catch (const InstabilityError& error) {
     out.fail(out.current, ElementFailure::Kind::thrown);
     out.failure.thrown_text = error.what();
@@ -81,9 +110,31 @@ void run_share(const ShellPart& part, const ElementInputs& in, ShellState& state
 
 }  // namespace
 
+std::vector<ElementRun> element_runs(std::span<const int> elements, int n_quads) {
+  std::vector<ElementRun> runs;
+  for (const int e : elements) {
+    if (!runs.empty() && runs.back().end == e && e != n_quads) {
+      runs.back().end = e + 1;  // consecutive, and not the first triangle after the last quad
+    } else {
+      runs.push_back({e, e + 1});
+    }
+  }
+  return runs;
+}
+
 ShellForceResult run_element_pass(const ShellPart& part, const ElementInputs& in, ShellState& state,
-                                  ElementPass& pass, std::span<double> element_dt) {
+                                  ElementPass& pass, std::span<double> element_dt,
+                                  std::span<const ElementRun> runs) {
   check_sizes(part, in, state, element_dt);
+  // Runs below n_quads are quads (element_runs never lets one cross it); none: every element.
+  const int n_quads = static_cast<int>(part.quads.cols());
+  const ElementRun all[2] = {{0, n_quads}, {n_quads, element_count(part)}};
+  const std::span<const ElementRun> given = runs.empty() ? std::span<const ElementRun>(all) : runs;
+  const auto split = std::find_if(given.begin(), given.end(),
+                                  [&](const ElementRun& r) { return r.begin >= n_quads; });
+  const std::span<const ElementRun> quad_runs(given.begin(), split);
+  const std::span<const ElementRun> triangle_runs(split, given.end());
+
   const auto slots = static_cast<std::size_t>(corner_count(part)) * kCornerWidth;
   if (pass.corners.size() != slots) {
     pass.corners.assign(slots, 0.0);
@@ -105,7 +156,7 @@ ShellForceResult run_element_pass(const ShellPart& part, const ElementInputs& in
     }
     ElementOutputs& out = pass.shares[static_cast<std::size_t>(t)];
     out.reset(pass.corners.data(), element_dt.empty() ? nullptr : element_dt.data());
-    run_share(part, in, state, t, shares, out);
+    run_share(part, in, state, quad_runs, triangle_runs, t, shares, out);
   }
   // Exact sums and the lowest failure: the same whatever the number of shares.
   ElementOutputs& total = pass.shares[0];

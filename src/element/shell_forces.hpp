@@ -27,6 +27,17 @@ struct ShellForceResult {
                                ///< the points' d_plastic_work on the same quadrature
 };
 
+/// Consecutive elements [begin, end) by state index (quads first, then triangles): a piece of a
+/// rank's share of the blank (parallel/rank_plan.hpp); a pass over all elements is one run.
+struct ElementRun {
+  int begin = 0;
+  int end = 0;
+};
+
+/// The runs of consecutive ids in `elements` (ascending state indices), quads and triangles in
+/// separate runs.
+std::vector<ElementRun> element_runs(std::span<const int> elements, int n_quads);
+
 /// The scratch of the element passes over one part: the corner buffer and one output share per
 /// thread. Sized by the first pass; later passes allocate nothing.
 struct ElementPass {
@@ -44,8 +55,11 @@ struct ElementPass {
 /// bits as compute_element_time_steps), so that the time-step control needs no pass of its own.
 /// Throws InstabilityError naming the lowest failing element (inversion, collapse, a non-finite
 /// value): the element a serial pass stops at, whatever the thread count.
+/// With `runs` (ascending, each all quads or all triangles: element_runs), only those elements
+/// (an MPI rank's share: their corner slots, state and steps; the works summed over them).
 ShellForceResult run_element_pass(const ShellPart& part, const ElementInputs& in, ShellState& state,
-                                  ElementPass& pass, std::span<double> element_dt = {});
+                                  ElementPass& pass, std::span<double> element_dt = {},
+                                  std::span<const ElementRun> runs = {});
 
 /// The same, with the corners summed at the nodes and added into f_int and m_int (3 x n_nodes;
 /// the caller zeroes them): for callers outside the time loop (the static analysis, tests), which

@@ -15,62 +15,14 @@
 #include "core/errors.hpp"
 #include "element/shell_directors.hpp"
 #include "element/shell_forces.hpp"
+#include "support/warped_mixed_mesh.hpp"
 
 namespace sf {
 namespace {
 
-// An nx x ny grid of 1 mm cells on a cylinder of radius 20 mm (warped), nodes jittered by up to
-// 0.2 mm (distorted); the last `tri_rows` rows of cells split into two triangles each.
-struct Mesh {
-  Matrix3X x;
-  QuadConn quads;
-  TriConn triangles;
-};
-
-Mesh make_mesh(int nx, int ny, int tri_rows) {
-  std::mt19937 random(7);
-  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
-  Mesh m;
-  m.x.resize(3, (nx + 1) * (ny + 1));
-  for (int j = 0; j <= ny; ++j) {
-    for (int i = 0; i <= nx; ++i) {
-      const double s = i + jitter(random);
-      const double y = j + jitter(random);
-      m.x.col(j * (nx + 1) + i) = Vec3(20.0 * std::sin(s / 20.0), y, 20.0 * std::cos(s / 20.0));
-    }
-  }
-  const int quad_rows = ny - tri_rows;
-  m.quads.resize(4, nx * quad_rows);
-  m.triangles.resize(3, 2 * nx * tri_rows);
-  for (int j = 0; j < ny; ++j) {
-    for (int i = 0; i < nx; ++i) {
-      const int a = j * (nx + 1) + i;
-      const int b = a + 1;
-      const int c = b + nx + 1;
-      const int d = a + nx + 1;
-      if (j < quad_rows) {
-        m.quads.col(j * nx + i) << a, b, c, d;
-      } else {
-        const int t = 2 * ((j - quad_rows) * nx + i);
-        m.triangles.col(t) << a, b, c;
-        m.triangles.col(t + 1) << a, c, d;
-      }
-    }
-  }
-  return m;
-}
-
-ShellPart make_part(const Mesh& mesh, ShellFormulation formulation) {
-  ShellPart p;
-  p.formulation = formulation;
-  p.quads = mesh.quads;
-  p.triangles = mesh.triangles;
-  p.section = make_gauss_section(5);
-  p.material = J2PlaneStress{210000.0, 0.3, LinearHardening{200.0, 1000.0}};
-  p.density = 7.85e-9;
-  p.hourglass_coefficient = 0.1;
-  return p;
-}
+using test::make_mesh;
+using test::make_part;
+using test::Mesh;
 
 struct PassRun {
   std::vector<double> corners, element_dt, state;
