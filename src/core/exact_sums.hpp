@@ -8,13 +8,13 @@
 
 namespace sf {
 
-/// The K sums over i in [0, n) of the terms that terms(i, t) writes to t[0..K), each rounded once.
-/// terms is called once per index, from any thread (it may update index i's own data).
 /// Below this many indices the sums run on one thread (a parallel region costs microseconds).
 inline constexpr long kMinParallelIndices = 1024;
 
+/// The K exact sums over i in [0, n) of the terms that terms(i, t) writes to t[0..K). terms is
+/// called once per index, from any thread (it may update index i's own data).
 template <int K, class Terms>
-std::array<double, K> sum_exactly(long n, const Terms& terms) {
+std::array<ExactSum, K> sum_exactly(long n, const Terms& terms) {
   std::array<ExactSum, K> total;
 #pragma omp parallel if (n >= kMinParallelIndices)
   {
@@ -33,11 +33,17 @@ std::array<double, K> sum_exactly(long n, const Terms& terms) {
       total[k].merge(mine[k]);
     }
   }
-  std::array<double, K> sums;
-  for (int k = 0; k < K; ++k) {
-    sums[k] = total[k].round();
+  return total;
+}
+
+/// Each sum rounded once to the nearest double.
+template <std::size_t K>
+std::array<double, K> rounded(const std::array<ExactSum, K>& sums) {
+  std::array<double, K> values;
+  for (std::size_t k = 0; k < K; ++k) {
+    values[k] = sums[k].round();
   }
-  return sums;
+  return values;
 }
 
 }  // namespace sf

@@ -11,11 +11,12 @@
 namespace sf {
 
 double kinetic_energy(const Model& model, const SolutionState& s) {
-  const auto e = sum_exactly<1>(s.v.cols(), [&](long i, double* t) {
+  auto sums = sum_exactly<1>(s.v.cols(), [&](long i, double* t) {
     t[0] = s.mass[i] * s.v.col(i).squaredNorm() +
            s.rotational_inertia[i] * s.omega.col(i).squaredNorm();
   });
-  return 0.5 * e[0];
+  s.domain->reduce(sums);
+  return 0.5 * sums[0].round();
 }
 
 // The velocity change of node i over half a kick: with the state at time n (s.v, s.omega the
@@ -67,8 +68,10 @@ inline void whole_step_kinetic_terms(const Model& model, const SolutionState& s,
 }  // namespace
 
 KineticEnergy whole_step_kinetic_energy(const Model& model, const SolutionState& s, double dt) {
-  const auto sums = sum_exactly<2>(
+  auto exact = sum_exactly<2>(
       s.v.cols(), [&](long i, double* t) { whole_step_kinetic_terms(model, s, i, 0.5 * dt, t); });
+  s.domain->reduce(exact);
+  const auto sums = rounded(exact);
   return {.kinetic = 0.5 * sums[0], .half_kick = 0.5 * sums[1]};
 }
 
@@ -99,7 +102,7 @@ struct StepNodeSums {
 };
 
 StepNodeSums sum_over_nodes(const Model& model, const SolutionState& s, double dt) {
-  const auto sums = sum_exactly<6>(s.x.cols(), [&](long i, double* t) {
+  auto exact = sum_exactly<6>(s.x.cols(), [&](long i, double* t) {
     const auto v = s.v.col(i);
     const auto omega = s.omega.col(i);
     t[0] = 0.5 * dt *
@@ -112,6 +115,8 @@ StepNodeSums sum_over_nodes(const Model& model, const SolutionState& s, double d
     t[3] = s.mass[i] * v.squaredNorm() + s.rotational_inertia[i] * omega.squaredNorm();
     whole_step_kinetic_terms(model, s, i, 0.5 * dt, t + 4);
   });
+  s.domain->reduce(exact);
+  const auto sums = rounded(exact);
   return {.element_work = sums[0],
           .load_work = sums[2],
           .damping_power = sums[3],

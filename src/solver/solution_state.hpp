@@ -2,6 +2,7 @@
 // The run state: everything that changes during a run (nodal kinematics and forces, masses under
 // mass scaling, the blank's integration point state, the tools' positions, the energies, timers).
 // The Model stays const; a run is its model plus this state.
+#include <memory>
 #include <vector>
 
 #include "contact/contact_state.hpp"
@@ -9,6 +10,7 @@
 #include "element/shell_bt.hpp"
 #include "model/mass_scaling.hpp"
 #include "model/model.hpp"
+#include "solver/domain.hpp"
 #include "solver/energies.hpp"
 #include "solver/phase_times.hpp"
 
@@ -77,6 +79,9 @@ struct SolutionState {
   double contact_spring_energy = 0.0;
   ShellState shell;
   ElementPass element_pass;  ///< the element passes' corner buffer and per-thread sums (scratch)
+  /// What this process computes of the blank and how its partial sums become whole (serial: the
+  /// identity; an MPI rank: its share, solver/domain.hpp).
+  std::shared_ptr<Domain> domain = std::make_shared<SerialDomain>();
   std::vector<ToolState> tools;
   /// One per Model::contacts: the search caches, distance bounds and stick forces (sized by the
   /// first contact call).

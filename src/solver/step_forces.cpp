@@ -21,10 +21,16 @@ double seconds_since(Clock::time_point start) {
 ShellForceResult compute_internal_forces(const Model& model, SolutionState& s, double dt) {
   try {
     // The elements' critical steps at x come with the forces (the next step's bound).
-    const ShellForceResult r =
-        run_element_pass(model.blank.part, ElementInputs{s.x, s.v, s.omega, dt}, s.shell,
-                         s.element_pass, s.scaling.element_dt);
-    gather_corner_forces(model.blank.node_corners, s.element_pass.corners, s.f_int, s.m_int);
+    run_element_pass(model.blank.part, ElementInputs{s.x, s.v, s.omega, dt}, s.shell,
+                     s.element_pass, s.scaling.element_dt, s.domain->element_runs());
+    s.domain->assemble_corners(model.blank.node_corners, s.element_pass.corners, s.f_int, s.m_int);
+    // The pass's exact works (left in its first share) made global, then rounded once.
+    const ElementOutputs& total = s.element_pass.shares[0];
+    ExactSum works[3] = {total.internal_work, total.plastic_work, total.hourglass_work};
+    s.domain->reduce(works);
+    const ShellForceResult r{.hourglass_work = works[2].round(),
+                             .internal_work = works[0].round(),
+                             .plastic_work = works[1].round()};
     s.element_dt_cycle = s.cycle;
     return r;
   } catch (const InstabilityError& e) {
@@ -36,6 +42,28 @@ ShellForceResult compute_internal_forces(const Model& model, SolutionState& s, d
 void update_contact_offsets(const Model& model, SolutionState& s) {
   gather_half_thickness(model.blank.node_corners, s.shell.thickness,
                         model.blank.inverse_element_count, s.half_thickness);
+}
+
+// A contact call's exact sums and counts (left in the pair's first share) made global, then
+// rounded once.
+ContactResult global_contact_result(Domain& domain, const ContactShare& total) {
+  ExactSum sums[9] = {total.force_on_tool[0], total.force_on_tool[1], total.force_on_tool[2],
+                      total.energy, total.friction_work};
+  const int counts[4] = {total.nodes_in_contact, total.sliding_nodes, total.sticking_nodes,
+                         total.projection_fallbacks};
+  for (int k = 0; k < 4; ++k) {
+    sums[5 + k].add(counts[k]);  // integers: exact
+  }
+  domain.reduce(sums);
+  ContactResult r;
+  r.force_on_tool = Vec3(sums[0].round(), sums[1].round(), sums[2].round());
+  r.energy = sums[3].round();
+  r.friction_work = sums[4].round();
+  r.nodes_in_contact = static_cast<int>(sums[5].round());
+  r.sliding_nodes = static_cast<int>(sums[6].round());
+  r.sticking_nodes = static_cast<int>(sums[7].round());
+  r.projection_fallbacks = static_cast<int>(sums[8].round());
+  return r;
 }
 
 // The penalty contact of every pair into state.f_contact (zeroed here), the tools' reactions and
@@ -62,7 +90,8 @@ void compute_contact_forces(const Model& model, SolutionState& s, double dt) {
                                        .tool_displacement = tool.displacement,
                                        .tool_displacement_increment = tool_step,
                                        .dt = dt};
-    const ContactResult r = compute_penalty_contact(c.pair, s.contacts[k], kinematics, s.f_contact);
+    compute_penalty_contact(c.pair, s.contacts[k], kinematics, s.f_contact);
+    const ContactResult r = global_contact_result(*s.domain, s.contacts[k].shares[0]);
     tool.force += r.force_on_tool;
     tool.nodes_in_contact += r.nodes_in_contact;
     s.contact_spring_energy += r.energy;

@@ -30,7 +30,7 @@ void keep_momentum(const Model& model, SolutionState& s, double dt) {
   const double h_last = 0.5 * s.dt;
   const double h_next = 0.5 * dt;
   // Per node: the energy removed (t[0]) and the kinetic-energy drop (t[1]), summed exactly.
-  const auto sums = sum_exactly<2>(s.v.cols(), [&](long i, double* t) {
+  auto exact = sum_exactly<2>(s.v.cols(), [&](long i, double* t) {
     t[0] = 0.0;
     t[1] = 0.0;
     const double m_new = s.mass[i];
@@ -58,6 +58,8 @@ void keep_momentum(const Model& model, SolutionState& s, double dt) {
       s.omega.col(i) *= r;
     }
   });
+  s.domain->reduce(exact);
+  const auto sums = rounded(exact);
   s.energies.mass_scaling += sums[0];
   s.energies.kinetic -= sums[1];
 }
