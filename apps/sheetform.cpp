@@ -15,6 +15,7 @@
 // (or its stiffness is singular), 1 an internal error.
 #include <omp.h>
 #include <CLI/CLI.hpp>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -108,8 +109,12 @@ int run(const Arguments& args) {
   fs::create_directories(out);
   std::ofstream(out / "case.resolved.toml") << model.output.resolved_case;
   sf::log_info("Results     {}\n", out.string());
-  sf::log_info("Threads     {} (OpenMP, {} cores here)\n\n", omp_get_max_threads(),
-               omp_get_num_procs());
+  const int threads = omp_get_max_threads();
+  const bool crowded = threads > omp_get_num_procs() && std::getenv("OMP_WAIT_POLICY") == nullptr;
+  sf::log_info("Threads     {} (OpenMP, {} cores here){}\n\n", threads, omp_get_num_procs(),
+               crowded ? "; more threads than cores: set OMP_WAIT_POLICY=passive, or waiting "
+                         "threads spin and slow the run"
+                       : "");
   // 4. Run the explicit time loop (and springback when the case asks), or the static analysis.
   sf::RunOptions options;
   options.output_directory = out;

@@ -105,5 +105,11 @@ expect "--search unknown name" 2 "search" -- "$sheetform" run "$demo" -o "$work/
 cp "$work/run/case.resolved.toml" "$work/case/cli_test_resolved.toml"
 expect "resolved case re-reads" 0 "Case is valid" -- "$sheetform" check "$work/case/cli_test_resolved.toml"
 
+# Threads: the count in the banner and the summary; a bad count is bad input.
+expect "threads in the banner" 0 "Threads +2 \(OpenMP" -- \
+  env OMP_WAIT_POLICY=passive "$sheetform" run "$demo" --stroke 0.02 --threads 2 -o "$work/threads"
+expect "threads in summary.json" 0 '"threads": 2' -- cat "$work/threads/summary.json"
+expect "threads 0 refused" 2 "threads" -- "$sheetform" run "$demo" --threads 0 -o "$work/threads0"
+
 echo "$passed passed, $failures failed"
 [ "$failures" -eq 0 ]
