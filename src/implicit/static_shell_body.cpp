@@ -10,7 +10,11 @@
 namespace sf {
 
 StaticShellBody::StaticShellBody(const ShellPart& part, const Matrix3X& x, const ShellState& state)
-    : part_(part), x_(x), state_(state), x_trial_(3, x.cols()) {
+    : part_(part),
+      x_(x),
+      state_(state),
+      x_trial_(3, x.cols()),
+      node_corners_(build_node_corners(part, static_cast<int>(x.cols()))) {
   // The assumed strain's stabilisation must be continuous in the increment for Newton.
   part_.stabilization_unloading = StabilizationUnloading::as_loading;
   if (part_.hourglass_form == HourglassForm::viscous) {
@@ -81,10 +85,13 @@ ShellForceResult StaticShellBody::compute_forces(const Matrix3X& du, const Matri
   }
   // The element takes its strain increments on x_end - du / 2.
   x_trial_ = x_ + (small_strain ? 0.5 : 1.0) * du;  // into the sized buffer: no allocation
-  f.setZero(3, x_.cols());
-  m.setZero(3, x_.cols());
-  // One step of unit length: "velocities" du, dtheta over dt = 1.
-  ShellForceResult r = compute_shell_internal_forces(part_, x_trial_, du, dtheta, 1.0, trial, f, m);
+  f.resize(3, x_.cols());
+  m.resize(3, x_.cols());
+  // One step of unit length: "velocities" du, dtheta over dt = 1; every node's corners summed
+  // into f, m (the scratch and the lists are the body's: a Newton iteration allocates nothing).
+  ShellForceResult r =
+      run_element_pass(part_, ElementInputs{x_trial_, du, dtheta, 1.0}, trial, pass_);
+  gather_corner_forces(node_corners_, pass_.corners, f, m);
   // Drilling springs about the committed normals, anchored at the increment's start: their work
   // over it, 1/2 k (n . dtheta)^2 per node, is part of the body's internal work (without it a
   // drilling rotation's work would be missing from the energy balance).

@@ -60,6 +60,8 @@ class StaticShellBody {
   double drilling_stiffness_ = 0.0;
   double membrane_stiffness_ = 0.0;
   mutable Matrix3X x_trial_;
+  NodeCorners node_corners_;  ///< the part's node-corner lists, built once
+  mutable ElementPass pass_;  ///< the element passes' scratch: sized by the first call
 };
 
 }  // namespace sf
