@@ -6,7 +6,9 @@
 //   sheetform mesh  CASE [-o DIR]   write only the meshes (HDF5 + XDMF, and .msh of each .geo)
 //
 // run takes --threads N (OpenMP; default OMP_NUM_THREADS, else every core): the results are the
-// same bits for any thread count (docs/parallel.md).
+// same bits for any thread count (docs/parallel.md). Started by mpirun (mpirun -np N sheetform
+// run CASE), the ranks share the blank (METIS parts) and give the same bits again; rank 0 prints
+// and writes the results.
 //
 // Each takes --set KEY=VALUE (repeatable): a case-file key overridden before the case is read,
 // e.g. --set blank.parameters.n=32 for a .geo parameter (docs/case-file.md).
@@ -15,10 +17,12 @@
 // (or its stiffness is singular), 1 an internal error.
 #include <omp.h>
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 #include "core/build_info.hpp"
 #include "core/errors.hpp"
@@ -27,6 +31,9 @@
 #include "io/gmsh_reader.hpp"
 #include "model/build_model.hpp"
 #include "model/constraint_assembly.hpp"
+#include "parallel/mpi_domain.hpp"
+#include "parallel/mpi_session.hpp"
+#include "solver/distributed_run.hpp"
 #include "solver/explicit_driver.hpp"
 #include "solver/frame_output.hpp"
 #include "solver/model_report.hpp"
@@ -100,26 +107,82 @@ LoadedCase load(const Arguments& args) {
   return {std::move(config), std::move(model)};
 }
 
-int run(const Arguments& args) {
+// Rank 0 prepares the results folder and keeps the resolved case beside the results; every rank
+// learns whether that worked (a failure met by rank 0 alone must not leave the others waiting).
+void prepare_results_folder(const sf::MpiSession& mpi, const fs::path& out,
+                            const std::string& resolved_case) {
+  std::string problem;
+  if (mpi.rank() == 0) {
+    try {
+      fs::create_directories(out);
+      std::ofstream file(out / "case.resolved.toml");
+      file << resolved_case;
+      if (!file) {
+        problem = "cannot write " + (out / "case.resolved.toml").string();
+      }
+    } catch (const std::exception& e) {
+      problem = e.what();
+    }
+  }
+  problem = mpi.broadcast_from_root(problem);
+  if (!problem.empty()) {
+    throw sf::InputError("results folder " + out.string() + ": " + problem);
+  }
+}
+
+// The share of the blank this rank computes (nullptr: all of it, a serial run).
+std::shared_ptr<sf::Domain> make_domain(const sf::MpiSession& mpi, const sf::Model& model,
+                                        const std::string& case_file) {
+  if (mpi.size() <= 1) {
+    return nullptr;
+  }
+  sf::check_distributable(model, case_file, mpi.size());
+  const sf::ShellPart& part = model.blank.part;
+  try {
+    return std::make_shared<sf::MpiDomain>(part.quads, part.triangles,
+                                           static_cast<int>(model.blank.mesh.nodes.cols()),
+                                           MPI_COMM_WORLD);
+  } catch (const std::invalid_argument& e) {
+    throw sf::InputError(case_file + ": " + e.what());
+  }
+}
+
+void print_parallel_banner(const sf::MpiSession& mpi) {
+  const int threads = omp_get_max_threads();
+  const bool crowded = threads > 1 && threads * mpi.local_size() > omp_get_num_procs() &&
+                       std::getenv("OMP_WAIT_POLICY") == nullptr;
+  const char* advice = crowded ? "; more threads than cores: set OMP_WAIT_POLICY=passive, or "
+                                 "waiting threads spin and slow the run"
+                               : "";
+  const int cores = omp_get_num_procs();
+  if (mpi.size() > 1) {
+    sf::log_info("Ranks       {} (MPI), {} thread{} each (OpenMP; {} core{} for rank 0){}\n\n",
+                 mpi.size(), threads, threads == 1 ? "" : "s", cores, cores == 1 ? "" : "s",
+                 advice);
+    return;
+  }
+  sf::log_info("Threads     {} (OpenMP, {} core{} here){}\n\n", threads, cores,
+               cores == 1 ? "" : "s", advice);
+}
+
+int run(const Arguments& args, const sf::MpiSession& mpi) {
   const LoadedCase loaded = load(args);
   const sf::Model& model = loaded.model;
+  sf::RunOptions options;
+  options.domain = make_domain(mpi, model, loaded.config.file.string());
   sf::print_model(loaded.config, model);
   // 3. Prepare the results folder and keep the resolved case beside the results.
   const fs::path out = output_directory(args, loaded.config);
-  fs::create_directories(out);
-  std::ofstream(out / "case.resolved.toml") << model.output.resolved_case;
+  prepare_results_folder(mpi, out, model.output.resolved_case);
   sf::log_info("Results     {}\n", out.string());
-  const int threads = omp_get_max_threads();
-  const bool crowded = threads > omp_get_num_procs() && std::getenv("OMP_WAIT_POLICY") == nullptr;
-  sf::log_info("Threads     {} (OpenMP, {} cores here){}\n\n", threads, omp_get_num_procs(),
-               crowded ? "; more threads than cores: set OMP_WAIT_POLICY=passive, or waiting "
-                         "threads spin and slow the run"
-                       : "");
+  print_parallel_banner(mpi);
   // 4. Run the explicit time loop (and springback when the case asks), or the static analysis.
-  sf::RunOptions options;
   options.output_directory = out;
   const sf::RunSummary summary = model.analysis.is_static() ? sf::run_static(model, options)
                                                             : sf::run_explicit(model, options);
+  if (mpi.rank() != 0) {
+    return sf::exit_ok;  // rank 0 reports
+  }
   // 5. Report.
   sf::write_run_summary_json(summary, out / "summary.json");
   sf::log_info("\n{}", sf::format_run_summary(summary));
@@ -136,8 +199,11 @@ int check(const Arguments& args) {
   return sf::exit_ok;
 }
 
-int mesh(const Arguments& args) {
+int mesh(const Arguments& args, const sf::MpiSession& mpi) {
   const LoadedCase loaded = load(args);
+  if (mpi.rank() != 0) {
+    return sf::exit_ok;  // rank 0 writes
+  }
   const sf::Model& model = loaded.model;
   sf::print_model(loaded.config, model);
   const fs::path out = output_directory(args, loaded.config);
@@ -170,6 +236,13 @@ int mesh(const Arguments& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::optional<sf::MpiSession> mpi;
+  try {
+    mpi.emplace(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "internal error: MPI: " << e.what() << "\n";
+    return sf::exit_internal_error;
+  }
   CLI::App app{"sheetform: explicit finite-element simulation of sheet metal forming"};
   app.set_version_flag(
       "--version", std::string(sf::build_info::version) + " (" + sf::build_info::git_hash + ")");
@@ -216,34 +289,57 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? sf::exit_ok : sf::exit_input_error;
   }
+  if (mpi->rank() != 0) {  // one rank speaks
+    sf::verbosity() = sf::Verbosity::quiet;
+    sf::warnings_enabled() = false;
+  }
   if (args.threads > 0) {
     omp_set_num_threads(args.threads);  // before gmsh: its session restores this count
+  } else if (mpi->size() > 1 && std::getenv("OMP_NUM_THREADS") == nullptr) {
+    // The ranks on this machine share its cores.
+    omp_set_num_threads(std::max(1, omp_get_num_procs() / std::max(1, mpi->local_size())));
   }
   if (args.quiet) {
     sf::verbosity() = sf::Verbosity::quiet;
-  } else if (args.verbose) {
+  } else if (args.verbose && mpi->rank() == 0) {
     sf::verbosity() = sf::Verbosity::verbose;
   }
+  // Input errors and instabilities are met by every rank together (the same input; the ranks
+  // agree on every failure in the time loop), or by rank 0 alone after the others are done (its
+  // springback, its report), so rank 0 alone reports them. Anything else may be one rank's alone
+  // while the others wait for it: it ends the whole run.
+  const bool speaks = mpi->rank() == 0;
+  // Every rank ends with one barrier, on success and on error alike, so that none exits before
+  // rank 0 has reported (the launcher kills the others when one exits with an error).
   try {
-    if (*run_cmd) {
-      return run(args);
-    }
-    if (*check_cmd) {
-      return check(args);
-    }
-    return mesh(args);
+    const int code = *run_cmd ? run(args, *mpi) : *check_cmd ? check(args) : mesh(args, *mpi);
+    mpi->barrier();
+    return code;
   } catch (const sf::InputError& e) {
-    std::cerr << "error: " << e.what() << "\n";
+    if (speaks) {
+      std::cerr << "error: " << e.what() << "\n";
+    }
+    mpi->barrier();
     return sf::exit_input_error;
   } catch (const sf::InstabilityError& e) {
-    std::cerr << "error: the run went unstable: " << e.what()
-              << "\nThe frames written so far are readable in the results folder.\n";
+    if (speaks) {
+      std::cerr << "error: the run went unstable: " << e.what()
+                << "\nThe frames written so far are readable in the results folder.\n";
+    }
+    mpi->barrier();
     return sf::exit_unstable;
   } catch (const sf::ConvergenceError& e) {
-    std::cerr << "error: the static step did not converge: " << e.what()
-              << "\nThe frames written so far are readable in the results folder.\n";
+    if (speaks) {
+      std::cerr << "error: the static step did not converge: " << e.what()
+                << "\nThe frames written so far are readable in the results folder.\n";
+    }
+    mpi->barrier();
     return sf::exit_not_converged;
   } catch (const std::exception& e) {
+    if (mpi->size() > 1) {
+      std::cerr << "internal error (MPI rank " << mpi->rank() << "): " << e.what() << "\n";
+      mpi->abort(sf::exit_internal_error);
+    }
     std::cerr << "internal error: " << e.what() << "\n";
     return sf::exit_internal_error;
   }

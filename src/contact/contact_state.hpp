@@ -29,6 +29,7 @@ struct alignas(64) ContactShare {
   std::string failure;        ///< what it threw
 
   void reset() { *this = ContactShare(); }
+  int first_failing_node() const { return thin_node < failed_node ? thin_node : failed_node; }
 };
 
 /// The state of one ContactPair over a run. Sized by compute_penalty_contact on its first call
@@ -42,6 +43,9 @@ struct ContactState {
   /// only with friction).
   Matrix3X stick_force;
   std::vector<ContactShare> shares;  ///< one per thread (scratch)
+  /// One per thread: the sums of the ghost nodes (ContactKinematics::ghost_nodes), computed for
+  /// their forces and then dropped, their owner counting them (scratch).
+  std::vector<ContactShare> ghost_shares;
 };
 
 }  // namespace sf

@@ -142,13 +142,15 @@ namespace {
 // Blank nodes per unit of work the threads take (dynamically: contact nodes cluster).
 constexpr int kContactBlock = 256;
 
-// Nodes [begin, end) into `share`. The half thickness is checked here, where the node is read,
-// and a failure recorded, not thrown (threads must not throw out of a parallel region).
+// The nodes at list positions [begin, end) into `share` (list empty: nodes begin..end-1). The
+// half thickness is checked here, where the node is read, and a failure recorded, not thrown
+// (threads must not throw out of a parallel region).
 void contact_block(const ContactPair& pair, ContactState& state,
-                   const ContactKinematics& kinematics, int begin, int end, ContactShare& share,
-                   Matrix3X& f_contact) {
+                   const ContactKinematics& kinematics, std::span<const int> list, int begin,
+                   int end, ContactShare& share, Matrix3X& f_contact) {
   const bool friction = pair.friction.active();
-  for (int i = begin; i < end; ++i) {
+  for (int k = begin; k < end; ++k) {
+    const int i = list.empty() ? k : list[static_cast<std::size_t>(k)];
     const double h = kinematics.half_thickness[i];
     if (!(pair.cutoff > h)) {
       if (i < share.thin_node) {
@@ -232,12 +234,21 @@ ContactResult compute_penalty_contact(const ContactPair& pair, ContactState& sta
         tool_name));
   }
   size_state(pair, state, n, friction);
+  // Counted nodes first (all, or the owned ones), then the ghost nodes into shares dropped after.
+  const bool subset = !kinematics.owned_nodes.empty() || !kinematics.ghost_nodes.empty();
+  const std::span<const int> counted = subset ? kinematics.owned_nodes : std::span<const int>();
+  const std::span<const int> ghosts = subset ? kinematics.ghost_nodes : std::span<const int>();
+  const int n_counted = subset ? static_cast<int>(counted.size()) : n;
+  const int n_ghosts = static_cast<int>(ghosts.size());
+  const int counted_blocks = (n_counted + kContactBlock - 1) / kContactBlock;
+  const int blocks = counted_blocks + (n_ghosts + kContactBlock - 1) / kContactBlock;
   // A few blocks on one thread: a parallel region costs microseconds.
-  const int threads = n >= 2 * kContactBlock ? omp_get_max_threads() : 1;
-  if (state.shares.size() < static_cast<std::size_t>(threads)) {
-    state.shares.resize(static_cast<std::size_t>(threads));
+  const int threads = n_counted + n_ghosts >= 2 * kContactBlock ? omp_get_max_threads() : 1;
+  for (std::vector<ContactShare>* shares : {&state.shares, &state.ghost_shares}) {
+    if (shares->size() < static_cast<std::size_t>(threads)) {
+      shares->resize(static_cast<std::size_t>(threads));
+    }
   }
-  const int blocks = (n + kContactBlock - 1) / kContactBlock;
   int used = 1;
   // Each node writes only its own columns and cache entries; the sums are exact, so the dynamic
   // share-out of the blocks cannot change a bit of the result.
@@ -248,17 +259,24 @@ ContactResult compute_penalty_contact(const ContactPair& pair, ContactState& sta
       used = omp_get_num_threads();
     }
     ContactShare& share = state.shares[static_cast<std::size_t>(t)];
+    ContactShare& ghost_share = state.ghost_shares[static_cast<std::size_t>(t)];
     share.reset();
+    ghost_share.reset();
 #pragma omp for schedule(dynamic, 1)
     for (int b = 0; b < blocks; ++b) {
-      const int begin = b * kContactBlock;
+      const bool is_ghost = b >= counted_blocks;
+      const std::span<const int> list = is_ghost ? ghosts : counted;
+      const int size = is_ghost ? n_ghosts : n_counted;
+      const int begin = (is_ghost ? b - counted_blocks : b) * kContactBlock;
+      ContactShare& into = is_ghost ? ghost_share : share;
       try {
-        contact_block(pair, state, kinematics, begin, std::min(n, begin + kContactBlock), share,
-                      f_contact);
+        contact_block(pair, state, kinematics, list, begin, std::min(size, begin + kContactBlock),
+                      into, f_contact);
       } catch (const std::exception& error) {
-        if (begin < share.failed_node) {
-          share.failed_node = begin;
-          share.failure = error.what();
+        const int node = list.empty() ? begin : list[static_cast<std::size_t>(begin)];
+        if (node < into.failed_node) {
+          into.failed_node = node;
+          into.failure = error.what();
         }
       }
     }

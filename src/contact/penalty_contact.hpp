@@ -3,6 +3,7 @@
 // surface: two-sided, with the half-thickness offset, the normal along the orthogonal or the
 // interpolated projection, and regularised Coulomb friction.
 #include <memory>
+#include <span>
 
 #include "contact/contact_search.hpp"
 #include "contact/contact_state.hpp"
@@ -57,6 +58,11 @@ struct ContactKinematics {
   Vec3 tool_displacement;            ///< the tool's translation now, mm
   Vec3 tool_displacement_increment;  ///< the tool's translation over the step, mm
   double dt = 0;                     ///< the step, s (0: no relative motion, e.g. the first call)
+  /// The nodes to compute and count, ascending (an MPI rank's owned nodes); empty: every node.
+  std::span<const int> owned_nodes = {};
+  /// Nodes whose forces are computed but whose sums and failures are left to their owner
+  /// (an MPI rank's ghost nodes), ascending; used only with owned_nodes.
+  std::span<const int> ghost_nodes = {};
 };
 
 /// What one call of `compute_penalty_contact` did.
@@ -70,7 +76,8 @@ struct ContactResult {
   int projection_fallbacks = 0;  ///< interpolated projections that fell back to the orthogonal
 };
 
-/// For every blank node i: queries the surface at p = x_i - tool_displacement (reference frame)
+/// For every blank node i (or, with kinematics.owned_nodes / ghost_nodes, those nodes, the sums
+/// over the owned ones only): queries the surface at p = x_i - tool_displacement (reference frame)
 /// within pair.cutoff (search->find_closest_for_node with the state's search cache); D = the signed
 /// distance (orthogonal) or the interpolated projection's D, n the matching normal; gap g = D -
 /// half_thickness[i] (mm); if g < 0 and D > -half_thickness[i] - cutoff (nodes that passed far

@@ -7,4 +7,9 @@ Verbosity& verbosity() {
   return v;
 }
 
+bool& warnings_enabled() {
+  static bool enabled = true;
+  return enabled;
+}
+
 }  // namespace sf

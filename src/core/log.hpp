@@ -12,6 +12,10 @@ enum class Verbosity { quiet = 0, normal = 1, verbose = 2 };
 /// The process-wide verbosity (set once by the command line).
 Verbosity& verbosity();
 
+/// Whether warnings are printed: true, except on the ranks of a distributed run other than rank
+/// 0 (one rank speaks, once).
+bool& warnings_enabled();
+
 template <typename... Args>
 void log_info(fmt::format_string<Args...> f, Args&&... args) {
   if (verbosity() >= Verbosity::normal) {
@@ -31,6 +35,9 @@ void log_verbose(fmt::format_string<Args...> f, Args&&... args) {
 
 template <typename... Args>
 void log_warning(fmt::format_string<Args...> f, Args&&... args) {
+  if (!warnings_enabled()) {
+    return;
+  }
   fmt::print(stderr, "warning: ");
   fmt::print(stderr, f, std::forward<Args>(args)...);
 }

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <stdexcept>
+#include <string>
 
 namespace sf {
 
@@ -10,22 +11,20 @@ namespace {
 constexpr int kMinParallelNodes = 1024;
 }  // namespace
 
-NodeCorners build_node_corners(const ShellPart& part, int n_nodes) {
-  const int n_quads = static_cast<int>(part.quads.cols());
-  const int n_triangles = static_cast<int>(part.triangles.cols());
+NodeCorners build_node_corners(std::span<const int> quads, std::span<const int> triangles,
+                               int n_nodes) {
   NodeCorners list;
-  list.n_quads = n_quads;
+  list.n_quads = static_cast<int>(quads.size() / 4);
   list.offsets.assign(static_cast<std::size_t>(n_nodes) + 1, 0);
-  auto node_of_slot = [&](int slot) {
-    const int quad_slots = 4 * n_quads;
-    return slot < quad_slots ? part.quads(slot % 4, slot / 4)
-                             : part.triangles((slot - quad_slots) % 3, (slot - quad_slots) / 3);
+  auto node_of_slot = [&](std::size_t slot) {
+    return slot < quads.size() ? quads[slot] : triangles[slot - quads.size()];
   };
-  const int n_slots = 4 * n_quads + 3 * n_triangles;
-  for (int slot = 0; slot < n_slots; ++slot) {
+  const std::size_t n_slots = quads.size() + triangles.size();
+  for (std::size_t slot = 0; slot < n_slots; ++slot) {
     const int node = node_of_slot(slot);
     if (node < 0 || node >= n_nodes) {
-      throw std::invalid_argument("build_node_corners: element node out of range");
+      throw std::invalid_argument("build_node_corners: element node " + std::to_string(node) +
+                                  " outside [0, " + std::to_string(n_nodes) + ")");
     }
     ++list.offsets[static_cast<std::size_t>(node) + 1];
   }
@@ -34,12 +33,19 @@ NodeCorners build_node_corners(const ShellPart& part, int n_nodes) {
   }
   // Filled in ascending slot order, so each node's slots come out ascending.
   std::vector<int> next(list.offsets.begin(), list.offsets.end() - 1);
-  list.slots.resize(static_cast<std::size_t>(n_slots));
-  for (int slot = 0; slot < n_slots; ++slot) {
+  list.slots.resize(n_slots);
+  for (std::size_t slot = 0; slot < n_slots; ++slot) {
     list.slots[static_cast<std::size_t>(next[static_cast<std::size_t>(node_of_slot(slot))]++)] =
-        slot;
+        static_cast<int>(slot);
   }
   return list;
+}
+
+NodeCorners build_node_corners(const ShellPart& part, int n_nodes) {
+  return build_node_corners(
+      std::span<const int>(part.quads.data(), static_cast<std::size_t>(part.quads.size())),
+      std::span<const int>(part.triangles.data(), static_cast<std::size_t>(part.triangles.size())),
+      n_nodes);
 }
 
 void gather_corner_forces(const NodeCorners& nodes, std::span<const double> corners, Matrix3X& f,

@@ -59,6 +59,12 @@ struct NodeCorners {
   int node_count() const { return offsets.empty() ? 0 : static_cast<int>(offsets.size()) - 1; }
 };
 
+/// The lists of a blank given as its connectivity: quads (4 node ids per quad) then triangles
+/// (3 per triangle), 0-based, so that slot s's node is entry s of the quads followed by the
+/// triangles. Throws std::invalid_argument when a node id is outside [0, n_nodes).
+NodeCorners build_node_corners(std::span<const int> quads, std::span<const int> triangles,
+                               int n_nodes);
+/// The same for a part (ShellPart::quads and triangles).
 NodeCorners build_node_corners(const ShellPart& part, int n_nodes);
 
 /// f.col(i) and m.col(i) = the sum of node i's corners' forces and moments (0 + c1 + c2 + ...,

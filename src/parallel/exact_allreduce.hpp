@@ -15,6 +15,6 @@ namespace sf {
 /// with the same number of sums). At most kMaxExactAllreduce sums per call; no allocation.
 void allreduce_exact(std::span<ExactSum> sums, MPI_Comm comm);
 
-inline constexpr int kMaxExactAllreduce = 16;
+inline constexpr int kMaxExactAllreduce = 64;
 
 }  // namespace sf

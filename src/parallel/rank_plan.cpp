@@ -22,7 +22,7 @@ struct NodeRanks {
   }
 };
 
-std::span<const int> corners_at(const NodeCornerLists& nc, int node) {
+std::span<const int> corners_at(const NodeCorners& nc, int node) {
   const auto n = static_cast<std::size_t>(node);
   return std::span<const int>(nc.slots).subspan(
       static_cast<std::size_t>(nc.offsets[n]),
@@ -47,25 +47,7 @@ void check_partition(const BlankTopology& t, std::span<const int> part, int rank
   }
 }
 
-// Counting sort of the slots by node: a pass in ascending slot order keeps each list ascending.
-NodeCornerLists unchecked_node_corners(const BlankTopology& t) {
-  NodeCornerLists nc;
-  nc.offsets.assign(static_cast<std::size_t>(t.n_nodes) + 1, 0);
-  for (int s = 0; s < t.n_corners(); ++s) {
-    ++nc.offsets[static_cast<std::size_t>(t.node_of_slot(s)) + 1];
-  }
-  for (std::size_t n = 0; n < static_cast<std::size_t>(t.n_nodes); ++n) {
-    nc.offsets[n + 1] += nc.offsets[n];
-  }
-  nc.slots.resize(static_cast<std::size_t>(t.n_corners()));
-  std::vector<int> next(nc.offsets.begin(), nc.offsets.end() - 1);
-  for (int s = 0; s < t.n_corners(); ++s) {
-    nc.slots[static_cast<std::size_t>(next[static_cast<std::size_t>(t.node_of_slot(s))]++)] = s;
-  }
-  return nc;
-}
-
-NodeRanks node_ranks(const BlankTopology& t, const NodeCornerLists& nc, std::span<const int> part) {
+NodeRanks node_ranks(const BlankTopology& t, const NodeCorners& nc, std::span<const int> part) {
   NodeRanks nr;
   nr.offsets.reserve(static_cast<std::size_t>(t.n_nodes) + 1);
   nr.offsets.push_back(0);
@@ -170,7 +152,7 @@ std::vector<int> collect_neighbours(RankPlan& plan, const BlankTopology& t, cons
   return receive_index;
 }
 
-void collect_gather_lists(RankPlan& plan, const BlankTopology& t, const NodeCornerLists& nc,
+void collect_gather_lists(RankPlan& plan, const BlankTopology& t, const NodeCorners& nc,
                           std::span<const int> part, const std::vector<int>& receive_index) {
   plan.gather_offsets.reserve(plan.nodes.size() + 1);
   plan.gather_offsets.push_back(0);
@@ -185,16 +167,16 @@ void collect_gather_lists(RankPlan& plan, const BlankTopology& t, const NodeCorn
 
 }  // namespace
 
-NodeCornerLists node_corner_lists(const BlankTopology& t) {
+NodeCorners node_corner_lists(const BlankTopology& t) {
   check_topology(t);
-  return unchecked_node_corners(t);
+  return build_node_corners(t.quads, t.triangles, t.n_nodes);
 }
 
 RankPlan build_rank_plan(const BlankTopology& t, std::span<const int> part_of_element, int rank,
                          int ranks) {
   check_topology(t);
   check_partition(t, part_of_element, rank, ranks);
-  const NodeCornerLists nc = unchecked_node_corners(t);
+  const NodeCorners nc = build_node_corners(t.quads, t.triangles, t.n_nodes);
   const NodeRanks nr = node_ranks(t, nc, part_of_element);
   RankPlan plan;
   plan.rank = rank;

@@ -13,19 +13,14 @@
 #include <span>
 #include <vector>
 
+#include "element/corner_forces.hpp"
 #include "parallel/mesh_partition.hpp"
 
 namespace sf {
 
-/// Every node's corners in serial assembly order (CSR): node n's global corner slots,
-/// ascending, at slots[offsets[n], offsets[n+1]).
-struct NodeCornerLists {
-  std::vector<int> offsets;  ///< n_nodes + 1
-  std::vector<int> slots;    ///< n_corners
-};
-
-/// The serial node-to-corner lists of the whole blank.
-NodeCornerLists node_corner_lists(const BlankTopology& t);
+/// The serial node-to-corner lists of the whole blank (element/corner_forces.hpp: node n's global
+/// corner slots, ascending, at slots[offsets[n], offsets[n+1])), after check_topology.
+NodeCorners node_corner_lists(const BlankTopology& t);
 
 /// A rank that shares at least one node with this one.
 struct RankNeighbour {

@@ -11,11 +11,10 @@
 namespace sf {
 
 double kinetic_energy(const Model& model, const SolutionState& s) {
-  auto sums = sum_exactly<1>(s.v.cols(), [&](long i, double* t) {
+  const auto sums = sum_over_nodes<1>(*s.domain, s.v.cols(), [&](long i, double* t) {
     t[0] = s.mass[i] * s.v.col(i).squaredNorm() +
            s.rotational_inertia[i] * s.omega.col(i).squaredNorm();
   });
-  s.domain->reduce(sums);
   return 0.5 * sums[0].round();
 }
 
@@ -68,9 +67,9 @@ inline void whole_step_kinetic_terms(const Model& model, const SolutionState& s,
 }  // namespace
 
 KineticEnergy whole_step_kinetic_energy(const Model& model, const SolutionState& s, double dt) {
-  auto exact = sum_exactly<2>(
-      s.v.cols(), [&](long i, double* t) { whole_step_kinetic_terms(model, s, i, 0.5 * dt, t); });
-  s.domain->reduce(exact);
+  const auto exact = sum_over_nodes<2>(*s.domain, s.v.cols(), [&](long i, double* t) {
+    whole_step_kinetic_terms(model, s, i, 0.5 * dt, t);
+  });
   const auto sums = rounded(exact);
   return {.kinetic = 0.5 * sums[0], .half_kick = 0.5 * sums[1]};
 }
@@ -102,7 +101,7 @@ struct StepNodeSums {
 };
 
 StepNodeSums sum_over_nodes(const Model& model, const SolutionState& s, double dt) {
-  auto exact = sum_exactly<6>(s.x.cols(), [&](long i, double* t) {
+  const auto exact = sum_over_nodes<6>(*s.domain, s.x.cols(), [&](long i, double* t) {
     const auto v = s.v.col(i);
     const auto omega = s.omega.col(i);
     t[0] = 0.5 * dt *
@@ -115,7 +114,6 @@ StepNodeSums sum_over_nodes(const Model& model, const SolutionState& s, double d
     t[3] = s.mass[i] * v.squaredNorm() + s.rotational_inertia[i] * omega.squaredNorm();
     whole_step_kinetic_terms(model, s, i, 0.5 * dt, t + 4);
   });
-  s.domain->reduce(exact);
   const auto sums = rounded(exact);
   return {.element_work = sums[0],
           .load_work = sums[2],

@@ -12,12 +12,17 @@
 #include "solver/output_schedule.hpp"
 #include "solver/progress.hpp"
 #include "solver/springback.hpp"
+#include "solver/state_gather.hpp"
 
 namespace sf {
 
 RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionState* final_state) {
   const auto wall_start = std::chrono::steady_clock::now();
   SolutionState s = make_initial_state(model);
+  if (options.domain) {
+    s.domain = options.domain;
+  }
+  const bool root = s.domain->is_root();
   for (std::size_t t = 0; t < s.tools.size(); ++t) {
     s.tools[t].displacement = model.tools[t].motion.displacement(0.0);
     s.tools[t].travel = model.tools[t].motion.travel(0.0);
@@ -25,10 +30,13 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
   }
 
   std::unique_ptr<FrameOutput> output;
-  if (options.write_results) {
+  if (options.write_results && root) {
     output = std::make_unique<FrameOutput>(model, options.output_directory);
   }
   compute_forces(model, s, 0.0);
+  if (options.write_results) {
+    gather_state_to_root(s);
+  }
   if (output) {
     output->write_frame(model, s);
     output->append_history(model, s);
@@ -94,6 +102,9 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
       // time step, energies).
       const PhaseTimer output_timer(s.times.output);
       const OutputSchedule::Due due = schedule.after_step(s.time, s.cycle);
+      if (options.write_results && (due.history || due.frame)) {
+        gather_state_to_root(s);  // every process: the schedule is the same on all
+      }
       if (output && due.history) {
         output->append_history(model, s);
       }
@@ -107,11 +118,16 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
     // Keep what a user needs to see the failure: the history up to the stop and, when the nodes
     // still have finite positions, one last frame of the state at the stop (for a NaN, the state
     // of the last completed cycle; for an inverted element or an energy blow-up, the offending
-    // configuration). The frames written before stay as they are.
+    // configuration). The frames written before stay as they are. Every process stops here
+    // together (the failures are agreed), so the state can be gathered.
+    if (options.write_results) {
+      gather_state_to_root(s);
+    }
     const std::string last_frame =
         output ? output->write_stop_state(model, s, last_frame_time) : std::string();
     throw InstabilityError(error.what() + last_frame);
   }
+  gather_state_to_root(s);
   if (output) {
     output->append_history(model, s);
     output->flush();
@@ -120,6 +136,14 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
   const double wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   RunSummary summary = make_run_summary(model, s, wall_seconds);
+  summary.ranks = s.domain->processes();
+  const PhaseTimes& t = s.times;
+  const double mine[5] = {t.elements, t.contact, t.time_step, t.nodal, t.output};
+  const std::vector<double> per_rank = s.domain->gather_values(mine);
+  for (std::size_t r = 0; r + 5 <= per_rank.size(); r += 5) {
+    summary.phase_seconds_per_rank.push_back(
+        {per_rank[r], per_rank[r + 1], per_rank[r + 2], per_rank[r + 3], per_rank[r + 4]});
+  }
   if (output) {
     for (const SearchAuditRecord& a : output->search_audits().records()) {
       summary.search_audits.push_back({a.tool, a.search, a.audits, a.last.misses,
@@ -127,7 +151,15 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
                                        a.total_misses, a.max_gap_error});
     }
   }
-  // The forming summary above is the state with the tools in place; springback goes on from it.
+  // The forming summary above is the state with the tools in place; springback goes on from it,
+  // on the output process alone in a distributed run (the drivers allow only the implicit
+  // springback there): it has the whole state, and computes it as a serial run.
+  if (model.springback && s.domain->processes() > 1) {
+    if (!root) {
+      return summary;
+    }
+    s.domain = std::make_shared<SerialDomain>();
+  }
   if (model.springback) {
     summary.springback = run_springback(model, s, output.get());
     if (output) {

@@ -2,6 +2,7 @@
 // The explicit central-difference time loop.
 #include <filesystem>
 #include <functional>
+#include <memory>
 
 #include "model/model.hpp"
 #include "solver/explicit_step.hpp"
@@ -13,6 +14,9 @@ namespace sf {
 struct RunOptions {
   std::filesystem::path output_directory;  ///< where results.h5 and the .xdmf files go
   bool write_results = true;
+  /// The share of the blank this process computes (nullptr: all of it, serial). A distributed
+  /// run's output process (Domain::is_root) writes the results; the others write nothing.
+  std::shared_ptr<Domain> domain;
 };
 
 /// Runs the model from time 0 to its end time, writing frames and history as it goes, then the

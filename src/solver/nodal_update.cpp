@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <climits>
 #include <cmath>
 
 #include "core/errors.hpp"
@@ -32,26 +34,52 @@ bool add_force_kicks(const Model& model, SolutionState& s, double weight) {
   return finite;
 }
 
-[[noreturn]] void throw_non_finite(const Model& model, const SolutionState& s) {
-  for (Eigen::Index i = 0; i < s.v.cols(); ++i) {
-    if (!s.v.col(i).allFinite() || !s.omega.col(i).allFinite()) {
-      throw InstabilityError(fmt::format(
-          "non-finite velocity at blank node {} (gmsh node {}) at t = {:.6e} s, cycle {}; "
-          "forces there: internal ({}, {}, {}) N, contact ({}, {}, {}) N",
-          i, model.blank.mesh.gmsh_node_tags[static_cast<std::size_t>(i)], s.time, s.cycle,
-          s.f_int(0, i), s.f_int(1, i), s.f_int(2, i), s.f_contact(0, i), s.f_contact(1, i),
-          s.f_contact(2, i)));
+// The lowest node this process keeps (owned or ghost: every holder of a node has its bits) whose
+// velocity is not finite, and its message; none if all are finite.
+PhaseError find_non_finite(const Model& model, const SolutionState& s) {
+  PhaseError found;
+  auto check = [&](Eigen::Index i) {
+    if (i < found.key && (!s.v.col(i).allFinite() || !s.omega.col(i).allFinite())) {
+      found = {
+          PhaseError::Kind::instability, static_cast<long>(i),
+          fmt::format("non-finite velocity at blank node {} (gmsh node {}) at t = {:.6e} s, "
+                      "cycle {}; forces there: internal ({}, {}, {}) N, contact ({}, {}, {}) N",
+                      i, model.blank.mesh.gmsh_node_tags[static_cast<std::size_t>(i)], s.time,
+                      s.cycle, s.f_int(0, i), s.f_int(1, i), s.f_int(2, i), s.f_contact(0, i),
+                      s.f_contact(1, i), s.f_contact(2, i))};
+    }
+  };
+  const std::span<const int> owned = s.domain->owned_nodes();
+  if (owned.empty()) {
+    for (Eigen::Index i = 0; i < s.v.cols() && !found.failed(); ++i) {
+      check(i);
+    }
+    if (!found.failed()) {  // every component finite, their sum not: overflow
+      found = {PhaseError::Kind::instability, LONG_MAX - 1,
+               fmt::format("non-finite state at t = {:.6e} s, cycle {}", s.time, s.cycle)};
+    }
+    return found;
+  }
+  for (const std::span<const int> nodes : {owned, s.domain->ghost_nodes()}) {
+    for (const int i : nodes) {
+      check(i);
     }
   }
-  throw InstabilityError(
-      fmt::format("non-finite state at t = {:.6e} s, cycle {}", s.time, s.cycle));
+  return found;
 }
 
 }  // namespace
 
 void update_velocities(const Model& model, SolutionState& s, double weight) {
+  // Collective in a distributed run: every process learns whether one of them met a non-finite
+  // velocity (at a node another process does not keep, it would not see it).
+  PhaseError failure;
   if (!add_force_kicks(model, s, weight)) {
-    throw_non_finite(model, s);
+    failure = find_non_finite(model, s);
+  }
+  failure = s.domain->agree(std::move(failure));
+  if (failure.failed()) {
+    throw InstabilityError(failure.message);
   }
 }
 
@@ -61,7 +89,12 @@ void update_velocities(const Model& model, SolutionState& s, double weight) {
 // difference). Returns the work (N mm) of the reactions that do so over the step: reaction = m
 // (v_prescribed - v_free) / weight (the rotational inertia for a rotation), times v_prescribed dt.
 double apply_velocity_conditions(const Model& model, SolutionState& s, double weight, double dt) {
-  double work = 0.0;
+  if (model.prescribed_motions.empty()) {
+    return 0.0;  // the same on every process: no reduction needed
+  }
+  // Summed exactly over the nodes this process counts, then over the processes.
+  const std::span<const int> owned = s.domain->owned_nodes();
+  ExactSum work;
   const double t0 = s.time;
   const NodeFrames& frames = model.constraints.frames;
   for (const PrescribedMotion& p : model.prescribed_motions) {
@@ -84,11 +117,14 @@ double apply_velocity_conditions(const Model& model, SolutionState& s, double we
         free = axis.dot(field.col(node));
         field.col(node) += (value - free) * axis;
       }
-      const double reaction = mass[node] * (value - free) / weight;
-      work += reaction * value * dt;
+      if (owned.empty() || std::binary_search(owned.begin(), owned.end(), node)) {
+        const double reaction = mass[node] * (value - free) / weight;
+        work.add(reaction * value * dt);
+      }
     }
   }
-  return work;
+  s.domain->reduce(std::span<ExactSum>(&work, 1));
+  return work.round();
 }
 
 void update_positions(SolutionState& s, double dt) {

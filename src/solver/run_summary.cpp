@@ -265,8 +265,9 @@ std::string format_run_summary(const RunSummary& r) {
     add(fmt::format("  end time            {:.6e} {}", r.end_time, u.time));
     add(fmt::format(
         "  wall time           {:.2f} s ({:.0f} ns per element-cycle, {} elements, "
-        "{} thread{})",
-        r.wall_seconds, r.ns_per_element_cycle, r.elements, r.threads, r.threads == 1 ? "" : "s"));
+        "{} thread{}{})",
+        r.wall_seconds, r.ns_per_element_cycle, r.elements, r.threads, r.threads == 1 ? "" : "s",
+        r.ranks == 1 ? std::string() : fmt::format(" x {} MPI ranks", r.ranks)));
     const RunSummary::PhaseCosts& p = r.phase_ns;
     add(
         fmt::format("  per element-cycle   elements {:.0f}, contact {:.0f}, time step {:.0f}, "
@@ -348,6 +349,19 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
   j["elements"] = r.elements;
   j["nodes"] = r.nodes;
   j["threads"] = r.threads;
+  j["ranks"] = r.ranks;
+  if (!r.phase_seconds_per_rank.empty()) {  // {phase: [s on rank 0, rank 1, ...]}
+    const char* names[5] = {"elements", "contact", "time_step", "nodal", "output"};
+    nlohmann::json per_rank = nlohmann::json::object();
+    for (std::size_t k = 0; k < 5; ++k) {
+      nlohmann::json seconds = nlohmann::json::array();
+      for (const auto& t : r.phase_seconds_per_rank) {
+        seconds.push_back(t[k]);
+      }
+      per_rank[names[k]] = seconds;
+    }
+    j["phase_seconds_per_rank"] = per_rank;
+  }
   j["energy_Nmm"] = {{"kinetic", r.energies.kinetic},
                      {"internal", r.energies.internal},
                      {"hourglass", r.energies.hourglass},

@@ -1,6 +1,7 @@
 #pragma once
 // What a finished run reports: printed at the end and written as summary.json beside the results,
 // for users and for the regression suite.
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -72,6 +73,10 @@ struct RunSummary {
   int elements = 0;
   int nodes = 0;
   int threads = 1;  ///< OpenMP threads the run used (sheetform run --threads)
+  int ranks = 1;    ///< MPI ranks sharing the blank (mpirun -np)
+  /// s, each rank's wall time per phase (PhaseTimes: elements, contact, time step, nodal,
+  /// output), rank 0 first: the load balance of a distributed run
+  std::vector<std::array<double, 5>> phase_seconds_per_rank;
   Energies energies;
   double peak_kinetic_ratio = 0.0;   ///< largest kinetic/internal after the first tenth
   double physical_mass = 0.0;        ///< tonne, the blank's mass before scaling

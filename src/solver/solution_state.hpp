@@ -86,6 +86,7 @@ struct SolutionState {
   /// One per Model::contacts: the search caches, distance bounds and stick forces (sized by the
   /// first contact call).
   std::vector<ContactState> contacts;
+  std::vector<ExactSum> contact_sums;  ///< scratch: every pair's exact sums of a contact call
   /// Springback by dynamic relaxation: the contact is off, and the forces the tools held the
   /// blank with act as these nodal loads (released over time) besides the model's own.
   bool contact_off = false;

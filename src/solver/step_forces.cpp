@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <chrono>
+#include <climits>
 
 #include "core/errors.hpp"
 #include "model/external_loads.hpp"
@@ -16,45 +17,98 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// The failure of this process's phase (none if `body` returns), typed for the agreement.
+template <typename Body>
+PhaseError phase_error_of(long key_if_unknown, Body&& body) {
+  try {
+    body();
+    return {};
+  } catch (const InputError& e) {
+    return {PhaseError::Kind::input, key_if_unknown, e.what()};
+  } catch (const InstabilityError& e) {
+    return {PhaseError::Kind::instability, key_if_unknown, e.what()};
+  } catch (const std::exception& e) {
+    return {PhaseError::Kind::internal, key_if_unknown, e.what()};
+  }
+}
+
+// Every process stops together with the failure they agree on, thrown as its own kind.
+// `failures` is the number of processes that failed, summed exactly with the phase's other sums
+// (so that a phase without failures needs no message of its own): the agreement on which failure
+// to report is a collective call made only when some process failed.
+void throw_agreed(Domain& domain, const ExactSum& failures, PhaseError local) {
+  if (failures.round() == 0.0) {
+    return;
+  }
+  const PhaseError e = domain.agree(std::move(local));
+  switch (e.kind) {
+    case PhaseError::Kind::none:
+      return;
+    case PhaseError::Kind::input:
+      throw InputError(e.message);
+    case PhaseError::Kind::instability:
+      throw InstabilityError(e.message);
+    case PhaseError::Kind::internal:
+      throw std::runtime_error(e.message);
+  }
+}
+
 // The elements' internal forces and moments into state.f_int, m_int: each element into its
 // corners, then each node sums its corners in a fixed order (element/corner_forces.hpp).
 ShellForceResult compute_internal_forces(const Model& model, SolutionState& s, double dt) {
-  try {
-    // The elements' critical steps at x come with the forces (the next step's bound).
+  // The elements' critical steps at x come with the forces (the next step's bound). A failing
+  // pass reports its lowest failing element, and every process agrees on the lowest of all.
+  PhaseError failure = phase_error_of(LONG_MAX, [&] {
     run_element_pass(model.blank.part, ElementInputs{s.x, s.v, s.omega, dt}, s.shell,
                      s.element_pass, s.scaling.element_dt, s.domain->element_runs());
-    s.domain->assemble_corners(model.blank.node_corners, s.element_pass.corners, s.f_int, s.m_int);
-    // The pass's exact works (left in its first share) made global, then rounded once.
-    const ElementOutputs& total = s.element_pass.shares[0];
-    ExactSum works[3] = {total.internal_work, total.plastic_work, total.hourglass_work};
-    s.domain->reduce(works);
-    const ShellForceResult r{.hourglass_work = works[2].round(),
-                             .internal_work = works[0].round(),
-                             .plastic_work = works[1].round()};
-    s.element_dt_cycle = s.cycle;
-    return r;
-  } catch (const InstabilityError& e) {
-    throw InstabilityError(fmt::format("{} at t = {:.6e} s, cycle {}", e.what(), s.time, s.cycle));
+  });
+  if (failure.failed()) {
+    failure.key = s.element_pass.shares[0].failure.element;
+    if (failure.kind == PhaseError::Kind::instability) {
+      failure.message =
+          fmt::format("{} at t = {:.6e} s, cycle {}", failure.message, s.time, s.cycle);
+    }
   }
+  // A failed pass's corners are assembled too (whatever they hold), as the other processes'
+  // exchange expects them; nothing uses them, as the failure is thrown next.
+  s.domain->assemble_corners(model.blank.node_corners, s.element_pass.corners, s.f_int, s.m_int);
+  // The pass's exact works (left in its first share) made global, then rounded once.
+  const ElementOutputs& total = s.element_pass.shares[0];
+  ExactSum sums[4] = {total.internal_work, total.plastic_work, total.hourglass_work};
+  sums[3].add(failure.failed() ? 1.0 : 0.0);
+  s.domain->reduce(sums);
+  throw_agreed(*s.domain, sums[3], std::move(failure));
+  const ShellForceResult r{.hourglass_work = sums[2].round(),
+                           .internal_work = sums[0].round(),
+                           .plastic_work = sums[1].round()};
+  s.element_dt_cycle = s.cycle;
+  return r;
 }
 
 // The contact offset of every node: half the mean thickness of the elements around it (mm).
 void update_contact_offsets(const Model& model, SolutionState& s) {
-  gather_half_thickness(model.blank.node_corners, s.shell.thickness,
-                        model.blank.inverse_element_count, s.half_thickness);
+  s.domain->assemble_half_thickness(model.blank.node_corners, s.shell.thickness,
+                                    model.blank.inverse_element_count, s.half_thickness);
 }
 
-// A contact call's exact sums and counts (left in the pair's first share) made global, then
-// rounded once.
-ContactResult global_contact_result(Domain& domain, const ContactShare& total) {
-  ExactSum sums[9] = {total.force_on_tool[0], total.force_on_tool[1], total.force_on_tool[2],
-                      total.energy, total.friction_work};
+// The exact sums of one contact call (left in the pair's first share), kContactSums of them.
+constexpr int kContactSums = 9;
+
+void add_contact_sums(const ContactShare& total, ExactSum* sums) {
+  for (int c = 0; c < 3; ++c) {
+    sums[c] = total.force_on_tool[c];
+  }
+  sums[3] = total.energy;
+  sums[4] = total.friction_work;
   const int counts[4] = {total.nodes_in_contact, total.sliding_nodes, total.sticking_nodes,
                          total.projection_fallbacks};
   for (int k = 0; k < 4; ++k) {
+    sums[5 + k] = ExactSum();
     sums[5 + k].add(counts[k]);  // integers: exact
   }
-  domain.reduce(sums);
+}
+
+ContactResult contact_result(const ExactSum* sums) {
   ContactResult r;
   r.force_on_tool = Vec3(sums[0].round(), sums[1].round(), sums[2].round());
   r.energy = sums[3].round();
@@ -67,7 +121,9 @@ ContactResult global_contact_result(Domain& domain, const ContactShare& total) {
 }
 
 // The penalty contact of every pair into state.f_contact (zeroed here), the tools' reactions and
-// contact counts, the spring energy and the friction work.
+// contact counts, the spring energy and the friction work. All pairs' sums are made global in
+// one reduction; a failure is that of the first failing pair at its lowest failing node, as a
+// serial run meets it.
 void compute_contact_forces(const Model& model, SolutionState& s, double dt) {
   s.f_contact.setZero();
   s.contact_spring_energy = 0.0;
@@ -75,12 +131,17 @@ void compute_contact_forces(const Model& model, SolutionState& s, double dt) {
     t.force.setZero();
     t.nodes_in_contact = 0;
   }
-  if (s.contact_off) {
+  if (s.contact_off || model.contacts.empty()) {
     return;
   }
-  for (std::size_t k = 0; k < model.contacts.size(); ++k) {
+  const std::size_t pairs = model.contacts.size();
+  std::vector<ExactSum>& sums = s.contact_sums;  // scratch: no allocation after the first call
+  sums.resize(kContactSums * pairs + 1);
+  sums.back() = ExactSum();
+  PhaseError failure;
+  for (std::size_t k = 0; k < pairs; ++k) {
     const ContactInterface& c = model.contacts[k];
-    ToolState& tool = s.tools[static_cast<std::size_t>(c.tool)];
+    const ToolState& tool = s.tools[static_cast<std::size_t>(c.tool)];
     // s.v is the mid-step velocity of the step dt just taken (dt = 0 on the first call).
     const Vec3 tool_step =
         dt > 0.0 ? Vec3(tool.displacement - tool.previous_displacement) : Vec3::Zero();
@@ -89,9 +150,25 @@ void compute_contact_forces(const Model& model, SolutionState& s, double dt) {
                                        .half_thickness = s.half_thickness,
                                        .tool_displacement = tool.displacement,
                                        .tool_displacement_increment = tool_step,
-                                       .dt = dt};
-    compute_penalty_contact(c.pair, s.contacts[k], kinematics, s.f_contact);
-    const ContactResult r = global_contact_result(*s.domain, s.contacts[k].shares[0]);
+                                       .dt = dt,
+                                       .owned_nodes = s.domain->owned_nodes(),
+                                       .ghost_nodes = s.domain->ghost_nodes()};
+    PhaseError pair_failure = phase_error_of(
+        LONG_MAX, [&] { compute_penalty_contact(c.pair, s.contacts[k], kinematics, s.f_contact); });
+    if (pair_failure.failed() && !failure.failed()) {
+      const long nodes = static_cast<long>(s.x.cols()) + 1;
+      pair_failure.key =
+          static_cast<long>(k) * nodes + s.contacts[k].shares[0].first_failing_node();
+      failure = std::move(pair_failure);
+      sums.back().add(1.0);
+    }
+    add_contact_sums(s.contacts[k].shares[0], sums.data() + kContactSums * k);
+  }
+  s.domain->reduce(sums);
+  throw_agreed(*s.domain, sums.back(), std::move(failure));
+  for (std::size_t k = 0; k < pairs; ++k) {
+    const ContactResult r = contact_result(sums.data() + kContactSums * k);
+    ToolState& tool = s.tools[static_cast<std::size_t>(model.contacts[k].tool)];
     tool.force += r.force_on_tool;
     tool.nodes_in_contact += r.nodes_in_contact;
     s.contact_spring_energy += r.energy;

@@ -30,6 +30,8 @@ void keep_momentum(const Model& model, SolutionState& s, double dt) {
   const double h_last = 0.5 * s.dt;
   const double h_next = 0.5 * dt;
   // Per node: the energy removed (t[0]) and the kinetic-energy drop (t[1]), summed exactly.
+  // Every node this process keeps has its velocities scaled; the energies count the owned ones.
+  const std::span<const int> owned = s.domain->owned_nodes();
   auto exact = sum_exactly<2>(s.v.cols(), [&](long i, double* t) {
     t[0] = 0.0;
     t[1] = 0.0;
@@ -57,6 +59,10 @@ void keep_momentum(const Model& model, SolutionState& s, double dt) {
       t[0] += drop - 0.5 * (1.0 - r) * i_old * h_next * h_next * u_omega.squaredNorm();
       s.omega.col(i) *= r;
     }
+    if (!owned.empty() && !std::binary_search(owned.begin(), owned.end(), static_cast<int>(i))) {
+      t[0] = 0.0;
+      t[1] = 0.0;
+    }
   });
   s.domain->reduce(exact);
   const auto sums = rounded(exact);
@@ -76,7 +82,7 @@ double compute_time_step(const Model& model, SolutionState& s) {
   // The element pass of this cycle has the elements' steps at x already; otherwise compute them.
   const StableStep physical =
       s.element_dt_cycle == s.cycle
-          ? smallest_time_step(s.scaling.element_dt)
+          ? s.domain->smallest_time_step(s.scaling.element_dt)
           : compute_element_time_steps(blank.part, s.x, s.scaling.element_dt);
   const TimeStepCheck check =
       scale_mass_to_element_steps(blank.part, physical, s.scaling, s.mass, s.rotational_inertia);

@@ -219,7 +219,7 @@ TEST(RankPlan, EveryPartitionReproducesTheSerialOrder) {
 
 TEST(RankPlan, NodeCornersAreTheSerialOrder) {
   const Mesh mesh = mixed_mesh();
-  const NodeCornerLists nc = node_corner_lists(mesh.topology());
+  const NodeCorners nc = node_corner_lists(mesh.topology());
   const auto serial = serial_lists(mesh.topology());
   for (std::size_t n = 0; n < serial.size(); ++n) {
     const std::vector<int> slots(nc.slots.begin() + nc.offsets[n],
@@ -241,7 +241,7 @@ TEST(RankPlan, OneRankIsTheIdentity) {
   EXPECT_EQ(plan.owned_nodes, all_nodes);
   EXPECT_TRUE(plan.neighbours.empty());
   EXPECT_EQ(plan.receive_size, 0);
-  const NodeCornerLists nc = node_corner_lists(t);
+  const NodeCorners nc = node_corner_lists(t);
   EXPECT_EQ(plan.gather_offsets, nc.offsets);
   EXPECT_EQ(plan.gather_entries, nc.slots);
 }

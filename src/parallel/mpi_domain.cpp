@@ -1,0 +1,236 @@
+#include "parallel/mpi_domain.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "parallel/exact_allreduce.hpp"
+#include "parallel/mesh_partition.hpp"
+
+namespace sf {
+
+namespace {
+
+// METIS's seed: the same partition on every run (it decides speed only, never results).
+constexpr int kPartitionSeed = 17;
+
+int comm_rank(MPI_Comm comm) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  return rank;
+}
+
+int comm_size(MPI_Comm comm) {
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  return size;
+}
+
+// The part of every element: METIS on rank 0, broadcast (one partition, whatever METIS would do
+// on another rank's build).
+std::vector<int> broadcast_partition(const BlankTopology& topology, MPI_Comm comm) {
+  const int ranks = comm_size(comm);
+  const int n = topology.n_elements();
+  if (n < ranks) {
+    throw std::invalid_argument("the blank has " + std::to_string(n) + " element" +
+                                (n == 1 ? "" : "s") + " for " + std::to_string(ranks) +
+                                " MPI ranks: run with at most " + std::to_string(n) +
+                                (n == 1 ? " rank" : " ranks"));
+  }
+  std::vector<int> parts(static_cast<std::size_t>(n), 0);
+  if (comm_rank(comm) == 0) {
+    parts = partition_elements(topology, {}, ranks, kPartitionSeed);
+  }
+  MPI_Bcast(parts.data(), n, MPI_INT, 0, comm);
+  return parts;
+}
+
+RankPlan make_plan(const QuadConn& quads, const TriConn& triangles, int n_nodes, MPI_Comm comm) {
+  const BlankTopology topology = blank_topology(quads, triangles, n_nodes);
+  check_topology(topology);
+  const std::vector<int> parts = broadcast_partition(topology, comm);
+  return build_rank_plan(topology, parts, comm_rank(comm), comm_size(comm));
+}
+
+}  // namespace
+
+MpiDomain::MpiDomain(const QuadConn& quads, const TriConn& triangles, int n_nodes, MPI_Comm comm)
+    : comm_(comm),
+      plan_(make_plan(quads, triangles, n_nodes, comm)),
+      runs_(sf::element_runs(plan_.elements, static_cast<int>(quads.cols()))),
+      forces_(plan_, kCornerWidth),
+      thickness_(plan_, 1),
+      received_forces_(static_cast<std::size_t>(plan_.receive_size) * kCornerWidth),
+      received_thickness_(static_cast<std::size_t>(plan_.receive_size)),
+      thickness_corners_(static_cast<std::size_t>(plan_.n_corners), 0.0),
+      node_layout_(gather_layout(plan_.owned_nodes, comm, plan_.rank, plan_.ranks)),
+      element_layout_(gather_layout(plan_.elements, comm, plan_.rank, plan_.ranks)) {
+  std::set_difference(plan_.nodes.begin(), plan_.nodes.end(), plan_.owned_nodes.begin(),
+                      plan_.owned_nodes.end(), std::back_inserter(ghost_nodes_));
+}
+
+void MpiDomain::assemble_corners(const NodeCorners& /*nodes*/, std::span<const double> corners,
+                                 Matrix3X& f, Matrix3X& m) {
+  forces_.exchange(corners, received_forces_, comm_);
+  // As gather_corner_forces: from 0, in the node's ascending global slot order.
+  const int n = static_cast<int>(plan_.nodes.size());
+#pragma omp parallel for schedule(static) if (n >= 1024)
+  for (int i = 0; i < n; ++i) {
+    double sum[kCornerWidth] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    for (int k = plan_.gather_offsets[static_cast<std::size_t>(i)];
+         k < plan_.gather_offsets[static_cast<std::size_t>(i) + 1]; ++k) {
+      const int entry = plan_.gather_entries[static_cast<std::size_t>(k)];
+      const double* value =
+          entry >= 0
+              ? corners.data() + kCornerWidth * static_cast<std::ptrdiff_t>(entry)
+              : received_forces_.data() + kCornerWidth * static_cast<std::ptrdiff_t>(-1 - entry);
+      for (int c = 0; c < kCornerWidth; ++c) {
+        sum[c] += value[c];
+      }
+    }
+    const int node = plan_.nodes[static_cast<std::size_t>(i)];
+    for (int c = 0; c < 3; ++c) {
+      f(c, node) = sum[c];
+      m(c, node) = sum[3 + c];
+    }
+  }
+}
+
+void MpiDomain::assemble_half_thickness(const NodeCorners& nodes, std::span<const double> thickness,
+                                        const VectorX& inverse_element_count,
+                                        VectorX& half_thickness) {
+  // Each own corner carries half its element's thickness, as gather_half_thickness adds it.
+  for (const ElementRun& run : runs_) {
+    for (int e = run.begin; e < run.end; ++e) {
+      const int corners = e < nodes.n_quads ? 4 : 3;
+      const int first = e < nodes.n_quads ? 4 * e : 4 * nodes.n_quads + 3 * (e - nodes.n_quads);
+      for (int a = 0; a < corners; ++a) {
+        thickness_corners_[static_cast<std::size_t>(first + a)] =
+            0.5 * thickness[static_cast<std::size_t>(e)];
+      }
+    }
+  }
+  thickness_.exchange(thickness_corners_, received_thickness_, comm_);
+  for (std::size_t i = 0; i < plan_.nodes.size(); ++i) {
+    double sum = 0.0;
+    for (int k = plan_.gather_offsets[i]; k < plan_.gather_offsets[i + 1]; ++k) {
+      const int entry = plan_.gather_entries[static_cast<std::size_t>(k)];
+      sum += entry >= 0 ? thickness_corners_[static_cast<std::size_t>(entry)]
+                        : received_thickness_[static_cast<std::size_t>(-1 - entry)];
+    }
+    const int node = plan_.nodes[i];
+    half_thickness[node] = sum * inverse_element_count[node];
+  }
+}
+
+void MpiDomain::reduce(std::span<ExactSum> sums) {
+  for (std::size_t begin = 0; begin < sums.size(); begin += kMaxExactAllreduce) {
+    const std::size_t count = std::min<std::size_t>(kMaxExactAllreduce, sums.size() - begin);
+    allreduce_exact(sums.subspan(begin, count), comm_);
+  }
+}
+
+StableStep MpiDomain::smallest_time_step(std::span<const double> element_dt) {
+  // This rank's smallest (the first in element order on a tie), then the global one: MINLOC
+  // takes the lowest element on a tie, as a serial pass does.
+  struct {
+    double dt;
+    int element;
+  } mine{std::numeric_limits<double>::infinity(), INT_MAX}, global{};
+  for (const ElementRun& run : runs_) {
+    for (int e = run.begin; e < run.end; ++e) {
+      if (element_dt[static_cast<std::size_t>(e)] < mine.dt) {
+        mine = {element_dt[static_cast<std::size_t>(e)], e};
+      }
+    }
+  }
+  MPI_Allreduce(&mine, &global, 1, MPI_DOUBLE_INT, MPI_MINLOC, comm_);
+  return {global.dt, global.element == INT_MAX ? -1 : global.element};
+}
+
+PhaseError MpiDomain::agree(PhaseError local) {
+  struct {
+    long key;
+    int rank;
+  } mine{local.failed() ? std::min(local.key, LONG_MAX - 1) : LONG_MAX, plan_.rank}, first{};
+  MPI_Allreduce(&mine, &first, 1, MPI_LONG_INT, MPI_MINLOC, comm_);
+  if (first.key == LONG_MAX) {
+    return {};
+  }
+  // The failing rank with the lowest key tells the others its kind and message.
+  int header[2] = {static_cast<int>(local.kind), static_cast<int>(local.message.size())};
+  MPI_Bcast(header, 2, MPI_INT, first.rank, comm_);
+  PhaseError agreed{static_cast<PhaseError::Kind>(header[0]), first.key,
+                    std::string(static_cast<std::size_t>(header[1]), ' ')};
+  if (plan_.rank == first.rank) {
+    agreed.message = local.message;
+  }
+  MPI_Bcast(agreed.message.data(), header[1], MPI_CHAR, first.rank, comm_);
+  return agreed;
+}
+
+MpiDomain::RootLayout MpiDomain::gather_layout(std::span<const int> mine, MPI_Comm comm, int rank,
+                                               int ranks) {
+  RootLayout layout;
+  const int count = static_cast<int>(mine.size());
+  if (rank == 0) {
+    layout.counts.resize(static_cast<std::size_t>(ranks));
+  }
+  MPI_Gather(&count, 1, MPI_INT, layout.counts.data(), 1, MPI_INT, 0, comm);
+  if (rank == 0) {
+    layout.displacements.assign(static_cast<std::size_t>(ranks), 0);
+    for (std::size_t r = 1; r < static_cast<std::size_t>(ranks); ++r) {
+      layout.displacements[r] = layout.displacements[r - 1] + layout.counts[r - 1];
+    }
+    layout.indices.resize(
+        static_cast<std::size_t>(layout.displacements.back() + layout.counts.back()));
+  }
+  MPI_Gatherv(mine.data(), count, MPI_INT, layout.indices.data(), layout.counts.data(),
+              layout.displacements.data(), MPI_INT, 0, comm);
+  return layout;
+}
+
+void MpiDomain::gather(std::span<double> data, int width, std::span<const int> mine,
+                       const RootLayout& layout) {
+  const auto w = static_cast<std::size_t>(width);
+  send_.resize(w * mine.size());
+  for (std::size_t i = 0; i < mine.size(); ++i) {
+    std::copy_n(data.data() + w * static_cast<std::size_t>(mine[i]), w, send_.data() + w * i);
+  }
+  std::vector<int> counts, displacements;
+  if (plan_.rank == 0) {
+    receive_.resize(w * layout.indices.size());
+    for (std::size_t r = 0; r < layout.counts.size(); ++r) {
+      counts.push_back(width * layout.counts[r]);
+      displacements.push_back(width * layout.displacements[r]);
+    }
+  }
+  MPI_Gatherv(send_.data(), static_cast<int>(send_.size()), MPI_DOUBLE, receive_.data(),
+              counts.data(), displacements.data(), MPI_DOUBLE, 0, comm_);
+  if (plan_.rank == 0) {
+    for (std::size_t i = 0; i < layout.indices.size(); ++i) {
+      std::copy_n(receive_.data() + w * i, w,
+                  data.data() + w * static_cast<std::size_t>(layout.indices[i]));
+    }
+  }
+}
+
+void MpiDomain::gather_nodes(std::span<double> data, int width) {
+  gather(data, width, plan_.owned_nodes, node_layout_);
+}
+
+void MpiDomain::gather_elements(std::span<double> data, int width) {
+  gather(data, width, plan_.elements, element_layout_);
+}
+
+std::vector<double> MpiDomain::gather_values(std::span<const double> values) {
+  const int n = static_cast<int>(values.size());
+  std::vector<double> all(plan_.rank == 0 ? values.size() * static_cast<std::size_t>(plan_.ranks)
+                                          : 0);
+  MPI_Gather(values.data(), n, MPI_DOUBLE, all.data(), n, MPI_DOUBLE, 0, comm_);
+  return all;
+}
+
+}  // namespace sf

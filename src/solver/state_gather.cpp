@@ -1,0 +1,46 @@
+#include "solver/state_gather.hpp"
+
+namespace sf {
+
+namespace {
+
+void gather_node_field(Domain& domain, Matrix3X& field) {
+  domain.gather_nodes(std::span<double>(field.data(), static_cast<std::size_t>(field.size())), 3);
+}
+
+void gather_node_field(Domain& domain, VectorX& field) {
+  domain.gather_nodes(std::span<double>(field.data(), static_cast<std::size_t>(field.size())), 1);
+}
+
+// An element field of `per_element` values per element (nothing if it is not stored).
+void gather_element_field(Domain& domain, std::vector<double>& field, int n_elements) {
+  if (field.empty() || n_elements == 0) {
+    return;
+  }
+  domain.gather_elements(field, static_cast<int>(field.size()) / n_elements);
+}
+
+}  // namespace
+
+void gather_state_to_root(SolutionState& s) {
+  Domain& domain = *s.domain;
+  if (domain.processes() == 1) {
+    return;
+  }
+  for (Matrix3X* field :
+       {&s.x, &s.v, &s.omega, &s.rotation, &s.f_int, &s.m_int, &s.f_contact, &s.f_ext, &s.m_ext}) {
+    gather_node_field(domain, *field);
+  }
+  for (VectorX* field : {&s.half_thickness, &s.mass, &s.rotational_inertia}) {
+    gather_node_field(domain, *field);
+  }
+  ShellState& shell = s.shell;
+  for (std::vector<double>* field :
+       {&shell.sxx, &shell.syy, &shell.sxy, &shell.eps_p, &shell.flow_stress, &shell.flow_stress_at,
+        &shell.sxz, &shell.syz, &shell.thickness, &shell.hourglass, &shell.director}) {
+    gather_element_field(domain, *field, shell.n_elements);
+  }
+  gather_element_field(domain, s.scaling.element_dt, shell.n_elements);
+}
+
+}  // namespace sf

@@ -1,0 +1,93 @@
+#!/usr/bin/env bash
+# `mpirun -np N sheetform run` gives the serial run's bits (issue 17, item 3): results.h5 datasets
+# and summary.json numbers (scripts/compare_results.py) at 1, 2 and 3 ranks (3 oversubscribe a
+# 2-core machine) and 2 ranks x 2 threads. The square cup (steel) on a 1.875 mm blank to 0.5 mm of
+# stroke (force-controlled holder, friction, the cached search, quads), then the same blank as
+# triangles (assumed strain, the modified search); the U-channel to 4 mm with its implicit
+# springback (on rank 0 after the gather). Then what a distributed run refuses or stops with:
+# mass scaling (exit 2, the key named), more ranks than elements (exit 2), an energy blow-up
+# (exit 3, said once, the results readable up to the stop), and an element failure met by one
+# rank (exit 3, the serial run's message on every rank count).
+#   mpi_bitwise.sh SHEETFORM SOURCE_DIR WORK_DIR MPIEXEC
+set -u
+sheetform="$1"; src="$2"; work="$3"; mpiexec="$4"
+rm -rf "$work"; mkdir -p "$work"
+export OMP_WAIT_POLICY=passive OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMPI_MCA_rmaps_base_oversubscribe=1
+cp -r "$src/cases/square_cup_steel" "$work/case"; rm -rf "$work/case/results"
+cp -r "$work/case" "$work/case_triangles"; sed -i '/^Recombine/d' "$work/case_triangles/blank.geo"
+failures=0
+fail() { echo "FAIL $*"; failures=$((failures+1)); }
+
+# run_variant NAME CASE_FILE -- options...: serial, then 1, 2, 3 ranks and 2 ranks x 2 threads.
+run_variant() {
+  local name="$1" case_file="$2"; shift 3
+  "$sheetform" run "$case_file" --threads 1 -q -o "$work/$name-serial" "$@" \
+    > "$work/$name-serial.log" 2>&1 || { fail "$name serial:"; tail -5 "$work/$name-serial.log"; return; }
+  for layout in 1x1 2x1 3x1 2x2; do
+    local ranks="${layout%x*}" threads="${layout#*x}"
+    if ! "$mpiexec" -np "$ranks" --bind-to none "$sheetform" run "$case_file" --threads "$threads" \
+         -q -o "$work/$name-$layout" "$@" > "$work/$name-$layout.log" 2>&1; then
+      fail "$name at $layout (ranks x threads):"; tail -5 "$work/$name-$layout.log"; continue
+    fi
+    grep -q "\"ranks\": $ranks" "$work/$name-$layout/summary.json" ||
+      fail "$name $layout: summary.json does not say $ranks ranks"
+    /usr/bin/python3 "$src/scripts/compare_results.py" "$work/$name-serial" "$work/$name-$layout" ||
+      fail "$name $layout: not the serial bits"
+  done
+}
+cup=(--stroke 0.5 --set blank.element_size=1.875)
+run_variant quads "$work/case/case.toml" -- "${cup[@]}"
+run_variant triangles "$work/case_triangles/case.toml" -- "${cup[@]}" \
+  --set 'blank.element="as_meshed"' --set 'blank.formulation="assumed_strain"' --search modified
+
+# The U-channel with its implicit springback, at 2 ranks.
+"$sheetform" run "$src/cases/u_channel_bhf_2450N/case.toml" --stroke 4 -q -o "$work/uch-serial" \
+  > "$work/uch-serial.log" 2>&1 || fail "U-channel serial"
+"$mpiexec" -np 2 "$sheetform" run "$src/cases/u_channel_bhf_2450N/case.toml" --stroke 4 -q \
+  -o "$work/uch-2" > "$work/uch-2.log" 2>&1 || fail "U-channel at 2 ranks"
+grep -q '"springback"' "$work/uch-2/summary.json" || fail "U-channel at 2 ranks: no springback"
+/usr/bin/python3 "$src/scripts/compare_results.py" "$work/uch-serial" "$work/uch-2" ||
+  fail "U-channel at 2 ranks: not the serial bits"
+
+# Refused: mass scaling, more ranks than elements (exit 2, a message naming the cause, once).
+"$mpiexec" -np 2 "$sheetform" run "$work/case/case.toml" --stroke 0.1 -q -o "$work/ms" \
+  --set control.mass_scaling_dt=6e-7 > "$work/ms.log" 2>&1
+rc=$?
+[ "$rc" -eq 2 ] && [ "$(grep -c 'mass scaling (control.mass_scaling_dt) is not supported' "$work/ms.log")" -eq 1 ] ||
+  { fail "mass scaling at 2 ranks: exit $rc, expected 2 and one message:"; cat "$work/ms.log"; }
+"$mpiexec" -np 2 "$sheetform" run "$src/cases/verify_bounce/case.toml" -q -o "$work/one" \
+  > "$work/one.log" 2>&1
+rc=$?
+[ "$rc" -eq 2 ] && grep -q "1 element for 2 MPI ranks" "$work/one.log" ||
+  { fail "1 element at 2 ranks: exit $rc, expected 2:"; cat "$work/one.log"; }
+
+# Unstable (damping beyond the explicit limit, as tests/cli): exit 3, said once, frames readable.
+sed -i 's/^output_frames = \(.*\)/output_frames = \1\ndamping = 5.0e6/' "$work/case/case.toml"
+"$mpiexec" -np 2 "$sheetform" run "$work/case/case.toml" --stroke 0.5 -o "$work/unstable" \
+  --set blank.element_size=3.75 > "$work/unstable.log" 2>&1
+rc=$?
+[ "$rc" -eq 3 ] && [ "$(grep -c 'the run went unstable: energy blow-up' "$work/unstable.log")" -eq 1 ] ||
+  { fail "unstable at 2 ranks: exit $rc, expected 3 and one message:"; tail -20 "$work/unstable.log"; }
+h5ls "$work/unstable/results.h5/parts/blank/frames" > /dev/null 2>&1 ||
+  fail "unstable at 2 ranks: results.h5 not readable"
+
+# A failure inside one rank's share (non-finite initial velocities where x > 50 mm on the plate
+# deck: the elements there fail in the first element pass): every rank stops with the serial
+# run's message, naming the serial run's element, exit 3.
+cp -r "$src/benchmarks/plate_deck" "$work/plate"
+sed -i 's|^velocity = .*|velocity = [0, 0, "2e4 * sqrt(50 - x)"]|' "$work/plate/case.toml"
+"$sheetform" run "$work/plate/case.toml" --end-time 1e-5 -q -o "$work/nan-serial" > "$work/nan-serial.log" 2>&1
+want=$(head -1 "$work/nan-serial.log")
+for ranks in 2 3; do
+  "$mpiexec" -np "$ranks" "$sheetform" run "$work/plate/case.toml" --end-time 1e-5 -q \
+    -o "$work/nan-$ranks" > "$work/nan-$ranks.log" 2>&1
+  rc=$?
+  [ "$rc" -eq 3 ] && [ "$(grep -c '^error:' "$work/nan-$ranks.log")" -eq 1 ] &&
+    [ "$(head -1 "$work/nan-$ranks.log")" = "$want" ] && grep -q "shell element [0-9]*: non-finite" <<< "$want" ||
+    { fail "element failure at $ranks ranks: exit $rc, expected 3 and the serial message '$want':"
+      head -3 "$work/nan-$ranks.log"; }
+done
+
+[ "$failures" -eq 0 ] && echo "mpi_bitwise: all the same bits" || echo "mpi_bitwise: $failures failures"
+exit "$failures"
