@@ -14,7 +14,9 @@ whole process's wall time and the CPU time of all its threads and ranks, the ste
 a shared host), speed-up and parallel efficiency, overall and per phase
 (`phase_ns_per_element_cycle`: elements, contact, time_step, nodal, output, other); for MPI
 runs also the per-rank phase times and the load imbalance max/mean per phase
-(`phase_seconds_per_rank`: {phase: [seconds per rank]}, when the binary writes it). The
+(`phase_seconds_per_rank`: {phase: [seconds per rank]}, when the binary writes it), and each
+rank's own work (its step phases less its `communication` seconds, which include waiting for
+the others) with its max/mean: the imbalance of the work itself. The
 oversubscribe variable only allows more ranks than cores; on a big host pass the binding
 options with --mpirun-args. Each run's results stay in OUT (with --stroke 1 the fine square
 cup writes about 250 MB of results.h5 per run; --set control.output_frames=2 keeps it small).
@@ -199,6 +201,15 @@ def rank_tables(rows):
             mean = sum(values) / len(values)
             ratio = max(values) / mean if mean > 0 else float("nan")
             print(f"  {p:10s} " + " ".join(f"{v:9.3f}" for v in values) + f" {ratio:9.3f}")
+        if per_rank.get("communication"):
+            # Each rank's own work: its step phases less the time it spent in messages (waiting
+            # for the others included), so that max / mean is the imbalance of the work itself.
+            work = [sum(per_rank[p][i] for p in ("elements", "contact", "time_step", "nodal")
+                        if p in per_rank) - per_rank["communication"][i] for i in range(ranks)]
+            mean = sum(work) / len(work)
+            ratio = max(work) / mean if mean > 0 else float("nan")
+            print(f"  {'work':10s} " + " ".join(f"{v:9.3f}" for v in work) + f" {ratio:9.3f}"
+                  "   (step phases less communication: the load imbalance)")
 
 
 def main():

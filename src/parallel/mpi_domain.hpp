@@ -32,6 +32,7 @@ class MpiDomain final : public Domain {
 
   std::span<const ElementRun> element_runs() const override { return runs_; }
   std::span<const int> owned_nodes() const override { return plan_.owned_nodes; }
+  std::span<const int> held_nodes() const override { return plan_.nodes; }
   std::span<const int> ghost_nodes() const override { return ghost_nodes_; }
   void assemble_corners(const NodeCorners& nodes, std::span<const double> corners, Matrix3X& f,
                         Matrix3X& m) override;
@@ -44,6 +45,7 @@ class MpiDomain final : public Domain {
   void gather_nodes(std::span<double> data, int width) override;
   void gather_elements(std::span<double> data, int width) override;
   std::vector<double> gather_values(std::span<const double> values) override;
+  double communication_seconds() const override { return communication_seconds_; }
   bool is_root() const override { return plan_.rank == 0; }
   int processes() const override { return plan_.ranks; }
 
@@ -74,6 +76,7 @@ class MpiDomain final : public Domain {
   RootLayout element_layout_;
   std::vector<double> send_;     ///< gather scratch
   std::vector<double> receive_;  ///< gather scratch (rank 0)
+  double communication_seconds_ = 0.0;
 };
 
 }  // namespace sf

@@ -43,6 +43,9 @@ class Domain {
   /// The nodes whose sums this process counts (each node counted by one process), ascending;
   /// empty: all of them.
   virtual std::span<const int> owned_nodes() const = 0;
+  /// Every node this process keeps up to date (its elements' nodes: owned and ghost), ascending;
+  /// empty: all of them. The others' entries in the node arrays are left as they were.
+  virtual std::span<const int> held_nodes() const = 0;
   /// The nodes this process also keeps up to date without counting them (held by its elements,
   /// owned elsewhere), ascending. Empty in a serial run.
   virtual std::span<const int> ghost_nodes() const = 0;
@@ -80,6 +83,10 @@ class Domain {
   /// output process (empty elsewhere). Collective.
   virtual std::vector<double> gather_values(std::span<const double> values) = 0;
 
+  /// s, the wall time this process spent in messages so far (its exchanges, reductions and
+  /// gathers, waiting for the others included): the phase times less this are its own work.
+  virtual double communication_seconds() const = 0;
+
   /// Whether this process writes the results and prints (rank 0).
   virtual bool is_root() const = 0;
   /// Processes sharing the blank (1: serial).
@@ -91,6 +98,7 @@ class SerialDomain final : public Domain {
  public:
   std::span<const ElementRun> element_runs() const override { return {}; }
   std::span<const int> owned_nodes() const override { return {}; }
+  std::span<const int> held_nodes() const override { return {}; }
   std::span<const int> ghost_nodes() const override { return {}; }
   void assemble_corners(const NodeCorners& nodes, std::span<const double> corners, Matrix3X& f,
                         Matrix3X& m) override {
@@ -111,6 +119,7 @@ class SerialDomain final : public Domain {
   std::vector<double> gather_values(std::span<const double> values) override {
     return {values.begin(), values.end()};
   }
+  double communication_seconds() const override { return 0.0; }
   bool is_root() const override { return true; }
   int processes() const override { return 1; }
 };

@@ -138,11 +138,13 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
   RunSummary summary = make_run_summary(model, s, wall_seconds);
   summary.ranks = s.domain->processes();
   const PhaseTimes& t = s.times;
-  const double mine[5] = {t.elements, t.contact, t.time_step, t.nodal, t.output};
+  const double mine[6] = {t.elements, t.contact, t.time_step,
+                          t.nodal,    t.output,  s.domain->communication_seconds()};
   const std::vector<double> per_rank = s.domain->gather_values(mine);
-  for (std::size_t r = 0; r + 5 <= per_rank.size(); r += 5) {
-    summary.phase_seconds_per_rank.push_back(
-        {per_rank[r], per_rank[r + 1], per_rank[r + 2], per_rank[r + 3], per_rank[r + 4]});
+  for (std::size_t r = 0; r + 6 <= per_rank.size(); r += 6) {
+    std::array<double, 6> row;
+    std::copy_n(per_rank.begin() + static_cast<std::ptrdiff_t>(r), 6, row.begin());
+    summary.phase_seconds_per_rank.push_back(row);
   }
   if (output) {
     for (const SearchAuditRecord& a : output->search_audits().records()) {

@@ -17,11 +17,14 @@ namespace {
 // Mass-proportional damping acts on the old half-step velocity (force -c m v), which keeps the
 // update explicit; it is stable for c dt < 2.
 bool add_force_kicks(const Model& model, SolutionState& s, double weight) {
-  const Eigen::Index n = s.v.cols();
+  // The nodes this process keeps (all of them in a serial run).
+  const std::span<const int> held = s.domain->held_nodes();
+  const Eigen::Index n = held.empty() ? s.v.cols() : static_cast<Eigen::Index>(held.size());
   const double c = model.loads.damping;
   bool finite = true;
 #pragma omp parallel for schedule(static) reduction(&& : finite) if (n >= kMinParallelIndices)
-  for (Eigen::Index i = 0; i < n; ++i) {
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const Eigen::Index i = held.empty() ? k : held[static_cast<std::size_t>(k)];
     const double inv_m = s.inverse_mass[i];
     const double inv_i = s.inverse_inertia[i];
     s.v.col(i) += (weight * inv_m) * (s.f_ext.col(i) + s.f_contact.col(i) - s.f_int.col(i)) -
@@ -128,9 +131,11 @@ double apply_velocity_conditions(const Model& model, SolutionState& s, double we
 }
 
 void update_positions(SolutionState& s, double dt) {
-  const Eigen::Index n = s.x.cols();
+  const std::span<const int> held = s.domain->held_nodes();
+  const Eigen::Index n = held.empty() ? s.x.cols() : static_cast<Eigen::Index>(held.size());
 #pragma omp parallel for schedule(static) if (n >= kMinParallelIndices)
-  for (Eigen::Index i = 0; i < n; ++i) {
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const Eigen::Index i = held.empty() ? k : held[static_cast<std::size_t>(k)];
     s.x.col(i) += dt * s.v.col(i);
     s.rotation.col(i) += dt * s.omega.col(i);
   }

@@ -58,6 +58,24 @@ nlohmann::json reaction_json(const ConstraintReaction& c) {
   return j;
 }
 
+// The ranks' own work (step phases less their time in messages) and their time in messages.
+std::string rank_balance_line(const std::vector<std::array<double, 6>>& per_rank) {
+  double work_min = 1e300, work_max = 0.0, work_sum = 0.0, comm_min = 1e300, comm_max = 0.0;
+  for (const auto& t : per_rank) {
+    const double work = t[0] + t[1] + t[2] + t[3] - t[5];
+    work_min = std::min(work_min, work);
+    work_max = std::max(work_max, work);
+    work_sum += work;
+    comm_min = std::min(comm_min, t[5]);
+    comm_max = std::max(comm_max, t[5]);
+  }
+  const double mean = work_sum / static_cast<double>(per_rank.size());
+  return fmt::format(
+      "  ranks               {}: own work {:.2f} to {:.2f} s (max / mean {:.3f}), messages "
+      "{:.2f} to {:.2f} s",
+      per_rank.size(), work_min, work_max, mean > 0.0 ? work_max / mean : 0.0, comm_min, comm_max);
+}
+
 }  // namespace
 
 RunSummary make_run_summary(const Model& model, const SolutionState& s, double wall_seconds) {
@@ -273,6 +291,9 @@ std::string format_run_summary(const RunSummary& r) {
         fmt::format("  per element-cycle   elements {:.0f}, contact {:.0f}, time step {:.0f}, "
                     "nodal {:.0f}, output {:.0f}, other {:.0f} ns",
                     p.elements, p.contact, p.time_step, p.nodal, p.output, p.other));
+    if (r.phase_seconds_per_rank.size() > 1) {
+      add(rank_balance_line(r.phase_seconds_per_rank));
+    }
     add_explicit_run_lines(r, u, add);
   }
   add_energy_lines(r, u, add);
@@ -351,9 +372,9 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
   j["threads"] = r.threads;
   j["ranks"] = r.ranks;
   if (!r.phase_seconds_per_rank.empty()) {  // {phase: [s on rank 0, rank 1, ...]}
-    const char* names[5] = {"elements", "contact", "time_step", "nodal", "output"};
+    const char* names[6] = {"elements", "contact", "time_step", "nodal", "output", "communication"};
     nlohmann::json per_rank = nlohmann::json::object();
-    for (std::size_t k = 0; k < 5; ++k) {
+    for (std::size_t k = 0; k < 6; ++k) {
       nlohmann::json seconds = nlohmann::json::array();
       for (const auto& t : r.phase_seconds_per_rank) {
         seconds.push_back(t[k]);

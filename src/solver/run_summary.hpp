@@ -75,8 +75,9 @@ struct RunSummary {
   int threads = 1;  ///< OpenMP threads the run used (sheetform run --threads)
   int ranks = 1;    ///< MPI ranks sharing the blank (mpirun -np)
   /// s, each rank's wall time per phase (PhaseTimes: elements, contact, time step, nodal,
-  /// output), rank 0 first: the load balance of a distributed run
-  std::vector<std::array<double, 5>> phase_seconds_per_rank;
+  /// output), then its time in messages (part of those phases, waiting included), rank 0 first:
+  /// the load balance of a distributed run
+  std::vector<std::array<double, 6>> phase_seconds_per_rank;
   Energies energies;
   double peak_kinetic_ratio = 0.0;   ///< largest kinetic/internal after the first tenth
   double physical_mass = 0.0;        ///< tonne, the blank's mass before scaling
