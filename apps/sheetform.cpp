@@ -18,6 +18,7 @@
 #include <omp.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -130,6 +131,28 @@ void prepare_results_folder(const sf::MpiSession& mpi, const fs::path& out,
   }
 }
 
+// FNV-1a over the bytes of the meshes a rank built (blank and tools): every rank meshes the case
+// itself, and the ranks must agree to the bit.
+std::uint64_t mesh_digest(const sf::Model& model) {
+  std::uint64_t h = 1469598103934665603ull;
+  auto add = [&h](const void* data, std::size_t bytes) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) {
+      h = (h ^ p[i]) * 1099511628211ull;
+    }
+  };
+  auto add_mesh = [&add](const sf::PartMesh& m) {
+    add(m.nodes.data(), sizeof(double) * static_cast<std::size_t>(m.nodes.size()));
+    add(m.quads.data(), sizeof(int) * static_cast<std::size_t>(m.quads.size()));
+    add(m.triangles.data(), sizeof(int) * static_cast<std::size_t>(m.triangles.size()));
+  };
+  add_mesh(model.blank.mesh);
+  for (const sf::Tool& t : model.tools) {
+    add_mesh(t.mesh);
+  }
+  return h;
+}
+
 // The share of the blank this rank computes (nullptr: all of it, a serial run).
 std::shared_ptr<sf::Domain> make_domain(const sf::MpiSession& mpi, const sf::Model& model,
                                         const std::string& case_file) {
@@ -137,6 +160,12 @@ std::shared_ptr<sf::Domain> make_domain(const sf::MpiSession& mpi, const sf::Mod
     return nullptr;
   }
   sf::check_distributable(model, case_file, mpi.size());
+  if (!mpi.same_on_all_ranks(mesh_digest(model))) {
+    throw sf::InputError(case_file +
+                         ": the MPI ranks built different meshes from the case (gmsh gave a "
+                         "different mesh on some rank); write the meshes once with `sheetform "
+                         "mesh` and give the .msh files in the case");
+  }
   const sf::ShellPart& part = model.blank.part;
   try {
     return std::make_shared<sf::MpiDomain>(part.quads, part.triangles,

@@ -1,7 +1,6 @@
 #include "parallel/mpi_domain.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <climits>
 #include <limits>
 #include <stdexcept>
@@ -9,6 +8,7 @@
 
 #include "parallel/exact_allreduce.hpp"
 #include "parallel/mesh_partition.hpp"
+#include "solver/phase_times.hpp"  // PhaseTimer: the time in messages
 
 namespace sf {
 
@@ -55,22 +55,6 @@ RankPlan make_plan(const QuadConn& quads, const TriConn& triangles, int n_nodes,
   return build_rank_plan(topology, parts, comm_rank(comm), comm_size(comm));
 }
 
-// Adds the wall time of its scope to `total` (s): the time a rank spends in messages.
-class CommunicationTimer {
- public:
-  explicit CommunicationTimer(double& total)
-      : total_(total), start_(std::chrono::steady_clock::now()) {}
-  ~CommunicationTimer() {
-    total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
-  CommunicationTimer(const CommunicationTimer&) = delete;
-  CommunicationTimer& operator=(const CommunicationTimer&) = delete;
-
- private:
-  double& total_;
-  std::chrono::steady_clock::time_point start_;
-};
-
 }  // namespace
 
 MpiDomain::MpiDomain(const QuadConn& quads, const TriConn& triangles, int n_nodes, MPI_Comm comm)
@@ -91,7 +75,7 @@ MpiDomain::MpiDomain(const QuadConn& quads, const TriConn& triangles, int n_node
 void MpiDomain::assemble_corners(const NodeCorners& /*nodes*/, std::span<const double> corners,
                                  Matrix3X& f, Matrix3X& m) {
   {
-    const CommunicationTimer timer(communication_seconds_);
+    const PhaseTimer timer(communication_seconds_);
     forces_.exchange(corners, received_forces_, comm_);
   }
   // As gather_corner_forces: from 0, in the node's ascending global slot order.
@@ -133,7 +117,7 @@ void MpiDomain::assemble_half_thickness(const NodeCorners& nodes, std::span<cons
     }
   }
   {
-    const CommunicationTimer timer(communication_seconds_);
+    const PhaseTimer timer(communication_seconds_);
     thickness_.exchange(thickness_corners_, received_thickness_, comm_);
   }
   for (std::size_t i = 0; i < plan_.nodes.size(); ++i) {
@@ -149,7 +133,7 @@ void MpiDomain::assemble_half_thickness(const NodeCorners& nodes, std::span<cons
 }
 
 void MpiDomain::reduce(std::span<ExactSum> sums) {
-  const CommunicationTimer timer(communication_seconds_);
+  const PhaseTimer timer(communication_seconds_);
   for (std::size_t begin = 0; begin < sums.size(); begin += kMaxExactAllreduce) {
     const std::size_t count = std::min<std::size_t>(kMaxExactAllreduce, sums.size() - begin);
     allreduce_exact(sums.subspan(begin, count), comm_);
@@ -171,14 +155,14 @@ StableStep MpiDomain::smallest_time_step(std::span<const double> element_dt) {
     }
   }
   {
-    const CommunicationTimer timer(communication_seconds_);
+    const PhaseTimer timer(communication_seconds_);
     MPI_Allreduce(&mine, &global, 1, MPI_DOUBLE_INT, MPI_MINLOC, comm_);
   }
   return {global.dt, global.element == INT_MAX ? -1 : global.element};
 }
 
 PhaseError MpiDomain::agree(PhaseError local) {
-  const CommunicationTimer timer(communication_seconds_);
+  const PhaseTimer timer(communication_seconds_);
   struct {
     long key;
     int rank;
@@ -222,7 +206,7 @@ MpiDomain::RootLayout MpiDomain::gather_layout(std::span<const int> mine, MPI_Co
 
 void MpiDomain::gather(std::span<double> data, int width, std::span<const int> mine,
                        const RootLayout& layout) {
-  const CommunicationTimer timer(communication_seconds_);
+  const PhaseTimer timer(communication_seconds_);
   const auto w = static_cast<std::size_t>(width);
   send_.resize(w * mine.size());
   for (std::size_t i = 0; i < mine.size(); ++i) {

@@ -50,6 +50,17 @@ int MpiSession::local_size() const {
   return env_int("OMPI_COMM_WORLD_LOCAL_SIZE", env_int("MPI_LOCALNRANKS", size_));
 }
 
+bool MpiSession::same_on_all_ranks(std::uint64_t digest) const {
+  if (!active_) {
+    return true;
+  }
+  std::uint64_t low = digest;
+  std::uint64_t high = digest;
+  MPI_Allreduce(MPI_IN_PLACE, &low, 1, MPI_UINT64_T, MPI_MIN, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, &high, 1, MPI_UINT64_T, MPI_MAX, MPI_COMM_WORLD);
+  return low == high;
+}
+
 std::string MpiSession::broadcast_from_root(const std::string& text) const {
   if (!active_) {
     return text;

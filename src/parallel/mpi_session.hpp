@@ -3,6 +3,7 @@
 // MPI launcher (mpirun, mpiexec, srun), so that a plain `sheetform run` never touches MPI, and
 // finalised on the way out. Threads: MPI_THREAD_FUNNELED (only the main thread calls MPI; the
 // OpenMP regions never do).
+#include <cstdint>
 #include <string>
 
 namespace sf {
@@ -21,6 +22,9 @@ class MpiSession {
   int size() const { return size_; }
   /// Ranks on this machine (the launcher's local size; size() when it does not say).
   int local_size() const;
+
+  /// Whether every rank has the same `digest` (collective; true when not active).
+  bool same_on_all_ranks(std::uint64_t digest) const;
 
   /// Rank 0's `text` on every rank (collective; identity when not active).
   std::string broadcast_from_root(const std::string& text) const;
