@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <chrono>
 #include <climits>
 
@@ -156,9 +157,10 @@ void compute_contact_forces(const Model& model, SolutionState& s, double dt) {
     PhaseError pair_failure = phase_error_of(
         LONG_MAX, [&] { compute_penalty_contact(c.pair, s.contacts[k], kinematics, s.f_contact); });
     if (pair_failure.failed() && !failure.failed()) {
+      // Pair by pair, then node by node (a failure without a node: after the pair's nodes).
       const long nodes = static_cast<long>(s.x.cols()) + 1;
-      pair_failure.key =
-          static_cast<long>(k) * nodes + s.contacts[k].shares[0].first_failing_node();
+      const long node = std::min<long>(s.contacts[k].shares[0].first_failing_node(), nodes - 1);
+      pair_failure.key = static_cast<long>(k) * nodes + node;
       failure = std::move(pair_failure);
       sums.back().add(1.0);
     }
