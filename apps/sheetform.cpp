@@ -15,9 +15,11 @@
 //
 // Exit codes: 0 success, 2 bad input, 3 the run went unstable, 4 a static step did not converge
 // (or its stiffness is singular), 1 an internal error.
+#include <fmt/core.h>
 #include <omp.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -47,29 +49,37 @@ namespace {
 struct Arguments {
   std::string case_file;
   std::string output_directory;
-  double stroke = -1.0;          // mm; < 0 = as in the case
-  double end_time = -1.0;        // s; < 0 = as in the case
-  std::string search;            // "" = as in the case; else the search of every [[contact]]
-  std::vector<std::string> set;  // --set KEY=VALUE: case-file keys overridden before reading
-  int threads = 0;               // 0 = OMP_NUM_THREADS, else every core
+  std::optional<double> stroke;    // mm; none = as in the case
+  std::optional<double> end_time;  // s; none = as in the case
+  std::string search;              // "" = as in the case; else the search of every [[contact]]
+  std::vector<std::string> set;    // --set KEY=VALUE: case-file keys overridden before reading
+  int threads = 0;                 // 0 = OMP_NUM_THREADS, else every core
   bool quiet = false;
   bool verbose = false;
 };
 
 // Command-line overrides of the case's end condition (used for short versions of long runs).
 void apply_overrides(const Arguments& args, sf::CaseConfig& config) {
-  if (args.stroke >= 0.0 && args.end_time >= 0.0) {
+  if (args.stroke && args.end_time) {
     throw sf::InputError("give --stroke or --end-time, not both");
   }
-  if (args.stroke > 0.0) {
+  auto check_positive = [](const char* option, double value, const char* unit) {
+    if (!(std::isfinite(value) && value > 0.0)) {
+      throw sf::InputError(
+          fmt::format("{} {}: expected a finite value > 0 ({})", option, value, unit));
+    }
+  };
+  if (args.stroke) {
+    check_positive("--stroke", *args.stroke, "mm of the moving tool's travel");
     if (config.control.stroke_tool.empty()) {
       throw sf::InputError(config.file.string() + ": --stroke needs a moving tool (none moves)");
     }
-    config.control.stroke = args.stroke;
+    config.control.stroke = *args.stroke;
     config.control.end_time = 0.0;
   }
-  if (args.end_time > 0.0) {
-    config.control.end_time = args.end_time;
+  if (args.end_time) {
+    check_positive("--end-time", *args.end_time, "s");
+    config.control.end_time = *args.end_time;
     config.control.stroke = 0.0;
   }
   if (!args.search.empty()) {

@@ -111,5 +111,11 @@ expect "threads in the banner" 0 "Threads +2 \(OpenMP" -- \
 expect "threads in summary.json" 0 '"threads": 2' -- cat "$work/threads/summary.json"
 expect "threads 0 refused" 2 "threads" -- "$sheetform" run "$demo" --threads 0 -o "$work/threads0"
 
+# End-condition overrides must be finite and positive (issue 18: they were silently ignored).
+for bad in "--stroke -5" "--stroke nan" "--stroke 0" "--end-time -1" "--end-time inf"; do
+  # shellcheck disable=SC2086  # the option and its value are two words
+  expect "run $bad refused" 2 "expected a finite value > 0" -- "$sheetform" run "$demo" $bad -o "$work/bad_end"
+done
+
 echo "$passed passed, $failures failed"
 [ "$failures" -eq 0 ]
