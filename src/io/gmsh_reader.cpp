@@ -72,9 +72,17 @@ class GmshSession {
       return {};
     }
     std::string text;
+    auto add = [&text](const std::string& line) { text += (text.empty() ? "" : "\n") + line; };
     for (const auto& line : log) {
       if (line.rfind("Error", 0) == 0) {
-        text += (text.empty() ? "" : "\n") + line;
+        add(line);
+      }
+      // gmsh only notes a repeated node tag in a .msh and keeps the first node's coordinates:
+      // the mesh is not what the file says.
+      const std::size_t duplicate = line.find("Skipping duplicate node ");
+      if (duplicate != std::string::npos) {
+        add("Error: node tag " + line.substr(duplicate + 24) +
+            " appears more than once (gmsh keeps the first coordinates and drops the others)");
       }
     }
     return text;
@@ -486,6 +494,32 @@ void write_msh(const std::filesystem::path& geo_file, double element_size, bool 
   }
 }
 
+namespace {
+
+// Whether an element (3 or 4 local node indices) has no area: below 1e-12 of its longest side
+// squared (a quad's area from its diagonals' cross product).
+bool has_zero_area(const Matrix3X& x, const std::vector<int>& el) {
+  auto p = [&](std::size_t k) -> Vec3 { return x.col(el[k]); };
+  const std::size_t n = el.size();
+  const Vec3 normal =
+      n == 4 ? Vec3((p(2) - p(0)).cross(p(3) - p(1))) : Vec3((p(1) - p(0)).cross(p(2) - p(0)));
+  double longest = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    longest = std::max(longest, (p((k + 1) % n) - p(k)).squaredNorm());
+  }
+  return !(0.5 * normal.norm() > 1e-12 * longest);
+}
+
+std::string node_tag_list(const std::vector<std::size_t>& tags, const std::vector<int>& el) {
+  std::string text;
+  for (const int i : el) {
+    text += (text.empty() ? "" : " ") + std::to_string(tags[static_cast<std::size_t>(i)]);
+  }
+  return text;
+}
+
+}  // namespace
+
 PartMesh extract_part_mesh(const GmshModel& model, const std::string& group,
                            const std::string& part_name) {
   const std::string where = quoted(model.file) + ", physical group '" + group + "'";
@@ -524,6 +558,12 @@ PartMesh extract_part_mesh(const GmshModel& model, const std::string& group,
                        " has no coordinates");
     }
     part.nodes.col(static_cast<Eigen::Index>(i)) = model.node_coords.col(it->second);
+    if (!part.nodes.col(static_cast<Eigen::Index>(i)).allFinite()) {
+      throw InputError(fmt::format(
+          "{}: node {} has a non-finite coordinate ({}, {}, {})", where, part.gmsh_node_tags[i],
+          part.nodes(0, static_cast<Eigen::Index>(i)), part.nodes(1, static_cast<Eigen::Index>(i)),
+          part.nodes(2, static_cast<Eigen::Index>(i))));
+    }
     local.emplace(part.gmsh_node_tags[i], static_cast<int>(i));
   }
 
@@ -546,6 +586,12 @@ PartMesh extract_part_mesh(const GmshModel& model, const std::string& group,
         if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
           throw InputError(where + ": element " + std::to_string(block.element_tags[e]) +
                            " is degenerate (a node repeats)");
+        }
+        if (has_zero_area(part.nodes, el)) {
+          throw InputError(
+              fmt::format("{}: element {} has zero area (its nodes, gmsh tags {}, are collinear or "
+                          "coincide)",
+                          where, block.element_tags[e], node_tag_list(part.gmsh_node_tags, el)));
         }
         elements.push_back(std::move(el));
         element_tags.push_back(block.element_tags[e]);

@@ -117,5 +117,31 @@ for bad in "--stroke -5" "--stroke nan" "--stroke 0" "--end-time -1" "--end-time
   expect "run $bad refused" 2 "expected a finite value > 0" -- "$sheetform" run "$demo" $bad -o "$work/bad_end"
 done
 
+# Bad meshes are bad input naming the node or element (issue 18: a repeated node tag was taken
+# silently, a non-finite coordinate or a zero-area element reported as an unstable run, exit 3).
+# The membrane patch's four-quad .msh, edited: node 6 given twice, node 6's x as nan, node 5 moved
+# onto node 1 (quad 9, nodes 1 2 5 4, then has no area).
+cp -r "$src/cases/verify_patch" "$work/patch"
+sed -i 's/^mesh = "blank.geo"/mesh = "blank.msh"/' "$work/patch/case.toml"
+/usr/bin/python3 - "$work/patch" <<'PY'
+import sys, pathlib
+d = pathlib.Path(sys.argv[1]); s = (d / "blank.msh").read_text()
+edits = {"dup": [("0 6 0 1\n6\n10 5 0", "0 6 0 2\n6\n6\n10 5 0\n11 5 0"), ("17 9 1 9", "17 10 1 9")],
+         "nan": [("0 6 0 1\n6\n10 5 0", "0 6 0 1\n6\nnan 5 0")],
+         "zero": [("0 5 0 1\n5\n4.2 6.1 0", "0 5 0 1\n5\n0 0 0")]}
+case = (d / "case.toml").read_text()
+for name, pairs in edits.items():
+    t = s
+    for a, b in pairs:
+        assert a in t, (name, a)
+        t = t.replace(a, b, 1)
+    (d / f"{name}.msh").write_text(t)
+    (d / f"{name}.toml").write_text(case.replace('mesh = "blank.msh"', f'mesh = "{name}.msh"'))
+PY
+expect "patch .msh reads" 0 "Case is valid" -- "$sheetform" check "$work/patch/case.toml"
+expect "repeated node tag" 2 "node tag 6 appears more than once" -- "$sheetform" check "$work/patch/dup.toml"
+expect "non-finite coordinate" 2 "node 6 has a non-finite coordinate" -- "$sheetform" check "$work/patch/nan.toml"
+expect "zero-area element" 2 "element 9 has zero area" -- "$sheetform" run "$work/patch/zero.toml" -o "$work/zero"
+
 echo "$passed passed, $failures failed"
 [ "$failures" -eq 0 ]
