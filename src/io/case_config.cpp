@@ -339,7 +339,7 @@ void read_tools(const TomlSection& top, const fs::path& folder, std::vector<Tool
     const TomlSection& s = sections[i];
     s.check_keys({"name", "mesh", "group", "element_size", "parameters", "motion"});
     ToolConfig tool;
-    s.read_string("name", tool.name, Presence::required);
+    s.read_name("name", tool.name, Presence::required);
     for (std::size_t j = 0; j < i; ++j) {
       if (tools[j].name == tool.name) {
         s.fail_at(*s.find("name"), s.key_path("name"),
@@ -436,7 +436,7 @@ void read_draw_ins(const TomlSection& top, std::vector<DrawInConfig>& draw_ins) 
   for (const TomlSection& s : top.table_array("draw_in")) {
     s.check_keys({"name", "group", "direction", "measured", "measured_stroke", "source"});
     DrawInConfig draw_in;
-    s.read_string("name", draw_in.name, Presence::required);
+    s.read_name("name", draw_in.name, Presence::required);
     for (const auto& other : draw_ins) {
       if (other.name == draw_in.name) {
         s.fail_value("name", "a name not used by another [[draw_in]]");

@@ -587,12 +587,6 @@ PartMesh extract_part_mesh(const GmshModel& model, const std::string& group,
           throw InputError(where + ": element " + std::to_string(block.element_tags[e]) +
                            " is degenerate (a node repeats)");
         }
-        if (has_zero_area(part.nodes, el)) {
-          throw InputError(
-              fmt::format("{}: element {} has zero area (its nodes, gmsh tags {}, are collinear or "
-                          "coincide)",
-                          where, block.element_tags[e], node_tag_list(part.gmsh_node_tags, el)));
-        }
         elements.push_back(std::move(el));
         element_tags.push_back(block.element_tags[e]);
       }
@@ -600,6 +594,14 @@ PartMesh extract_part_mesh(const GmshModel& model, const std::string& group,
   }
 
   const std::vector<bool> reverse = orient_consistently(elements, part.gmsh_node_tags, where);
+  // After the topology's checks (a Moebius band's closing element can be flat as well).
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    if (has_zero_area(part.nodes, elements[e])) {
+      throw InputError(fmt::format(
+          "{}: element {} has zero area (its nodes, gmsh tags {}, are collinear or coincide)",
+          where, element_tags[e], node_tag_list(part.gmsh_node_tags, elements[e])));
+    }
+  }
   int quad_count = 0, triangle_count = 0;
   for (const auto& el : elements) {
     (el.size() == 4 ? quad_count : triangle_count)++;

@@ -10,6 +10,7 @@
 #include "core/errors.hpp"
 #include "core/log.hpp"
 #include "io/hdf5_file.hpp"
+#include "io/result_name.hpp"
 
 namespace sf {
 namespace {
@@ -18,16 +19,10 @@ constexpr const char* results_file_name = "results.h5";
 constexpr int format_version = 1;
 constexpr hsize_t history_chunk_rows = 1024;
 
-/// Names become HDF5 link names, XML attribute values and file names: keep them plain.
 void check_name(const std::string& name, const std::string& what) {
-  const bool plain = std::all_of(name.begin(), name.end(), [](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-           c == '-' || c == '.';
-  });
-  if (name.empty() || !plain || name.front() == '.') {
-    throw std::invalid_argument(what + " '" + name +
-                                "' is not a valid name (use letters, digits, '_', '-', '.'; "
-                                "not starting with '.')");
+  if (!is_plain_name(name)) {
+    throw std::invalid_argument(what + " '" + name + "' is not a valid name (" +
+                                std::string(kPlainNameRule) + ")");
   }
 }
 

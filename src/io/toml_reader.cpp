@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/errors.hpp"
+#include "io/result_name.hpp"
 
 namespace sf {
 
@@ -258,6 +259,16 @@ bool TomlSection::read_string(std::string_view key, std::string& value, Presence
     fail_value(key, expected);
   }
   value = text->get();
+  return true;
+}
+
+bool TomlSection::read_name(std::string_view key, std::string& value, Presence presence) const {
+  if (!read_string(key, value, presence)) {
+    return false;
+  }
+  if (!is_plain_name(value)) {
+    fail_value(key, "a name of " + std::string(kPlainNameRule));
+  }
   return true;
 }
 

@@ -81,6 +81,9 @@ class TomlSection {
   /// A string; unless `allow_empty`, it must not be empty.
   bool read_string(std::string_view key, std::string& value, Presence presence = Presence::optional,
                    bool allow_empty = false) const;
+  /// A string that names results (io/result_name.hpp): plain letters, digits, '_', '-', '.'.
+  bool read_name(std::string_view key, std::string& value,
+                 Presence presence = Presence::optional) const;
   /// A string that must be one of the names in `choices`; stores the matching value.
   template <typename T>
   bool read_choice(std::string_view key, T& value,

@@ -143,5 +143,14 @@ expect "repeated node tag" 2 "node tag 6 appears more than once" -- "$sheetform"
 expect "non-finite coordinate" 2 "node 6 has a non-finite coordinate" -- "$sheetform" check "$work/patch/nan.toml"
 expect "zero-area element" 2 "element 9 has zero area" -- "$sheetform" run "$work/patch/zero.toml" -o "$work/zero"
 
+# Names that name results are checked with the case (issue 18: they failed at run time, exit 1).
+sed 's/^name = "DX"/name = "D X"/' "$demo" > "$work/case/cli_test_draw_in_name.toml"
+expect "draw-in name with a space" 2 'draw_in\[0\]\.name: expected a name of letters' -- \
+  "$sheetform" check "$work/case/cli_test_draw_in_name.toml"
+sed -e 's/^name = "punch"/name = "my punch"\ngroup = "punch"/' -e 's/"punch"$/"my punch"/' \
+  "$demo" > "$work/case/cli_test_tool_name.toml"
+expect "tool name with a space" 2 'tools\[0\]\.name: expected a name of letters' -- \
+  "$sheetform" check "$work/case/cli_test_tool_name.toml"
+
 echo "$passed passed, $failures failed"
 [ "$failures" -eq 0 ]
