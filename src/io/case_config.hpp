@@ -229,7 +229,7 @@ struct ControlConfig {
   double time_step_safety = 0.9;  ///< factor on the elements' critical time step
   double mass_scaling_dt = 0.0;   ///< s; target time step for mass scaling; 0 = off
   /// -, largest added mass as a fraction of the physical mass; the run stops beyond it; 0 = none
-  double mass_scaling_max_added = 0.0;
+  double mass_scaling_max_added = 1.0;
   double energy_blowup_ratio = 10.0;  ///< stop when total energy exceeds this x external work (+1)
   std::array<double, 3> gravity{0.0, 0.0, 0.0};  ///< mm/s^2 (forming cases: 0, or -9810 in z)
   double damping = 0.0;  ///< 1/s, mass-proportional: force -damping * m * v on every node

@@ -152,5 +152,10 @@ sed -e 's/^name = "punch"/name = "my punch"\ngroup = "punch"/' -e 's/"punch"$/"m
 expect "tool name with a space" 2 'tools\[0\]\.name: expected a name of letters' -- \
   "$sheetform" check "$work/case/cli_test_tool_name.toml"
 
+# Mass scaling that would add more than the blank's own mass (the default limit, 100 %) is refused
+# before the run (issue 18: 1e12 times the mass ran with a warning).
+expect "mass scaling beyond the default limit" 2 "mass_scaling_dt.*adds .* more than control.mass_scaling_max_added = 100.00 %" -- \
+  "$sheetform" check "$demo" --set control.mass_scaling_dt=1e-3
+
 echo "$passed passed, $failures failed"
 [ "$failures" -eq 0 ]

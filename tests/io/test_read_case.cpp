@@ -64,7 +64,7 @@ TEST_F(ReadCase, MinimalCaseGetsEveryDocumentedDefault) {
   EXPECT_EQ(c.control.progress_interval, 0);
   EXPECT_EQ(c.control.time_step_safety, 0.9);
   EXPECT_EQ(c.control.mass_scaling_dt, 0.0);
-  EXPECT_EQ(c.control.mass_scaling_max_added, 0.0);
+  EXPECT_EQ(c.control.mass_scaling_max_added, 1.0);
   EXPECT_EQ(c.control.energy_blowup_ratio, 10.0);
 
   EXPECT_EQ(c.output.directory, (dir_ / "results").string());
