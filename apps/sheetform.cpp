@@ -118,6 +118,18 @@ LoadedCase load(const Arguments& args) {
   return {std::move(config), std::move(model)};
 }
 
+// The results folder, made if missing; a path that cannot be a folder is bad input.
+void create_results_folder(const fs::path& out) {
+  std::error_code error;
+  fs::create_directories(out, error);
+  if (error || !fs::is_directory(out)) {
+    throw sf::InputError(fmt::format(
+        "results folder {}: cannot create it ({}); give -o a folder path whose parents are "
+        "folders you can write to",
+        out.string(), error ? error.message() : "a file has that name"));
+  }
+}
+
 // Rank 0 prepares the results folder and keeps the resolved case beside the results; every rank
 // learns whether that worked (a failure met by rank 0 alone must not leave the others waiting).
 void prepare_results_folder(const sf::MpiSession& mpi, const fs::path& out,
@@ -125,7 +137,7 @@ void prepare_results_folder(const sf::MpiSession& mpi, const fs::path& out,
   std::string problem;
   if (mpi.rank() == 0) {
     try {
-      fs::create_directories(out);
+      create_results_folder(out);
       std::ofstream file(out / "case.resolved.toml");
       file << resolved_case;
       if (!file) {
@@ -137,7 +149,7 @@ void prepare_results_folder(const sf::MpiSession& mpi, const fs::path& out,
   }
   problem = mpi.broadcast_from_root(problem);
   if (!problem.empty()) {
-    throw sf::InputError("results folder " + out.string() + ": " + problem);
+    throw sf::InputError(problem);
   }
 }
 
@@ -246,7 +258,7 @@ int mesh(const Arguments& args, const sf::MpiSession& mpi) {
   const sf::Model& model = loaded.model;
   sf::print_model(loaded.config, model);
   const fs::path out = output_directory(args, loaded.config);
-  fs::create_directories(out);
+  create_results_folder(out);
   sf::FrameOutput output(model, out);
   sf::SolutionState state = sf::make_initial_state(model);
   output.write_frame(model, state);

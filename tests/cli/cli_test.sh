@@ -157,5 +157,14 @@ expect "tool name with a space" 2 'tools\[0\]\.name: expected a name of letters'
 expect "mass scaling beyond the default limit" 2 "mass_scaling_dt.*adds .* more than control.mass_scaling_max_added = 100.00 %" -- \
   "$sheetform" check "$demo" --set control.mass_scaling_dt=1e-3
 
+# -o naming a file is bad input (issue 18: an internal error, exit 1).
+touch "$work/a_file"
+expect "run -o naming a file" 2 "results folder .*a_file: cannot create it" -- \
+  "$sheetform" run "$demo" --stroke 0.01 -o "$work/a_file"
+expect "mesh -o naming a file" 2 "results folder .*a_file: cannot create it" -- \
+  "$sheetform" mesh "$demo" -o "$work/a_file"
+expect "-o under a file" 2 "results folder .*a_file/sub: cannot create it" -- \
+  "$sheetform" run "$demo" --stroke 0.01 -o "$work/a_file/sub"
+
 echo "$passed passed, $failures failed"
 [ "$failures" -eq 0 ]
