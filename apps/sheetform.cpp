@@ -31,6 +31,7 @@
 #include "core/errors.hpp"
 #include "core/log.hpp"
 #include "io/case_config.hpp"
+#include "io/geo_safety.hpp"
 #include "io/gmsh_reader.hpp"
 #include "model/build_model.hpp"
 #include "model/constraint_assembly.hpp"
@@ -49,11 +50,12 @@ namespace {
 struct Arguments {
   std::string case_file;
   std::string output_directory;
-  std::optional<double> stroke;    // mm; none = as in the case
-  std::optional<double> end_time;  // s; none = as in the case
-  std::string search;              // "" = as in the case; else the search of every [[contact]]
-  std::vector<std::string> set;    // --set KEY=VALUE: case-file keys overridden before reading
-  int threads = 0;                 // 0 = OMP_NUM_THREADS, else every core
+  std::optional<double> stroke;         // mm; none = as in the case
+  std::optional<double> end_time;       // s; none = as in the case
+  std::string search;                   // "" = as in the case; else the search of every [[contact]]
+  std::vector<std::string> set;         // --set KEY=VALUE: case-file keys overridden before reading
+  int threads = 0;                      // 0 = OMP_NUM_THREADS, else every core
+  bool allow_geo_system_calls = false;  // --allow-geo-system-calls
   bool quiet = false;
   bool verbose = false;
 };
@@ -304,6 +306,9 @@ int main(int argc, char** argv) {
         ->required()
         ->check(CLI::ExistingFile);
     sub->add_flag("-q,--quiet", args.quiet, "print errors only");
+    sub->add_flag("--allow-geo-system-calls", args.allow_geo_system_calls,
+                  "let the case's .geo files run commands (SystemCall, OnelabRun) and Exit: only "
+                  "for files you trust");
     sub->add_flag("-v,--verbose", args.verbose,
                   "print more: gmsh's messages, every Newton iteration of a static step");
     sub->add_option("--set", args.set,
@@ -340,6 +345,7 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? sf::exit_ok : sf::exit_input_error;
   }
+  sf::geo_system_calls_allowed() = args.allow_geo_system_calls;
   if (mpi->rank() != 0) {  // one rank speaks
     sf::verbosity() = sf::Verbosity::quiet;
     sf::warnings_enabled() = false;

@@ -22,6 +22,7 @@
 
 #include "core/errors.hpp"
 #include "core/log.hpp"
+#include "io/geo_safety.hpp"
 
 namespace sf {
 namespace {
@@ -148,6 +149,9 @@ void check_mesh_source(const std::filesystem::path& file, double element_size) {
   }
   if (!(element_size >= 0.0) || !std::isfinite(element_size)) {
     throw InputError(quoted(file) + ": element size must be >= 0 mm (0 = the file's own sizes)");
+  }
+  if (ext == ".geo") {
+    check_geo_runs_no_commands(file);  // before gmsh reads it
   }
 }
 

@@ -166,5 +166,21 @@ expect "mesh -o naming a file" 2 "results folder .*a_file: cannot create it" -- 
 expect "-o under a file" 2 "results folder .*a_file/sub: cannot create it" -- \
   "$sheetform" run "$demo" --stroke 0.01 -o "$work/a_file/sub"
 
+# A case's .geo must not run commands (issue 18: SystemCall ran `touch`): SystemCall and Exit,
+# also in an included file, are refused before gmsh reads them, unless --allow-geo-system-calls.
+cp -r "$src/cases/verify_patch" "$work/geo"
+printf '// SystemCall "in a comment" is harmless;\nSystemCall "touch %s";\n' "$work/geo/marker" >> "$work/geo/blank.geo"
+expect "geo SystemCall refused" 2 "blank.geo', line [0-9]+: the statement SystemCall" -- \
+  "$sheetform" check "$work/geo/case.toml"
+[ ! -e "$work/geo/marker" ] && passed=$((passed+1)) || { echo "FAIL geo SystemCall: the command ran"; failures=$((failures+1)); }
+expect "geo SystemCall allowed" 0 "Case is valid" -- "$sheetform" check "$work/geo/case.toml" --allow-geo-system-calls
+[ -e "$work/geo/marker" ] && passed=$((passed+1)) || { echo "FAIL --allow-geo-system-calls: the command did not run"; failures=$((failures+1)); }
+printf 'Exit;\n' > "$work/geo/exit.geo"
+grep -v SystemCall "$work/geo/blank.geo" > "$work/geo/blank_include.geo"
+printf 'Include "exit.geo";\n' >> "$work/geo/blank_include.geo"
+sed 's/"blank.geo"/"blank_include.geo"/' "$work/geo/case.toml" > "$work/geo/include.toml"
+expect "geo Exit in an included file refused" 2 "exit.geo', line 1: the statement Exit" -- \
+  "$sheetform" check "$work/geo/include.toml"
+
 echo "$passed passed, $failures failed"
 [ "$failures" -eq 0 ]
