@@ -102,9 +102,17 @@ void check_file(const std::filesystem::path& file, int depth) {
           "docs/case-file.md, Security)",
           file.string(), t.line, t.word));
     }
-    if (t.word == "Include" && k + 1 < words.size() && words[k + 1].is_string) {
+    if (t.word == "Include" || t.word == "Merge") {
+      // Only a literal path can be checked; a computed one (StrCat, ...) could name anything.
+      if (k + 1 >= words.size() || !words[k + 1].is_string) {
+        throw InputError(fmt::format(
+            "'{}', line {}: {} with a computed path cannot be checked for commands; give the "
+            "path as a string (or --allow-geo-system-calls for a file you trust)",
+            file.string(), t.line, t.word));
+      }
       const std::filesystem::path included = file.parent_path() / words[k + 1].word;
-      if (std::filesystem::is_regular_file(included)) {
+      const std::string ext = included.extension().string();
+      if ((ext == ".geo" || ext.empty()) && std::filesystem::is_regular_file(included)) {
         check_file(included, depth + 1);
       }
     }

@@ -10,10 +10,10 @@ namespace sf {
 /// Whether .geo files may run commands (set once by the command line; false by default).
 bool& geo_system_calls_allowed();
 
-/// Throws InputError naming the file, the line and the statement when `geo_file`, or a file it
-/// includes (Include "..."; relative to the including file), calls SystemCall,
-/// NonBlockingSystemCall, OnelabRun or Exit, and geo_system_calls_allowed() is false. Comments
-/// and string literals are not searched.
+/// Throws InputError naming the file, the line and the statement when `geo_file`, or a .geo it
+/// includes or merges (Include "..."; Merge "..."; relative to the including file), calls
+/// SystemCall, NonBlockingSystemCall, OnelabRun or Exit, or includes a computed path, and
+/// geo_system_calls_allowed() is false. Comments and string literals are not searched.
 void check_geo_runs_no_commands(const std::filesystem::path& geo_file);
 
 }  // namespace sf

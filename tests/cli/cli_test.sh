@@ -181,6 +181,11 @@ printf 'Include "exit.geo";\n' >> "$work/geo/blank_include.geo"
 sed 's/"blank.geo"/"blank_include.geo"/' "$work/geo/case.toml" > "$work/geo/include.toml"
 expect "geo Exit in an included file refused" 2 "exit.geo', line 1: the statement Exit" -- \
   "$sheetform" check "$work/geo/include.toml"
+grep -v SystemCall "$work/geo/blank.geo" > "$work/geo/blank_computed.geo"
+printf 'Include StrCat("ex", "it.geo");\n' >> "$work/geo/blank_computed.geo"
+sed 's/"blank.geo"/"blank_computed.geo"/' "$work/geo/case.toml" > "$work/geo/computed.toml"
+expect "geo computed Include refused" 2 "Include with a computed path cannot be checked" -- \
+  "$sheetform" check "$work/geo/computed.toml"
 
 echo "$passed passed, $failures failed"
 [ "$failures" -eq 0 ]
