@@ -453,10 +453,9 @@ TEST(DynamicRelaxation, MassScalingChangesThePathNotTheStaticAnswer) {
   const double period = first_period();
   sf::Model plain = tip_force_model("dynamic_relaxation_tip_force_plain");
   const Relaxed a = relax_tip_force(plain, 0.1 * period, 20.0 * period, 1e-8);
-  sf::Model scaled =
-      tip_force_model("dynamic_relaxation_tip_force_scaled",
-                      "mass_scaling_dt = " + number(4.0 * plain.time.time_step) +
-                          "\nmass_scaling_max_added = 0.0\n");  // 15x: the limit off
+  sf::Model scaled = tip_force_model("dynamic_relaxation_tip_force_scaled",
+                                     "mass_scaling_dt = " + number(4.0 * plain.time.time_step) +
+                                         "\nmass_scaling_max_added = 0.0\n");  // 15x: the limit off
   const Relaxed b = relax_tip_force(scaled, 0.1 * period, 80.0 * period, 1e-8);
   std::printf(
       "plain: %.8f mm in %ld cycles (%ld resets); mass-scaled (added %.1f x the mass): "
