@@ -52,7 +52,7 @@ grep -q '"springback"' "$work/uch-2/summary.json" || fail "U-channel at 2 ranks:
 
 # Refused: mass scaling, more ranks than elements (exit 2, a message naming the cause, once).
 "$mpiexec" -np 2 "$sheetform" run "$work/case/case.toml" --stroke 0.1 -q -o "$work/ms" \
-  --set control.mass_scaling_dt=6e-7 > "$work/ms.log" 2>&1
+  --set control.mass_scaling_dt=6e-7 --set control.mass_scaling_max_added=0 > "$work/ms.log" 2>&1
 rc=$?
 [ "$rc" -eq 2 ] && [ "$(grep -c 'mass scaling (control.mass_scaling_dt) is not supported' "$work/ms.log")" -eq 1 ] ||
   { fail "mass scaling at 2 ranks: exit $rc, expected 2 and one message:"; cat "$work/ms.log"; }
