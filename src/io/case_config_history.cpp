@@ -5,6 +5,8 @@
 #include <array>
 #include <string_view>
 
+#include "io/result_name.hpp"
+
 namespace sf {
 namespace {
 
@@ -26,15 +28,7 @@ bool& quantity_flag(HistoryGroupConfig& h, std::size_t index) {
 
 // The group names a history column: letters, digits, '_', '-', '.' (not first).
 bool usable_in_column_names(std::string_view name) {
-  for (std::size_t i = 0; i < name.size(); ++i) {
-    const char c = name[i];
-    const bool word =
-        (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
-    if (!word && (i == 0 || (c != '-' && c != '.'))) {
-      return false;
-    }
-  }
-  return !name.empty();
+  return is_plain_name(name) && name.front() != '-';
 }
 
 void read_quantities(const TomlSection& s, bool is_static, HistoryGroupConfig& h) {

@@ -8,6 +8,7 @@
 // only its own elements' slots; the rest of the buffer is never touched.
 #include <mpi.h>
 
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -48,6 +49,30 @@ class CornerExchange {
   std::vector<double> send_buffer_;  ///< width x send_slots_.size()
   std::vector<MPI_Request> requests_;
 };
+
+/// For every held node of the plan, its entries (rank_plan.hpp) summed in list order from 0.0,
+/// W values each, handed to out(node, sums): the serial assembly's bits at every held node.
+/// corners: W per global corner slot; received: W per received corner, as
+/// CornerExchange::exchange left it. Threads share out the nodes (out writes node-own data).
+template <int W, typename Out>
+void sum_at_held_nodes(const RankPlan& plan, const double* corners, const double* received,
+                       const Out& out) {
+  const int n = static_cast<int>(plan.nodes.size());
+#pragma omp parallel for schedule(static) if (n >= 1024)
+  for (int i = 0; i < n; ++i) {
+    double sum[W] = {};
+    for (int k = plan.gather_offsets[static_cast<std::size_t>(i)];
+         k < plan.gather_offsets[static_cast<std::size_t>(i) + 1]; ++k) {
+      const int entry = plan.gather_entries[static_cast<std::size_t>(k)];
+      const double* value = entry >= 0 ? corners + W * static_cast<std::ptrdiff_t>(entry)
+                                       : received + W * static_cast<std::ptrdiff_t>(-1 - entry);
+      for (int c = 0; c < W; ++c) {
+        sum[c] += value[c];
+      }
+    }
+    out(plan.nodes[static_cast<std::size_t>(i)], sum);
+  }
+}
 
 /// The reference node gather: for every held node of the plan, its entries (rank_plan.hpp)
 /// summed in list order from 0.0, per value, into node_values (width x n_nodes, node-major like

@@ -79,40 +79,26 @@ void MpiDomain::assemble_corners(const NodeCorners& /*nodes*/, std::span<const d
     forces_.exchange(corners, received_forces_, comm_);
   }
   // As gather_corner_forces: from 0, in the node's ascending global slot order.
-  const int n = static_cast<int>(plan_.nodes.size());
-#pragma omp parallel for schedule(static) if (n >= 1024)
-  for (int i = 0; i < n; ++i) {
-    double sum[kCornerWidth] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    for (int k = plan_.gather_offsets[static_cast<std::size_t>(i)];
-         k < plan_.gather_offsets[static_cast<std::size_t>(i) + 1]; ++k) {
-      const int entry = plan_.gather_entries[static_cast<std::size_t>(k)];
-      const double* value =
-          entry >= 0
-              ? corners.data() + kCornerWidth * static_cast<std::ptrdiff_t>(entry)
-              : received_forces_.data() + kCornerWidth * static_cast<std::ptrdiff_t>(-1 - entry);
-      for (int c = 0; c < kCornerWidth; ++c) {
-        sum[c] += value[c];
-      }
-    }
-    const int node = plan_.nodes[static_cast<std::size_t>(i)];
-    for (int c = 0; c < 3; ++c) {
-      f(c, node) = sum[c];
-      m(c, node) = sum[3 + c];
-    }
-  }
+  sum_at_held_nodes<kCornerWidth>(plan_, corners.data(), received_forces_.data(),
+                                  [&](int node, const double* sum) {
+                                    for (int c = 0; c < 3; ++c) {
+                                      f(c, node) = sum[c];
+                                      m(c, node) = sum[3 + c];
+                                    }
+                                  });
 }
 
 void MpiDomain::assemble_half_thickness(const NodeCorners& nodes, std::span<const double> thickness,
                                         const VectorX& inverse_element_count,
                                         VectorX& half_thickness) {
   // Each own corner carries half its element's thickness, as gather_half_thickness adds it.
+  const int nq = nodes.n_quads;
   for (const ElementRun& run : runs_) {
     for (int e = run.begin; e < run.end; ++e) {
-      const int corners = e < nodes.n_quads ? 4 : 3;
-      const int first = e < nodes.n_quads ? 4 * e : 4 * nodes.n_quads + 3 * (e - nodes.n_quads);
-      for (int a = 0; a < corners; ++a) {
-        thickness_corners_[static_cast<std::size_t>(first + a)] =
-            0.5 * thickness[static_cast<std::size_t>(e)];
+      const double half = 0.5 * thickness[static_cast<std::size_t>(e)];
+      for (int a = 0; a < (e < nq ? 4 : 3); ++a) {
+        const int slot = e < nq ? quad_corner_slot(e, a) : triangle_corner_slot(nq, e - nq, a);
+        thickness_corners_[static_cast<std::size_t>(slot)] = half;
       }
     }
   }
@@ -120,16 +106,10 @@ void MpiDomain::assemble_half_thickness(const NodeCorners& nodes, std::span<cons
     const PhaseTimer timer(communication_seconds_);
     thickness_.exchange(thickness_corners_, received_thickness_, comm_);
   }
-  for (std::size_t i = 0; i < plan_.nodes.size(); ++i) {
-    double sum = 0.0;
-    for (int k = plan_.gather_offsets[i]; k < plan_.gather_offsets[i + 1]; ++k) {
-      const int entry = plan_.gather_entries[static_cast<std::size_t>(k)];
-      sum += entry >= 0 ? thickness_corners_[static_cast<std::size_t>(entry)]
-                        : received_thickness_[static_cast<std::size_t>(-1 - entry)];
-    }
-    const int node = plan_.nodes[i];
-    half_thickness[node] = sum * inverse_element_count[node];
-  }
+  sum_at_held_nodes<1>(plan_, thickness_corners_.data(), received_thickness_.data(),
+                       [&](int node, const double* sum) {
+                         half_thickness[node] = sum[0] * inverse_element_count[node];
+                       });
 }
 
 void MpiDomain::reduce(std::span<ExactSum> sums) {

@@ -30,8 +30,6 @@ void keep_momentum(const Model& model, SolutionState& s, double dt) {
   const double h_last = 0.5 * s.dt;
   const double h_next = 0.5 * dt;
   // Per node: the energy removed (t[0]) and the kinetic-energy drop (t[1]), summed exactly.
-  // Every node this process keeps has its velocities scaled; the energies count the owned ones.
-  const std::span<const int> owned = s.domain->owned_nodes();
   auto exact = sum_exactly<2>(s.v.cols(), [&](long i, double* t) {
     t[0] = 0.0;
     t[1] = 0.0;
@@ -58,10 +56,6 @@ void keep_momentum(const Model& model, SolutionState& s, double dt) {
       t[1] += drop;
       t[0] += drop - 0.5 * (1.0 - r) * i_old * h_next * h_next * u_omega.squaredNorm();
       s.omega.col(i) *= r;
-    }
-    if (!owned.empty() && !std::binary_search(owned.begin(), owned.end(), static_cast<int>(i))) {
-      t[0] = 0.0;
-      t[1] = 0.0;
     }
   });
   s.domain->reduce(exact);
