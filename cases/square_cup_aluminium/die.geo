@@ -3,7 +3,7 @@
 // bottom surface of the 0.81 mm blank whose mid-surface is at z = 0) out to x, y = 90, the 8 mm
 // profile radius rounding it into the opening, and the vertical opening wall down to z = -60.
 // Faces in the symmetry planes, the outer faces and the bottom face are removed.
-// Source: NUMISHEET'93 benchmark specification, values as listed in /work/shared/REFERENCES.md:
+// Source: NUMISHEET'93 benchmark specification, values as listed in ../../docs/references.md:
 // die opening 74 x 74 mm, plan corner radius 12 mm, profile radius 8 mm (grade C);
 // t = 0.81 mm (grade A). The 90 mm outer extent is our choice (beyond the 75 mm blank).
 // Mesh normals point out of the tool, towards the blank (gmsh 4.8 meshes OCC solid faces with

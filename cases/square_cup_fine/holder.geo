@@ -2,7 +2,7 @@
 // Units: mm. Only the contact side: the flat annular face at z = +0.405 (= t/2, touching the top
 // surface of the 0.81 mm blank whose mid-surface is at z = 0), from the die opening outline offset
 // by 1 mm (quarter 38 x 38 with plan corner radius 13) out to x, y = 90.
-// Source: NUMISHEET'93 benchmark specification, values as listed in /work/shared/REFERENCES.md:
+// Source: NUMISHEET'93 benchmark specification, values as listed in ../../docs/references.md:
 // die opening 74 x 74 mm, plan corner radius 12 mm (grade C); t = 0.81 mm (grade A). The 1 mm
 // offset and the 90 mm outer extent are our choices.
 // Mesh: 3-node triangles. Element size: Mesh.MeshSizeMax when the caller sets it (sheetform's

@@ -1,6 +1,6 @@
 // NUMISHEET'93 square cup: quarter of the blank (x >= 0, y >= 0; symmetry planes x = 0 and y = 0).
 // Units: mm. Mid-surface at z = 0; thickness 0.78 mm is set in the case file, not here.
-// Source: NUMISHEET'93 benchmark specification, values as listed in /work/shared/REFERENCES.md
+// Source: NUMISHEET'93 benchmark specification, values as listed in ../../docs/references.md
 // (blank 150 x 150 mm, t = 0.78 mm: grade A).
 // Mesh: structured quadrilaterals (transfinite + Recombine). Element size: Mesh.MeshSizeMax when
 // the caller sets it (sheetform's element_size, or `gmsh -2 -clmax 1.25 blank.geo`), else 2.5 mm.

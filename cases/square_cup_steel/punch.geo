@@ -3,7 +3,7 @@
 // the top surface of the 0.78 mm blank whose mid-surface is at z = 0), the 8 mm profile radius
 // and the side walls up to z = 60. Faces in the symmetry planes and the top face are removed.
 // The punch moves in -z.
-// Source: NUMISHEET'93 benchmark specification, values as listed in /work/shared/REFERENCES.md:
+// Source: NUMISHEET'93 benchmark specification, values as listed in ../../docs/references.md:
 // punch 70 x 70 mm, plan corner radius 10 mm, profile radius 8 mm (grade C); t = 0.78 mm (grade A).
 // Mesh normals point out of the tool, towards the blank (gmsh 4.8 meshes OCC solid faces with
 // outward normals; tests/io/test_gmsh_reader.cpp checks it).

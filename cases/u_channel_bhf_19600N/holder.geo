@@ -2,7 +2,7 @@
 // Units: mm. Only the contact side: the flat face at z = +0.37 (= t/2, touching the top surface
 // of the 0.74 mm strip whose mid-surface is at z = 0), from the die cavity's edge offset by
 // 1 mm (x = 36.814) out to x = 180, across the width to y = 20.
-// Source: NUMISHEET'93 benchmark specification as listed in /work/shared/REFERENCES.md
+// Source: NUMISHEET'93 benchmark specification as listed in ../../docs/references.md
 // (t = 0.74 mm, grade C). The cavity half width 35.814 mm is an assumption (die.geo); the 1 mm
 // offset, the 180 mm outer extent and the 20 mm extent across the width are our choices.
 // Mesh: 3-node triangles. Element size: Mesh.MeshSizeMax when the caller sets it (sheetform's

@@ -1,7 +1,7 @@
 // NUMISHEET'93 2-D draw bending (U-channel): quarter of the strip (x >= 0, y >= 0; symmetry
 // planes x = 0, the channel's middle, and y = 0, the strip's middle line along its length).
 // Units: mm. Mid-surface at z = 0; thickness 0.74 mm is set in the case file, not here.
-// Source: NUMISHEET'93 benchmark specification as listed in /work/shared/REFERENCES.md
+// Source: NUMISHEET'93 benchmark specification as listed in ../../docs/references.md
 // (strip 350 x 35 mm, t = 0.74 mm: grade C).
 // Mesh: structured quadrilaterals (transfinite + Recombine). Along x: Mesh.MeshSizeMax when the
 // caller sets it (sheetform's element_size, or `gmsh -2 -clmax 1 blank.geo`), else 1.25 mm,

@@ -6,7 +6,7 @@
 // x = 35.814 down to z = -80 (the punch bottom reaches z = -69.63 at the 70 mm stroke; the
 // cavity has no floor in this benchmark). Faces in y = 0, y = 20, x = 180 and z = -80 are
 // removed.
-// Source: NUMISHEET'93 benchmark specification as listed in /work/shared/REFERENCES.md: die
+// Source: NUMISHEET'93 benchmark specification as listed in ../../docs/references.md: die
 // profile radius 5 mm, punch width 70 mm (grade C); t = 0.74 mm (grade C).
 // ASSUMPTION (grade C, not from the specification): the cavity's half width 35.814 mm = the punch
 // half width 35 mm + a clearance of t + 10 % = 0.814 mm per side (cavity 71.628 mm wide); the

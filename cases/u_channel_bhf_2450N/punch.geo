@@ -5,7 +5,7 @@
 // vertical side wall x = 35 up to z = 90 (the strip's wall reaches about z = 70 above the punch
 // bottom at the 70 mm stroke). Faces in the symmetry planes x = 0 and y = 0, the outer face
 // y = 20 and the top face are removed. The punch moves in -z.
-// Source: NUMISHEET'93 benchmark specification as listed in /work/shared/REFERENCES.md: punch
+// Source: NUMISHEET'93 benchmark specification as listed in ../../docs/references.md: punch
 // width 70 mm, profile radius 5 mm (grade C); t = 0.74 mm (grade C). The 20 mm extent across
 // the width (the strip's half width is 17.5 mm) and the 90 mm height are our choices.
 // Mesh normals point out of the tool, towards the blank (gmsh 4.8 meshes OCC solid faces with
