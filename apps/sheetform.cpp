@@ -13,8 +13,13 @@
 // Each takes --set KEY=VALUE (repeatable): a case-file key overridden before the case is read,
 // e.g. --set blank.parameters.n=32 for a .geo parameter (docs/case-file.md).
 //
+// run --restart CHECKPOINT continues a run from its checkpoint (written every
+// control.checkpoint_minutes, on SIGUSR1, on Ctrl-C or SIGTERM, and at the end of the forming),
+// bit for bit as if it had not stopped (docs/restart.md).
+//
 // Exit codes: 0 success, 2 bad input, 3 the run went unstable, 4 a static step did not converge
-// (or its stiffness is singular), 1 an internal error.
+// (or its stiffness is singular), 5 stopped by Ctrl-C or SIGTERM (a checkpoint written; continue
+// with --restart), 6 the results could not be written (a full disk), 1 an internal error.
 #include <fmt/core.h>
 #include <omp.h>
 #include <CLI/CLI.hpp>
@@ -37,11 +42,14 @@
 #include "model/constraint_assembly.hpp"
 #include "parallel/mpi_domain.hpp"
 #include "parallel/mpi_session.hpp"
+#include "solver/case_digest.hpp"
+#include "solver/checkpoint.hpp"
 #include "solver/distributed_run.hpp"
 #include "solver/explicit_driver.hpp"
 #include "solver/frame_output.hpp"
 #include "solver/model_report.hpp"
 #include "solver/static_driver.hpp"
+#include "solver/stop_request.hpp"
 
 namespace fs = std::filesystem;
 
@@ -56,6 +64,9 @@ struct Arguments {
   std::vector<std::string> set;         // --set KEY=VALUE: case-file keys overridden before reading
   int threads = 0;                      // 0 = OMP_NUM_THREADS, else every core
   bool allow_geo_system_calls = false;  // --allow-geo-system-calls
+  std::string restart;                  // --restart CHECKPOINT; "" = from time 0
+  bool overwrite = false;               // --overwrite: replace an earlier run's results
+  long stop_at_cycle = -1;              // --stop-at-cycle N: a clean stop as on SIGTERM
   bool quiet = false;
   bool verbose = false;
 };
@@ -132,14 +143,55 @@ void create_results_folder(const fs::path& out) {
   }
 }
 
+// The files a run writes in its results folder (besides one .xdmf per part).
+constexpr const char* kRunFiles[] = {"results.h5", "summary.json", "checkpoint.h5",
+                                     "checkpoint.h5.tmp", "case.resolved.toml"};
+
+// A folder holding an earlier run's results is not mixed with a new run: refused, unless
+// --overwrite, which removes that run's files (and only those) first. A restart goes on in it.
+void clear_earlier_run(const Arguments& args, const fs::path& out) {
+  if (!args.restart.empty()) {
+    return;
+  }
+  std::vector<fs::path> earlier;
+  for (const char* name : kRunFiles) {
+    if (fs::exists(out / name)) {
+      earlier.push_back(out / name);
+    }
+  }
+  if (earlier.empty()) {
+    return;
+  }
+  if (!args.overwrite) {
+    throw sf::InputError(fmt::format(
+        "results folder {} holds the results of an earlier run ({}); give --overwrite to replace "
+        "them, -o another folder, or --restart {} to continue that run",
+        out.string(), earlier.front().filename().string(), sf::checkpoint_path(out).string()));
+  }
+  for (const fs::directory_entry& entry : fs::directory_iterator(out)) {
+    if (entry.path().extension() == ".xdmf") {
+      earlier.push_back(entry.path());
+    }
+  }
+  for (const fs::path& file : earlier) {
+    std::error_code error;
+    fs::remove(file, error);
+    if (error) {
+      throw sf::InputError(
+          fmt::format("--overwrite: cannot remove {} ({})", file.string(), error.message()));
+    }
+  }
+}
+
 // Rank 0 prepares the results folder and keeps the resolved case beside the results; every rank
 // learns whether that worked (a failure met by rank 0 alone must not leave the others waiting).
-void prepare_results_folder(const sf::MpiSession& mpi, const fs::path& out,
+void prepare_results_folder(const sf::MpiSession& mpi, const Arguments& args, const fs::path& out,
                             const std::string& resolved_case) {
   std::string problem;
   if (mpi.rank() == 0) {
     try {
       create_results_folder(out);
+      clear_earlier_run(args, out);
       std::ofstream file(out / "case.resolved.toml");
       file << resolved_case;
       if (!file) {
@@ -155,28 +207,6 @@ void prepare_results_folder(const sf::MpiSession& mpi, const fs::path& out,
   }
 }
 
-// FNV-1a over the bytes of the meshes a rank built (blank and tools): every rank meshes the case
-// itself, and the ranks must agree to the bit.
-std::uint64_t mesh_digest(const sf::Model& model) {
-  std::uint64_t h = 1469598103934665603ull;
-  auto add = [&h](const void* data, std::size_t bytes) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < bytes; ++i) {
-      h = (h ^ p[i]) * 1099511628211ull;
-    }
-  };
-  auto add_mesh = [&add](const sf::PartMesh& m) {
-    add(m.nodes.data(), sizeof(double) * static_cast<std::size_t>(m.nodes.size()));
-    add(m.quads.data(), sizeof(int) * static_cast<std::size_t>(m.quads.size()));
-    add(m.triangles.data(), sizeof(int) * static_cast<std::size_t>(m.triangles.size()));
-  };
-  add_mesh(model.blank.mesh);
-  for (const sf::Tool& t : model.tools) {
-    add_mesh(t.mesh);
-  }
-  return h;
-}
-
 // The share of the blank this rank computes (nullptr: all of it, a serial run).
 std::shared_ptr<sf::Domain> make_domain(const sf::MpiSession& mpi, const sf::Model& model,
                                         const std::string& case_file) {
@@ -184,7 +214,7 @@ std::shared_ptr<sf::Domain> make_domain(const sf::MpiSession& mpi, const sf::Mod
     return nullptr;
   }
   sf::check_distributable(model, case_file, mpi.size());
-  if (!mpi.same_on_all_ranks(mesh_digest(model))) {
+  if (!mpi.same_on_all_ranks(sf::mesh_digest(model))) {
     throw sf::InputError(case_file +
                          ": the MPI ranks built different meshes from the case (gmsh gave a "
                          "different mesh on some rank); write the meshes once with `sheetform "
@@ -219,6 +249,7 @@ void print_parallel_banner(const sf::MpiSession& mpi) {
 }
 
 int run(const Arguments& args, const sf::MpiSession& mpi) {
+  sf::install_run_request_handlers();  // a Ctrl-C while meshing stops at the first cycle
   const LoadedCase loaded = load(args);
   const sf::Model& model = loaded.model;
   sf::RunOptions options;
@@ -226,11 +257,17 @@ int run(const Arguments& args, const sf::MpiSession& mpi) {
   sf::print_model(loaded.config, model);
   // 3. Prepare the results folder and keep the resolved case beside the results.
   const fs::path out = output_directory(args, loaded.config);
-  prepare_results_folder(mpi, out, model.output.resolved_case);
+  if (!args.restart.empty() && model.analysis.is_static()) {
+    throw sf::InputError("--restart continues an explicit run; " + loaded.config.file.string() +
+                         " is a static analysis ([analysis] type = \"static\")");
+  }
+  prepare_results_folder(mpi, args, out, model.output.resolved_case);
   sf::log_info("Results     {}\n", out.string());
   print_parallel_banner(mpi);
   // 4. Run the explicit time loop (and springback when the case asks), or the static analysis.
   options.output_directory = out;
+  options.restart_file = args.restart.empty() ? fs::path() : fs::absolute(args.restart);
+  options.stop_at_cycle = args.stop_at_cycle;
   const sf::RunSummary summary = model.analysis.is_static() ? sf::run_static(model, options)
                                                             : sf::run_explicit(model, options);
   if (mpi.rank() != 0) {
@@ -321,6 +358,17 @@ int main(int argc, char** argv) {
   add_common(run_cmd);
   run_cmd->add_option("-o,--output", args.output_directory,
                       "results folder (default: the case's output.directory)");
+  run_cmd->add_option("--restart", args.restart,
+                      "continue the run from this checkpoint (<results>/checkpoint.h5); the "
+                      "results go on in the same folder; --stroke or --end-time may extend it");
+  run_cmd->add_flag("--overwrite", args.overwrite,
+                    "replace the results of an earlier run in the results folder (refused "
+                    "without it)");
+  run_cmd
+      ->add_option("--stop-at-cycle", args.stop_at_cycle,
+                   "stop cleanly at the end of cycle N as on SIGTERM (last frame, checkpoint, "
+                   "exit 5), to look at an early state or to test a restart")
+      ->check(CLI::PositiveNumber);
   run_cmd->add_option("--stroke", args.stroke, "override the end condition: stroke in mm");
   run_cmd->add_option("--end-time", args.end_time, "override the end condition: end time in s");
   run_cmd
@@ -385,6 +433,19 @@ int main(int argc, char** argv) {
     }
     mpi->barrier();
     return sf::exit_unstable;
+  } catch (const sf::RunStopped& e) {
+    if (speaks) {
+      std::cerr << e.what() << "\n";
+    }
+    mpi->barrier();
+    return sf::exit_stopped;
+  } catch (const sf::OutputError& e) {
+    std::cerr << "error: " << e.what()
+              << "\nWhat was written before is readable in the results folder.\n";
+    if (mpi->size() > 1) {
+      mpi->abort(sf::exit_output_error);  // rank 0's alone: the others may be waiting
+    }
+    return sf::exit_output_error;
   } catch (const sf::ConvergenceError& e) {
     if (speaks) {
       std::cerr << "error: the static step did not converge: " << e.what()

@@ -37,6 +37,12 @@ class NodeDistanceBounds {
     anchor_.col(i) = p;
     slack_[i] = slack > 0 ? slack : 0.0;
   }
+  /// The anchors (mm) and slacks (mm) as they are, for a checkpoint to keep and restore.
+  Matrix3X& anchors() { return anchor_; }
+  const Matrix3X& anchors() const { return anchor_; }
+  VectorX& slacks() { return slack_; }
+  const VectorX& slacks() const { return slack_; }
+
   /// Node i found the tool within the cutoff.
   void set_within_cutoff(int i) { slack_[i] = -1.0; }
 

@@ -535,7 +535,8 @@ void read_control(const TomlSection& top, const CaseConfig& config, ControlConfi
   const TomlSection s = *top.sub_table("control", Presence::required);
   s.check_keys({"end_time", "stroke", "stroke_tool", "output_frames", "history_interval",
                 "progress_interval", "time_step_safety", "mass_scaling_dt",
-                "mass_scaling_max_added", "energy_blowup_ratio", "gravity", "damping"});
+                "mass_scaling_max_added", "energy_blowup_ratio", "checkpoint_cycles",
+                "checkpoint_minutes", "gravity", "damping"});
   read_vector(s, "gravity", control.gravity);
   s.read_number("damping", control.damping, at_least(0.0, "1/s"));
   s.read_number("end_time", control.end_time, at_least(0.0, "s"));
@@ -557,6 +558,8 @@ void read_control(const TomlSection& top, const CaseConfig& config, ControlConfi
   s.read_number("mass_scaling_dt", control.mass_scaling_dt, at_least(0.0, "s"));
   s.read_number("mass_scaling_max_added", control.mass_scaling_max_added, at_least(0.0));
   s.read_number("energy_blowup_ratio", control.energy_blowup_ratio, greater_than(1.0));
+  s.read_integer("checkpoint_cycles", control.checkpoint_cycles, IntegerRange{.lo = 0});
+  s.read_number("checkpoint_minutes", control.checkpoint_minutes, at_least(0.0, "min"));
 
   if (s.read_string("stroke_tool", control.stroke_tool)) {
     const ToolConfig* tool = config.find_tool(control.stroke_tool);

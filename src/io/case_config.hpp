@@ -231,6 +231,9 @@ struct ControlConfig {
   /// -, largest added mass as a fraction of the physical mass; the run stops beyond it; 0 = none
   double mass_scaling_max_added = 1.0;
   double energy_blowup_ratio = 10.0;  ///< stop when total energy exceeds this x external work (+1)
+  int checkpoint_cycles = 0;          ///< cycles between checkpoints; 0 = none by cycle count
+  /// minutes of wall time between checkpoints; 0 = none by wall time
+  double checkpoint_minutes = 30.0;
   std::array<double, 3> gravity{0.0, 0.0, 0.0};  ///< mm/s^2 (forming cases: 0, or -9810 in z)
   double damping = 0.0;  ///< 1/s, mass-proportional: force -damping * m * v on every node
 };

@@ -412,6 +412,8 @@ void write_control(TomlWriter& w, const ControlConfig& c) {
   w.number("mass_scaling_max_added", c.mass_scaling_max_added,
            "fraction of the physical mass; 0 = no limit");
   w.number("energy_blowup_ratio", c.energy_blowup_ratio);
+  w.integer("checkpoint_cycles", c.checkpoint_cycles, "cycles; 0 = none by cycle count");
+  w.number("checkpoint_minutes", c.checkpoint_minutes, "min of wall time; 0 = none by time");
   w.vector("gravity", c.gravity, "mm/s^2");
   w.number("damping", c.damping, "1/s, mass-proportional");
 }

@@ -1,6 +1,9 @@
 #include "io/results_writer.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -38,6 +41,50 @@ hsize_t to_hsize(Eigen::Index n) {
   return static_cast<hsize_t>(n);
 }
 
+// Runs a write to the results; a failure of the system (a full disk, a folder gone) becomes an
+// OutputError, which the command reports with its own exit code.
+template <class Write>
+void writing(Write write) {
+  try {
+    write();
+  } catch (const InputError&) {
+    throw;
+  } catch (const OutputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw OutputError(std::string("cannot write the results: ") + e.what());
+  }
+}
+
+// A frame's fields in order, "name/node" or "name/cell" joined by commas (the frame group's
+// attribute `fields`): what a restart needs to list the frame again in the .xdmf.
+std::string field_list(const std::vector<FieldView>& fields) {
+  std::string list;
+  for (const FieldView& field : fields) {
+    list += (list.empty() ? "" : ",") + field.name +
+            (field.center == FieldCenter::cell ? "/cell" : "/node");
+  }
+  return list;
+}
+
+std::vector<std::string> split_list(const std::string& list) {
+  std::vector<std::string> items;
+  std::size_t begin = 0;
+  while (begin < list.size()) {
+    const std::size_t comma = std::min(list.find(',', begin), list.size());
+    items.push_back(list.substr(begin, comma - begin));
+    begin = comma + 1;
+  }
+  return items;
+}
+
+// A name for this run that another run will not have: the clock and the process.
+std::string new_run_id() {
+  const auto now = std::chrono::system_clock::now().time_since_epoch();
+  return std::to_string(std::chrono::duration_cast<std::chrono::nanoseconds>(now).count()) + "-" +
+         std::to_string(static_cast<long>(getpid()));
+}
+
 }  // namespace
 
 std::string frame_group_name(int index) {
@@ -46,16 +93,8 @@ std::string frame_group_name(int index) {
   return buffer;
 }
 
-ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
-                             std::vector<PartTopology> parts,
-                             std::vector<std::string> history_columns,
-                             std::vector<std::string> history_units)
-    : history_columns_(std::move(history_columns)) {
-  if (!history_units.empty() && history_units.size() != history_columns_.size()) {
-    throw std::invalid_argument(std::to_string(history_units.size()) + " history unit(s) for " +
-                                std::to_string(history_columns_.size()) + " column(s)");
-  }
-  // Check everything before touching the disk.
+void ResultsWriter::check_layout(const std::vector<PartTopology>& parts,
+                                 const std::vector<std::string>& history_columns) {
   std::set<std::string> seen;
   for (const PartTopology& part : parts) {
     check_name(part.name, "part name");
@@ -86,13 +125,33 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
     }
   }
   seen.clear();
-  for (const std::string& column : history_columns_) {
+  for (const std::string& column : history_columns) {
     check_name(column, "history column");
     if (!seen.insert(column).second) {
       throw std::invalid_argument("history column '" + column + "' is given twice");
     }
   }
+}
 
+ResultsWriter::PartRecord ResultsWriter::describe_part(const PartTopology& part) {
+  const std::string path = part_path(part.name);
+  const auto cells = static_cast<std::size_t>(part.cells.cols());
+  const auto triangles = static_cast<std::size_t>(part.triangles.cols());
+  PartRecord record;
+  record.grid.name = part.name;
+  record.grid.nodes_per_cell = part.nodes_per_cell;
+  record.grid.node_count = static_cast<std::size_t>(part.reference_nodes.cols());
+  record.grid.cell_count = cells + triangles;
+  record.grid.connectivity_dataset = path + "/connectivity";
+  if (triangles > 0) {
+    // Mixed: the flat XDMF "Mixed" array (type code, then the nodes, per cell).
+    record.grid.connectivity_dataset = path + "/mixed_connectivity";
+    record.grid.mixed_connectivity_size = 5 * cells + 4 * triangles;
+  }
+  return record;
+}
+
+void ResultsWriter::set_directory(const std::filesystem::path& directory) {
   std::error_code error;
   std::filesystem::create_directories(directory, error);
   if (error) {
@@ -100,6 +159,21 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
                      "': " + error.message());
   }
   directory_ = std::filesystem::absolute(directory).lexically_normal();
+}
+
+ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
+                             std::vector<PartTopology> parts,
+                             std::vector<std::string> history_columns,
+                             std::vector<std::string> history_units)
+    : history_columns_(std::move(history_columns)) {
+  if (!history_units.empty() && history_units.size() != history_columns_.size()) {
+    throw std::invalid_argument(std::to_string(history_units.size()) + " history unit(s) for " +
+                                std::to_string(history_columns_.size()) + " column(s)");
+  }
+  // Check everything before touching the disk.
+  check_layout(parts, history_columns_);
+  set_directory(directory);
+  run_id_ = new_run_id();
 
   try {
     h5::File file(results_file(), h5::FileMode::truncate);
@@ -119,15 +193,7 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
                                          static_cast<std::size_t>(part.reference_nodes.size())),
                  {nodes, 3});
       const hsize_t triangles = to_hsize(part.triangles.cols());
-      PartRecord record;
-      record.grid.name = part.name;
-      record.grid.nodes_per_cell = part.nodes_per_cell;
-      record.grid.node_count = static_cast<std::size_t>(nodes);
-      record.grid.cell_count = static_cast<std::size_t>(cells + triangles);
-      record.grid.connectivity_dataset = path + "/connectivity";
       if (triangles > 0) {
-        // Mixed: the triangles beside the quads, and the flat XDMF "Mixed" array (type code,
-        // then the nodes, per cell) that the .xdmf points to.
         file.write(path + "/triangle_connectivity",
                    std::span<const int>(part.triangles.data(),
                                         static_cast<std::size_t>(part.triangles.size())),
@@ -147,14 +213,11 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
           }
         }
         file.write(path + "/mixed_connectivity", std::span<const int>(mixed), {mixed.size()});
-        record.grid.connectivity_dataset = path + "/mixed_connectivity";
-        record.grid.mixed_connectivity_size = mixed.size();
       }
       // 4 quadrilaterals, 3 triangles, 0 mixed (quadrilaterals, then triangles).
       file.write_attribute(path, "nodes_per_cell", triangles > 0 ? 0 : part.nodes_per_cell);
       file.create_group(path + "/frames");
-
-      parts_.push_back(std::move(record));
+      parts_.push_back(describe_part(part));
     }
     file.create_group("/history");
     std::string column_list;
@@ -168,11 +231,94 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
     }
     file.write_attribute("/history", "columns", column_list);
     file.create_group("/run");
+    file.write_attribute("/run", "run_id", run_id_);
     file.close();
   } catch (const h5::Error& e) {
     throw InputError("cannot write results in '" + directory_.string() + "': " + e.what());
   }
   write_xdmf_files();
+}
+
+ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
+                             std::vector<PartTopology> parts,
+                             std::vector<std::string> history_columns, const Resume& resume)
+    : history_columns_(std::move(history_columns)) {
+  check_layout(parts, history_columns_);
+  directory_ = std::filesystem::absolute(directory).lexically_normal();
+  for (const PartTopology& part : parts) {
+    parts_.push_back(describe_part(part));
+  }
+  const std::string where = results_file().string();
+  if (!std::filesystem::exists(results_file())) {
+    throw InputError(where +
+                     ": missing; a restart goes on writing the results of the run its "
+                     "checkpoint comes from (give that run's results folder with -o)");
+  }
+  try {
+    h5::File file(results_file(), h5::FileMode::read_write);
+    run_id_ = file.exists("/run") ? file.read_attribute_string("/run", "run_id") : "";
+    if (run_id_ != resume.run_id) {
+      throw InputError(where + ": holds the results of another run (run " + run_id_ +
+                       ") than the checkpoint's (run " + resume.run_id +
+                       "); give the checkpoint's own results folder with -o");
+    }
+    take_up(file, resume);
+    file.close();
+  } catch (const h5::Error& e) {
+    throw InputError(where + ": cannot take up the results for the restart: " + e.what());
+  }
+  write_xdmf_files();
+}
+
+void ResultsWriter::take_up(h5::File& file, const Resume& resume) {
+  const std::string where = results_file().string();
+  for (PartRecord& record : parts_) {
+    const std::string frames = part_path(record.grid.name) + "/frames";
+    if (!file.exists(frames)) {
+      throw InputError(where + ": has no part '" + record.grid.name + "' (another case's results)");
+    }
+    // Frames the run wrote after its checkpoint: the restart writes them again.
+    for (const std::string& name : file.list(frames)) {
+      if (std::stoi(name) >= resume.frames) {
+        file.remove(frames + "/" + name);
+      }
+    }
+    for (int index = 0; index < resume.frames; ++index) {
+      const std::string group = frame_path(record.grid.name, index);
+      if (!file.exists(group)) {
+        throw InputError(where + ": frame " + std::to_string(index) + " of part '" +
+                         record.grid.name + "' is missing; the checkpoint expects " +
+                         std::to_string(resume.frames) + " frames");
+      }
+      XdmfFrame frame;
+      frame.time = file.read_attribute_double(group, "time");
+      frame.cycle = file.read_attribute_int(group, "cycle");
+      frame.coordinates_dataset = group + "/coordinates";
+      for (const std::string& entry : split_list(file.read_attribute_string(group, "fields"))) {
+        const std::size_t slash = entry.rfind('/');
+        XdmfAttribute attribute;
+        attribute.name = entry.substr(0, slash);
+        attribute.center =
+            entry.substr(slash + 1) == "cell" ? FieldCenter::cell : FieldCenter::node;
+        attribute.dataset = group + "/" + attribute.name;
+        const std::vector<hsize_t> shape = file.shape(attribute.dataset);
+        attribute.components = shape.size() == 2 ? static_cast<int>(shape[1]) : 1;
+        frame.attributes.push_back(std::move(attribute));
+      }
+      last_time_ = frame.time;
+      record.frames.push_back(std::move(frame));
+    }
+  }
+  frame_count_ = resume.frames;
+  for (const std::string& column : history_columns_) {
+    const std::string path = "/history/" + column;
+    if (!file.exists(path) || file.shape(path).at(0) < resume.history_rows) {
+      throw InputError(where + ": history column '" + column + "' is missing or holds fewer than " +
+                       std::to_string(resume.history_rows) + " rows (another case's results)");
+    }
+    file.write_rows(path, resume.history_rows, {});  // drops the rows after the checkpoint
+  }
+  history_rows_written_ = resume.history_rows;
 }
 
 ResultsWriter::~ResultsWriter() {
@@ -239,6 +385,11 @@ void ResultsWriter::check_frame(double time, const std::vector<PartFrameView>& p
 
 void ResultsWriter::write_frame(double time, int cycle, const std::vector<PartFrameView>& parts) {
   check_frame(time, parts);
+  writing([&] { write_checked_frame(time, cycle, parts); });
+}
+
+void ResultsWriter::write_checked_frame(double time, int cycle,
+                                        const std::vector<PartFrameView>& parts) {
   const int index = frame_count_;
   std::vector<XdmfFrame> new_frames(parts_.size());
   h5::File file(results_file(), h5::FileMode::read_write);
@@ -267,6 +418,7 @@ void ResultsWriter::write_frame(double time, int cycle, const std::vector<PartFr
     }
     file.write_attribute(group, "time", time);
     file.write_attribute(group, "cycle", cycle);
+    file.write_attribute(group, "fields", field_list(view.fields));
   }
   const std::size_t history_rows = write_history_rows(file);
   file.close();
@@ -294,10 +446,12 @@ void ResultsWriter::flush_history() {
   if (history_buffer_.empty()) {
     return;
   }
-  h5::File file(results_file(), h5::FileMode::read_write);
-  const std::size_t rows = write_history_rows(file);
-  file.close();
-  commit_history(rows);
+  writing([&] {
+    h5::File file(results_file(), h5::FileMode::read_write);
+    const std::size_t rows = write_history_rows(file);
+    file.close();
+    commit_history(rows);
+  });
 }
 
 std::size_t ResultsWriter::write_history_rows(h5::File& file) const {
@@ -324,13 +478,15 @@ void ResultsWriter::commit_history(std::size_t rows) {
 
 void ResultsWriter::write_run_info(const std::string& key, const std::string& text) {
   check_name(key, "run information key");
-  h5::File file(results_file(), h5::FileMode::read_write);
-  const std::string path = "/run/" + key;
-  if (file.exists(path)) {
-    file.remove(path);
-  }
-  file.write_string(path, text);
-  file.close();
+  writing([&] {
+    h5::File file(results_file(), h5::FileMode::read_write);
+    const std::string path = "/run/" + key;
+    if (file.exists(path)) {
+      file.remove(path);
+    }
+    file.write_string(path, text);
+    file.close();
+  });
 }
 
 void ResultsWriter::write_xdmf_files() const {

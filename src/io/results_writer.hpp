@@ -61,8 +61,8 @@ struct PartFrameView {
 ///
 /// Errors: a results directory that cannot be created or written throws sf::InputError naming
 /// the path; invalid arguments (unknown part, wrong sizes, bad names, time not increasing) throw
-/// std::invalid_argument before anything is written; HDF5 failures throw sf::h5::Error and
-/// other file failures std::runtime_error, each naming the file.
+/// std::invalid_argument before anything is written; a failure to write a frame, history rows or
+/// run information (a full disk) throws sf::OutputError naming the file and the system's reason.
 class ResultsWriter {
  public:
   /// Creates `directory` (and its parents) if missing, creates or truncates
@@ -74,6 +74,20 @@ class ResultsWriter {
   ResultsWriter(const std::filesystem::path& directory, std::vector<PartTopology> parts,
                 std::vector<std::string> history_columns,
                 std::vector<std::string> history_units = {});
+  /// Where a run continued from a checkpoint takes up its results: the frames and history rows
+  /// results.h5 held when the checkpoint was written, and the run it belongs to.
+  struct Resume {
+    int frames = 0;
+    std::size_t history_rows = 0;
+    std::string run_id;
+  };
+  /// Opens the existing <directory>/results.h5 of the same parts and history columns to go on
+  /// writing it: frames and history rows written after `resume` (by the run after its
+  /// checkpoint) are dropped, the .xdmf files rewritten to list the frames kept. Throws
+  /// InputError naming the file when it is missing, of another run, or holds fewer frames or
+  /// rows than `resume`.
+  ResultsWriter(const std::filesystem::path& directory, std::vector<PartTopology> parts,
+                std::vector<std::string> history_columns, const Resume& resume);
   ResultsWriter(const ResultsWriter&) = delete;
   ResultsWriter& operator=(const ResultsWriter&) = delete;
   /// Flushes buffered history rows (errors are reported as a warning, not thrown).
@@ -95,6 +109,9 @@ class ResultsWriter {
   /// replacing an earlier one of the same key.
   void write_run_info(const std::string& key, const std::string& text);
 
+  /// The identity of the run that created results.h5 (attribute run_id of /run): a restart
+  /// checks that its checkpoint belongs to the same run.
+  const std::string& run_id() const { return run_id_; }
   /// Number of frames written so far.
   int frame_count() const { return frame_count_; }
   /// History rows written to results.h5 so far (not counting buffered ones).
@@ -112,8 +129,15 @@ class ResultsWriter {
     std::vector<XdmfFrame> frames;  ///< one per frame written
   };
 
+  static void check_layout(const std::vector<PartTopology>& parts,
+                           const std::vector<std::string>& history_columns);
+  static PartRecord describe_part(const PartTopology& part);
+  void set_directory(const std::filesystem::path& directory);
+  /// Drops what a run wrote after its checkpoint and reads back the frames kept.
+  void take_up(h5::File& file, const Resume& resume);
   const PartRecord& find_part(const std::string& name) const;
   void check_frame(double time, const std::vector<PartFrameView>& parts) const;
+  void write_checked_frame(double time, int cycle, const std::vector<PartFrameView>& parts);
   /// Writes the buffered rows into the open file; returns how many (commit_history after close).
   std::size_t write_history_rows(h5::File& file) const;
   void commit_history(std::size_t rows);
@@ -126,6 +150,7 @@ class ResultsWriter {
   std::size_t history_rows_written_ = 0;
   int frame_count_ = 0;
   double last_time_ = 0.0;
+  std::string run_id_;
 };
 
 /// The name of frame `index`'s group: zero-padded to 6 digits ("000003").

@@ -491,6 +491,8 @@ void copy_plans(const CaseConfig& config, Model& model) {
   OutputPlan& output = model.output;
   output.frames = config.control.output_frames;
   output.history_interval = config.control.history_interval;
+  output.checkpoint_cycles = config.control.checkpoint_cycles;
+  output.checkpoint_minutes = config.control.checkpoint_minutes;
   output.stress_layers = config.output.stress_layers;
   output.units = config.units;
   output.draw_ins = config.draw_ins;

@@ -139,6 +139,8 @@ struct OutputPlan {
   std::vector<HistoryGroupConfig> history_groups;
   std::vector<ReactionEntry> reactions;  ///< in the case's order: boundaries, velocities, motions
   std::string resolved_case;  ///< the resolved case as TOML (kept in results.h5 and beside it)
+  int checkpoint_cycles = 0;  ///< cycles between checkpoints (0: none by count)
+  double checkpoint_minutes = 30.0;  ///< min of wall time between checkpoints (0: none by time)
 };
 
 /// The blank's state at time 0 besides its mesh.

@@ -163,6 +163,13 @@ PhaseError MpiDomain::agree(PhaseError local) {
   return agreed;
 }
 
+int MpiDomain::agree_flags(int flags) {
+  const PhaseTimer timer(communication_seconds_);
+  int all = 0;
+  MPI_Allreduce(&flags, &all, 1, MPI_INT, MPI_BOR, comm_);
+  return all;
+}
+
 MpiDomain::RootLayout MpiDomain::gather_layout(std::span<const int> mine, MPI_Comm comm, int rank,
                                                int ranks) {
   RootLayout layout;

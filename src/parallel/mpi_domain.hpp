@@ -42,6 +42,7 @@ class MpiDomain final : public Domain {
   void reduce(std::span<ExactSum> sums) override;
   StableStep smallest_time_step(std::span<const double> element_dt) override;
   PhaseError agree(PhaseError local) override;
+  int agree_flags(int flags) override;
   void gather_nodes(std::span<double> data, int width) override;
   void gather_elements(std::span<double> data, int width) override;
   std::vector<double> gather_values(std::span<const double> values) override;

@@ -73,6 +73,10 @@ class Domain {
   /// no process failed). Collective: every process calls it, failed or not.
   virtual PhaseError agree(PhaseError local) = 0;
 
+  /// The bitwise OR of every process's `flags` (requests such as "write a checkpoint", "stop"
+  /// that one process may have received alone). Collective.
+  virtual int agree_flags(int flags) = 0;
+
   /// The whole field on the output process (is_root): each entry written by its owner. data
   /// holds `width` doubles per node (gather_nodes) or per element (gather_elements), full size.
   /// Collective; no-ops in a serial run.
@@ -114,6 +118,7 @@ class SerialDomain final : public Domain {
     return sf::smallest_time_step(element_dt);
   }
   PhaseError agree(PhaseError local) override { return local; }
+  int agree_flags(int flags) override { return flags; }
   void gather_nodes(std::span<double> /*data*/, int /*width*/) override {}
   void gather_elements(std::span<double> /*data*/, int /*width*/) override {}
   std::vector<double> gather_values(std::span<const double> values) override {

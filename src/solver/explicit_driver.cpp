@@ -6,15 +6,134 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/build_info.hpp"
 #include "core/errors.hpp"
 #include "core/log.hpp"
+#include "solver/case_digest.hpp"
+#include "solver/checkpoint.hpp"
 #include "solver/frame_output.hpp"
 #include "solver/output_schedule.hpp"
 #include "solver/progress.hpp"
 #include "solver/springback.hpp"
 #include "solver/state_gather.hpp"
+#include "solver/stop_request.hpp"
 
 namespace sf {
+
+namespace {
+
+// Installs the SIGINT, SIGTERM and SIGUSR1 handlers for the time loop and puts back the default
+// actions after it: a Ctrl-C during springback ends the process as before (the checkpoint at the
+// end of the forming lets a restart do the springback again).
+class RunRequestScope {
+ public:
+  // The command installs them before it meshes the case (a request met then stops the run at
+  // the end of its first cycle); installing them again is harmless.
+  RunRequestScope() { install_run_request_handlers(); }
+  ~RunRequestScope() { restore_default_signal_actions(); }
+  RunRequestScope(const RunRequestScope&) = delete;
+  RunRequestScope& operator=(const RunRequestScope&) = delete;
+};
+
+// The checkpoints of one run: when they are due and writing them (collective).
+class Checkpoints {
+ public:
+  Checkpoints(const Model& model, const RunOptions& options)
+      : enabled_(options.checkpoints && options.write_results),
+        file_(checkpoint_path(options.output_directory)),
+        digest_(case_digest(model)),
+        cycles_(model.output.checkpoint_cycles),
+        seconds_(60.0 * model.output.checkpoint_minutes),
+        last_(std::chrono::steady_clock::now()) {}
+
+  const std::filesystem::path& file() const { return file_; }
+  const std::string& digest() const { return digest_; }
+
+  // Whether the case's interval asks for one after this cycle (this process's clock).
+  bool due(long cycle) const {
+    if (!enabled_) {
+      return false;
+    }
+    const double since =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - last_).count();
+    return (cycles_ > 0 && cycle % cycles_ == 0) || (seconds_ > 0.0 && since >= seconds_);
+  }
+
+  // Every process calls it; the output process writes the file.
+  void write(const Model& model, SolutionState& s, FrameOutput* output, const LoopMark& loop) {
+    if (!enabled_) {
+      return;
+    }
+    const PhaseTimer timer(s.times.output);
+    gather_checkpoint_state_to_root(s);
+    if (output) {
+      const CheckpointInfo info{digest_, build_info::git_hash, model.time.end_time, loop,
+                                output->mark()};
+      write_checkpoint(file_, s, info);
+      log_info("Checkpoint  t = {:.6e} s, cycle {}: {}\n", s.time, s.cycle, file_.string());
+    }
+    last_ = std::chrono::steady_clock::now();
+  }
+
+ private:
+  bool enabled_;
+  std::filesystem::path file_;
+  std::string digest_;
+  int cycles_;
+  double seconds_;
+  std::chrono::steady_clock::time_point last_;
+};
+
+// Reads the checkpoint into the state (every process reads the file) after checking that it
+// belongs to this case.
+CheckpointInfo resume_state(const Model& model, const RunOptions& options,
+                            const std::string& digest, SolutionState& s) {
+  const std::string file = options.restart_file.string();
+  CheckpointInfo info = read_checkpoint(options.restart_file, s);
+  if (info.case_digest != digest) {
+    throw InputError(fmt::format(
+        "{}: the case changed since this checkpoint was written (its physics digest {} against "
+        "the case's {}); a restart may change only control.end_time or control.stroke, the "
+        "output and checkpoint intervals and the results folder; run a changed case from the "
+        "start",
+        file, info.case_digest, digest));
+  }
+  if (info.git_hash != build_info::git_hash) {
+    log_warning(
+        "{} was written by build {}, this is build {}: the run goes on, but its bits may differ "
+        "from those of an uninterrupted run\n",
+        file, info.git_hash, build_info::git_hash);
+  }
+  if (s.time >= model.time.end_time * (1.0 - 1e-12)) {
+    log_warning(
+        "{}: the checkpoint is at t = {:.6e} s, at or past the end time {:.6e} s: "
+        "nothing is left to run (give a longer --stroke or --end-time to go on)\n",
+        file, s.time, model.time.end_time);
+  }
+  log_info("Restarted   from {} at t = {:.6e} s, cycle {}\n", file, s.time, s.cycle);
+  return info;
+}
+
+// Stops the run on a SIGINT or SIGTERM at the end of a cycle: the checkpoint first (so that a
+// restart drops the extra frame below and gives the uninterrupted run's results), then a frame
+// and a history row of the state at the stop for the user to look at.
+[[noreturn]] void stop_cleanly(const Model& model, SolutionState& s, FrameOutput* output,
+                               Checkpoints& checkpoints, const LoopMark& loop) {
+  checkpoints.write(model, s, output, loop);  // gathers the state
+  if (output) {
+    output->write_stop_state(model, s, loop.last_frame_time);
+  }
+  const std::string file = checkpoints.file().string();
+  throw RunStopped(fmt::format(
+      "Stopped by {} at t = {:.6e} s, cycle {}: the last frame is the state at the stop, and the "
+      "checkpoint is {}\nContinue with: sheetform run {} --restart {} -o {} (with this run's "
+      "--set, "
+      "--search, --stroke or --end-time options)",
+      *stop_signal_name() ? stop_signal_name() : "--stop-at-cycle", s.time, s.cycle, file,
+      model.case_file.string(), file, checkpoints.file().parent_path().string()));
+}
+
+}  // namespace
 
 RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionState* final_state) {
   const auto wall_start = std::chrono::steady_clock::now();
@@ -28,18 +147,32 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
     s.tools[t].travel = model.tools[t].motion.travel(0.0);
     s.tools[t].speed = model.tools[t].motion.speed(0.0);
   }
-
-  std::unique_ptr<FrameOutput> output;
-  if (options.write_results && root) {
-    output = std::make_unique<FrameOutput>(model, options.output_directory);
-  }
   compute_forces(model, s, 0.0);
-  if (options.write_results) {
-    gather_state_to_root(s);
-  }
-  if (output) {
-    output->write_frame(model, s);
-    output->append_history(model, s);
+
+  RunRequestScope requests;
+  Checkpoints checkpoints(model, options);
+  OutputSchedule schedule(0.0, model.time.end_time, model.output.frames,
+                          model.output.history_interval);
+  LoopMark loop;
+  std::unique_ptr<FrameOutput> output;
+  if (!options.restart_file.empty()) {
+    const CheckpointInfo info = resume_state(model, options, checkpoints.digest(), s);
+    loop = info.loop;
+    if (options.write_results && root) {
+      output = std::make_unique<FrameOutput>(model, options.output_directory, info.output);
+    }
+    schedule.after_step(s.time, s.cycle);  // the frame times passed before the checkpoint
+  } else {
+    if (options.write_results && root) {
+      output = std::make_unique<FrameOutput>(model, options.output_directory);
+    }
+    if (options.write_results) {
+      gather_state_to_root(s);
+    }
+    if (output) {
+      output->write_frame(model, s);
+      output->append_history(model, s);
+    }
   }
 
   // Energy scale below which the blow-up check is silent: the blank's kinetic energy at the
@@ -52,19 +185,14 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
   }
   const double energy_scale = 1e-3 * 0.5 * s.mass.sum() * max_speed * max_speed;
 
-  OutputSchedule schedule(0.0, model.time.end_time, model.output.frames,
-                          model.output.history_interval);
   const double initial_dt = model.time.time_step;
-  double dt_previous = 0.0;
-  double last_frame_time = 0.0;  // s, of the last frame written (the first is at t = 0)
   Progress progress(model, model.time.progress_interval);
   // Added mass above this share of the physical mass is worth a warning (once).
   constexpr double warn_fraction = 0.05;
-  bool warned = false;
   auto warn_about_added_mass = [&]() {
     const double fraction = s.scaling.added_mass / model.blank.physical_mass;
-    if (!warned && fraction > warn_fraction) {
-      warned = true;
+    if (!loop.warned_added_mass && fraction > warn_fraction) {
+      loop.warned_added_mass = true;
       log_warning(
           "mass scaling has added {:.2f} % of the blank's mass by t = {:.6e} s, cycle {} ({} "
           "elements scaled); check that the inertia forces stay small (kinetic / internal energy) "
@@ -89,8 +217,8 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
       // at w dt = 0.87), and frame after frame that pumped energy into the flange's contact
       // chatter (the U-channel's energy balance grew 2x per frame, to 1.5e-4 at 10 mm).
       dt = std::min(dt, model.time.end_time - s.time);
-      advance_one_step(model, s, dt, dt_previous);
-      dt_previous = dt;
+      advance_one_step(model, s, dt, loop.dt_previous);
+      loop.dt_previous = dt;
       if (s.time > 0.1 * model.time.end_time) {
         s.peak_kinetic_ratio = std::max(s.peak_kinetic_ratio, s.energies.kinetic_ratio());
       }
@@ -110,9 +238,19 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
       }
       if (output && due.frame) {
         output->write_frame(model, s);
-        last_frame_time = s.time;
+        loop.last_frame_time = s.time;
       }
       progress.report(model, s, false);
+      // Requests by signal or by the checkpoint interval, agreed by every process.
+      const int asked = s.domain->agree_flags(
+          take_run_requests() | (checkpoints.due(s.cycle) ? request_checkpoint : 0) |
+          (s.cycle == options.stop_at_cycle ? request_stop : 0));
+      if (asked & request_stop) {
+        stop_cleanly(model, s, output.get(), checkpoints, loop);
+      }
+      if (asked & request_checkpoint) {
+        checkpoints.write(model, s, output.get(), loop);
+      }
     }
   } catch (const InstabilityError& error) {
     // Keep what a user needs to see the failure: the history up to the stop and, when the nodes
@@ -124,9 +262,12 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
       gather_state_to_root(s);
     }
     const std::string last_frame =
-        output ? output->write_stop_state(model, s, last_frame_time) : std::string();
+        output ? output->write_stop_state(model, s, loop.last_frame_time) : std::string();
     throw InstabilityError(error.what() + last_frame);
   }
+  // The end of the forming: a checkpoint that a restart with a longer stroke or end time goes on
+  // from (before the last history row, which such a restart does not repeat).
+  checkpoints.write(model, s, output.get(), loop);
   gather_state_to_root(s);
   if (output) {
     output->append_history(model, s);
@@ -163,6 +304,7 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
     s.domain = std::make_shared<SerialDomain>();
   }
   if (model.springback) {
+    restore_default_signal_actions();
     summary.springback = run_springback(model, s, output.get());
     if (output) {
       output->flush();

@@ -54,6 +54,51 @@ std::vector<HistoryColumn> history_columns(const Model& model) {
 
 FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& directory)
     : audits_(model) {
+  std::vector<PartTopology> parts = set_up(model);
+  std::vector<std::string> names, units;
+  for (HistoryColumn& column : history_columns(model)) {
+    names.push_back(std::move(column.name));
+    units.push_back(std::move(column.unit));
+  }
+  writer_ = std::make_unique<ResultsWriter>(directory, std::move(parts), std::move(names),
+                                            std::move(units));
+  writer_->write_run_info("resolved_case", model.output.resolved_case);
+  writer_->write_run_info("version", build_info::version);
+  writer_->write_run_info("git_hash", build_info::git_hash);
+  writer_->write_run_info("build", std::string(build_info::build_type) + ", " +
+                                       build_info::compiler + ", flags: " + build_info::cxx_flags);
+}
+
+FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& directory,
+                         const OutputMark& mark)
+    : audits_(model) {
+  std::vector<PartTopology> parts = set_up(model);
+  std::vector<std::string> names;
+  for (HistoryColumn& column : history_columns(model)) {
+    names.push_back(std::move(column.name));
+  }
+  writer_ = std::make_unique<ResultsWriter>(
+      directory, std::move(parts), std::move(names),
+      ResultsWriter::Resume{mark.frames, mark.history_rows, mark.run_id});
+  // The case may have a later end (an extended stroke): the results say which case made them.
+  writer_->write_run_info("resolved_case", model.output.resolved_case);
+  last_history_cycle_ = mark.last_history_cycle;
+  audits_.restore(mark.audits, mark.last_audit_cycle);
+}
+
+OutputMark FrameOutput::mark() {
+  writer_->flush_history();
+  OutputMark m;
+  m.frames = writer_->frame_count();
+  m.history_rows = writer_->history_rows_written();
+  m.last_history_cycle = last_history_cycle_;
+  m.run_id = writer_->run_id();
+  m.audits = audits_.records();
+  m.last_audit_cycle = audits_.last_cycle();
+  return m;
+}
+
+std::vector<PartTopology> FrameOutput::set_up(const Model& model) {
   std::vector<PartTopology> parts;
   PartTopology blank;
   blank.name = "blank";
@@ -79,19 +124,7 @@ FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& direct
     tool_coordinates_.push_back(t.mesh.nodes);
     tool_displacement_.push_back(Matrix3X::Zero(3, t.mesh.nodes.cols()));
   }
-  std::vector<std::string> names, units;
-  for (HistoryColumn& column : history_columns(model)) {
-    names.push_back(std::move(column.name));
-    units.push_back(std::move(column.unit));
-  }
-  row_.resize(names.size());
-  writer_ = std::make_unique<ResultsWriter>(directory, std::move(parts), std::move(names),
-                                            std::move(units));
-  writer_->write_run_info("resolved_case", model.output.resolved_case);
-  writer_->write_run_info("version", build_info::version);
-  writer_->write_run_info("git_hash", build_info::git_hash);
-  writer_->write_run_info("build", std::string(build_info::build_type) + ", " +
-                                       build_info::compiler + ", flags: " + build_info::cxx_flags);
+  row_.resize(history_columns(model).size());
   const Eigen::Index n_elements = element_count(model.blank.part);
   displacement_.resize(3, model.blank.mesh.nodes.cols());
   has_springback_field_ = model.springback.has_value();
@@ -108,6 +141,7 @@ FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& direct
   needs_reactions_ = history_needs_reactions(model);
   reaction_force_ = Matrix3X::Zero(3, model.blank.mesh.nodes.cols());
   reaction_moment_ = Matrix3X::Zero(3, model.blank.mesh.nodes.cols());
+  return parts;
 }
 
 void FrameOutput::write_frame(const Model& model, const SolutionState& s) {

@@ -13,10 +13,27 @@
 
 namespace sf {
 
+/// Where the output of a run stands, as a checkpoint keeps it: the frames and history rows in
+/// results.h5, the run they belong to, the cycle of the last history row, and the search audits'
+/// counts over the run (their per-node fields are not kept: the next audit makes them).
+struct OutputMark {
+  int frames = 0;
+  std::size_t history_rows = 0;
+  long last_history_cycle = -1;
+  std::string run_id;
+  std::vector<SearchAuditRecord> audits;
+  long last_audit_cycle = -1;
+};
+
 class FrameOutput {
  public:
   /// Creates the results directory's files, and writes the resolved case and build information.
   FrameOutput(const Model& model, const std::filesystem::path& directory);
+  /// Takes up the results a run wrote in `directory` up to its checkpoint `mark` (a restart):
+  /// what it wrote after the checkpoint is dropped, to be written again.
+  FrameOutput(const Model& model, const std::filesystem::path& directory, const OutputMark& mark);
+  /// Writes the buffered history rows and returns where the output stands (for a checkpoint).
+  OutputMark mark();
   void write_frame(const Model& model, const SolutionState& state);
   /// Buffers a history row of the current state (none if this cycle has one already).
   void append_history(const Model& model, const SolutionState& state);
@@ -38,6 +55,9 @@ class FrameOutput {
   const SearchAuditRecorder& search_audits() const { return audits_; }
 
  private:
+  /// The parts (blank, then the tools) and sizes the buffers.
+  std::vector<PartTopology> set_up(const Model& model);
+
   std::unique_ptr<ResultsWriter> writer_;
   SearchAuditRecorder audits_;
   Matrix3X displacement_;

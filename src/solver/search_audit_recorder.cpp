@@ -42,4 +42,18 @@ void SearchAuditRecorder::record(const Model& model, const SolutionState& s) {
   }
 }
 
+void SearchAuditRecorder::restore(const std::vector<SearchAuditRecord>& counts, long last_cycle) {
+  for (std::size_t a = 0; a < records_.size() && a < counts.size(); ++a) {
+    SearchAuditRecord& r = records_[a];
+    const SearchAuditRecord& c = counts[a];
+    r.last = c.last;
+    r.audits = c.audits;
+    r.max_misses = c.max_misses;
+    r.max_misses_time = c.max_misses_time;
+    r.total_misses = c.total_misses;
+    r.max_gap_error = c.max_gap_error;
+  }
+  last_cycle_ = last_cycle;
+}
+
 }  // namespace sf

@@ -34,6 +34,11 @@ class SearchAuditRecorder {
   /// Audits the state (once per cycle: a second call in the same cycle does nothing).
   void record(const Model& model, const SolutionState& state);
   const std::vector<SearchAuditRecord>& records() const { return records_; }
+  /// The cycle of the last audit (-1: none yet).
+  long last_cycle() const { return last_cycle_; }
+  /// A restart: the counts over the run so far (audits, misses, their maxima) and the cycle of
+  /// the last audit, from a checkpoint; the per-node fields are those of the next audit.
+  void restore(const std::vector<SearchAuditRecord>& counts, long last_cycle);
 
  private:
   std::vector<SearchAudit> audits_;

@@ -1,5 +1,7 @@
 #include "solver/state_gather.hpp"
 
+#include "solver/checkpoint_fields.hpp"
+
 namespace sf {
 
 namespace {
@@ -20,7 +22,40 @@ void gather_element_field(Domain& domain, std::vector<double>& field, int n_elem
   domain.gather_elements(field, static_cast<int>(field.size()) / n_elements);
 }
 
+// Gathers the checkpoint's per-node and per-element arrays; scalars are the same on every
+// process (exact all-reduces, replicated tools) and stay as they are.
+class CheckpointGather {
+ public:
+  explicit CheckpointGather(Domain& domain) : domain_(domain) {}
+  template <class T>
+  void scalar(const std::string& /*name*/, T& /*value*/) {}
+  void nodes(const std::string& /*name*/, Matrix3X& a) {
+    if (a.size() > 0) {  // empty alike on every process (friction, distance bounds off)
+      gather_node_field(domain_, a);
+    }
+  }
+  void nodes(const std::string& /*name*/, VectorX& a) {
+    if (a.size() > 0) {
+      gather_node_field(domain_, a);
+    }
+  }
+  void elements(const std::string& /*name*/, std::vector<double>& a, int n) {
+    gather_element_field(domain_, a, n);
+  }
+
+ private:
+  Domain& domain_;
+};
+
 }  // namespace
+
+void gather_checkpoint_state_to_root(SolutionState& s) {
+  if (s.domain->processes() == 1) {
+    return;
+  }
+  CheckpointGather gather(*s.domain);
+  visit_checkpoint_fields(gather, s);
+}
 
 void gather_state_to_root(SolutionState& s) {
   Domain& domain = *s.domain;

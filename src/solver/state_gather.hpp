@@ -11,4 +11,7 @@ namespace sf {
 /// state is completed; the others' is left as it was.
 void gather_state_to_root(SolutionState& s);
 
+/// Likewise for a checkpoint: every field the checkpoint keeps (solver/checkpoint_fields.hpp).
+void gather_checkpoint_state_to_root(SolutionState& s);
+
 }  // namespace sf

@@ -184,6 +184,8 @@ time_step_safety = 0.8
 mass_scaling_dt = 1e-7
 mass_scaling_max_added = 0.05
 energy_blowup_ratio = 5
+checkpoint_cycles = 5000
+checkpoint_minutes = 10.5
 
 [output]
 directory = "out/run1"

@@ -65,6 +65,8 @@ TEST_F(ReadCase, MinimalCaseGetsEveryDocumentedDefault) {
   EXPECT_EQ(c.control.time_step_safety, 0.9);
   EXPECT_EQ(c.control.mass_scaling_dt, 0.0);
   EXPECT_EQ(c.control.mass_scaling_max_added, 1.0);
+  EXPECT_EQ(c.control.checkpoint_cycles, 0);
+  EXPECT_EQ(c.control.checkpoint_minutes, 30.0);
   EXPECT_EQ(c.control.energy_blowup_ratio, 10.0);
 
   EXPECT_EQ(c.output.directory, (dir_ / "results").string());
@@ -212,6 +214,8 @@ TEST_F(ReadCase, FullCaseReadsEveryValue) {
   EXPECT_EQ(c.control.time_step_safety, 0.8);
   EXPECT_EQ(c.control.mass_scaling_dt, 1e-7);
   EXPECT_EQ(c.control.mass_scaling_max_added, 0.05);
+  EXPECT_EQ(c.control.checkpoint_cycles, 5000);
+  EXPECT_EQ(c.control.checkpoint_minutes, 10.5);
   EXPECT_EQ(c.control.energy_blowup_ratio, 5.0);
 
   EXPECT_EQ(c.output.directory, (dir_ / "out" / "run1").string());
@@ -537,6 +541,8 @@ void expect_same_case(const sf::CaseConfig& a, const sf::CaseConfig& b) {
   EXPECT_EQ(a.control.mass_scaling_dt, b.control.mass_scaling_dt);
   EXPECT_EQ(a.control.mass_scaling_max_added, b.control.mass_scaling_max_added);
   EXPECT_EQ(a.control.energy_blowup_ratio, b.control.energy_blowup_ratio);
+  EXPECT_EQ(a.control.checkpoint_cycles, b.control.checkpoint_cycles);
+  EXPECT_EQ(a.control.checkpoint_minutes, b.control.checkpoint_minutes);
   EXPECT_EQ(a.output.directory, b.output.directory);
   EXPECT_EQ(a.output.stress_layers, b.output.stress_layers);
 }

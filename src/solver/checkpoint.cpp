@@ -1,0 +1,207 @@
+#include "solver/checkpoint.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <system_error>
+
+#include "core/build_info.hpp"
+#include "core/errors.hpp"
+#include "io/hdf5_file.hpp"
+#include "solver/checkpoint_fields.hpp"
+
+namespace sf {
+
+namespace {
+
+constexpr const char* kFormat = "sheetform checkpoint";
+constexpr int kFormatVersion = 1;
+
+std::span<const double> values(const double* data, Eigen::Index size) {
+  return {data, static_cast<std::size_t>(size)};
+}
+
+// Writes every field as a dataset under /state: scalars as one value (integers are exact in a
+// double below 2^53), arrays flat, in their memory order.
+class FieldWriter {
+ public:
+  explicit FieldWriter(h5::File& file) : file_(file) {}
+  void scalar(const std::string& name, double value) { write(name, values(&value, 1)); }
+  void scalar(const std::string& name, long value) { scalar(name, static_cast<double>(value)); }
+  void scalar(const std::string& name, int value) { scalar(name, static_cast<double>(value)); }
+  void scalar(const std::string& name, bool value) { scalar(name, value ? 1.0 : 0.0); }
+  void nodes(const std::string& name, const Matrix3X& a) {
+    write(name, values(a.data(), a.size()));
+  }
+  void nodes(const std::string& name, const VectorX& a) { write(name, values(a.data(), a.size())); }
+  void elements(const std::string& name, const std::vector<double>& a, int /*n*/) {
+    write(name, a);
+  }
+
+ private:
+  void write(const std::string& name, std::span<const double> data) {
+    file_.write("/state/" + name, data, {data.size()});
+  }
+  h5::File& file_;
+};
+
+// Reads every field back into a state of the model's sizes; a size that differs is the
+// checkpoint of another model.
+class FieldReader {
+ public:
+  FieldReader(const h5::File& file, std::string where) : file_(file), where_(std::move(where)) {}
+  void scalar(const std::string& name, double& value) { value = read(name, 1).front(); }
+  void scalar(const std::string& name, long& value) { value = whole<long>(name); }
+  void scalar(const std::string& name, int& value) { value = whole<int>(name); }
+  void scalar(const std::string& name, bool& value) { value = whole<int>(name) != 0; }
+  void nodes(const std::string& name, Matrix3X& a) { copy(name, a.data(), a.size()); }
+  void nodes(const std::string& name, VectorX& a) { copy(name, a.data(), a.size()); }
+  void elements(const std::string& name, std::vector<double>& a, int /*n*/) {
+    copy(name, a.data(), static_cast<Eigen::Index>(a.size()));
+  }
+
+ private:
+  std::vector<double> read(const std::string& name, std::size_t expected) {
+    const std::string path = "/state/" + name;
+    if (!file_.exists(path)) {
+      throw InputError(
+          fmt::format("{}: no entry {} (a checkpoint of another version?)", where_, path));
+    }
+    std::vector<double> data = file_.read_doubles(path);
+    if (data.size() != expected) {
+      throw InputError(fmt::format(
+          "{}: entry {} holds {} values, the case's model needs {} (a checkpoint of another "
+          "mesh or case)",
+          where_, path, data.size(), expected));
+    }
+    return data;
+  }
+  template <class Integer>
+  Integer whole(const std::string& name) {
+    const double value = read(name, 1).front();
+    return static_cast<Integer>(std::llround(value));
+  }
+  void copy(const std::string& name, double* target, Eigen::Index size) {
+    const std::vector<double> data = read(name, static_cast<std::size_t>(size));
+    std::copy(data.begin(), data.end(), target);
+  }
+  const h5::File& file_;
+  std::string where_;
+};
+
+void write_info(h5::File& file, const CheckpointInfo& info) {
+  file.write_attribute("/", "format", std::string(kFormat));
+  file.write_attribute("/", "format_version", kFormatVersion);
+  file.write_attribute("/", "case_digest", info.case_digest);
+  file.write_attribute("/", "git_hash", info.git_hash);
+  file.write_attribute("/", "end_time", info.end_time);
+  file.create_group("/loop");
+  file.write_attribute("/loop", "dt_previous", info.loop.dt_previous);
+  file.write_attribute("/loop", "last_frame_time", info.loop.last_frame_time);
+  file.write_attribute("/loop", "warned_added_mass", info.loop.warned_added_mass ? 1 : 0);
+  const OutputMark& o = info.output;
+  file.create_group("/output");
+  file.write_attribute("/output", "frames", o.frames);
+  file.write_attribute("/output", "history_rows", static_cast<double>(o.history_rows));
+  file.write_attribute("/output", "last_history_cycle", static_cast<double>(o.last_history_cycle));
+  file.write_attribute("/output", "run_id", o.run_id);
+  file.write_attribute("/output", "last_audit_cycle", static_cast<double>(o.last_audit_cycle));
+  file.write_attribute("/output", "audits", static_cast<int>(o.audits.size()));
+  for (std::size_t a = 0; a < o.audits.size(); ++a) {
+    const SearchAuditRecord& r = o.audits[a];
+    const std::vector<double> counts = {static_cast<double>(r.last.nodes_checked),
+                                        static_cast<double>(r.last.misses),
+                                        r.last.max_gap_error,
+                                        static_cast<double>(r.audits),
+                                        static_cast<double>(r.max_misses),
+                                        r.max_misses_time,
+                                        static_cast<double>(r.total_misses),
+                                        r.max_gap_error};
+    file.write("/output/audit" + std::to_string(a), counts, {counts.size()});
+  }
+}
+
+CheckpointInfo read_info(const h5::File& file, const std::string& where) {
+  CheckpointInfo info;
+  info.case_digest = file.read_attribute_string("/", "case_digest");
+  info.git_hash = file.read_attribute_string("/", "git_hash");
+  info.end_time = file.read_attribute_double("/", "end_time");
+  info.loop.dt_previous = file.read_attribute_double("/loop", "dt_previous");
+  info.loop.last_frame_time = file.read_attribute_double("/loop", "last_frame_time");
+  info.loop.warned_added_mass = file.read_attribute_int("/loop", "warned_added_mass") != 0;
+  OutputMark& o = info.output;
+  o.frames = file.read_attribute_int("/output", "frames");
+  o.history_rows = static_cast<std::size_t>(file.read_attribute_double("/output", "history_rows"));
+  o.last_history_cycle = std::llround(file.read_attribute_double("/output", "last_history_cycle"));
+  o.run_id = file.read_attribute_string("/output", "run_id");
+  o.last_audit_cycle = std::llround(file.read_attribute_double("/output", "last_audit_cycle"));
+  const int audits = file.read_attribute_int("/output", "audits");
+  for (int a = 0; a < audits; ++a) {
+    const std::vector<double> c = file.read_doubles("/output/audit" + std::to_string(a));
+    if (c.size() != 8) {
+      throw InputError(where + ": /output/audit" + std::to_string(a) + " is damaged");
+    }
+    SearchAuditRecord r;
+    r.last.nodes_checked = static_cast<int>(c[0]);
+    r.last.misses = static_cast<int>(c[1]);
+    r.last.max_gap_error = c[2];
+    r.audits = static_cast<int>(c[3]);
+    r.max_misses = static_cast<int>(c[4]);
+    r.max_misses_time = c[5];
+    r.total_misses = static_cast<long>(c[6]);
+    r.max_gap_error = c[7];
+    o.audits.push_back(std::move(r));
+  }
+  return info;
+}
+
+}  // namespace
+
+void write_checkpoint(const std::filesystem::path& file, const SolutionState& state,
+                      const CheckpointInfo& info) {
+  std::filesystem::path temporary = file;
+  temporary += ".tmp";
+  try {
+    h5::File out(temporary, h5::FileMode::truncate);
+    write_info(out, info);
+    FieldWriter writer(out);
+    visit_checkpoint_fields(writer, state);
+    out.close();
+  } catch (const h5::Error& e) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw OutputError(fmt::format("cannot write the checkpoint {}: {}", file.string(), e.what()));
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, file, error);
+  if (error) {
+    throw OutputError(
+        fmt::format("cannot write the checkpoint {}: {}", file.string(), error.message()));
+  }
+}
+
+CheckpointInfo read_checkpoint(const std::filesystem::path& file, SolutionState& state) {
+  const std::string where = file.string();
+  if (!std::filesystem::is_regular_file(file)) {
+    throw InputError(where + ": no such checkpoint file (a run writes <results>/checkpoint.h5)");
+  }
+  try {
+    const h5::File in(file, h5::FileMode::read_only);
+    if (!in.exists("/state") || in.read_attribute_string("/", "format") != kFormat) {
+      throw InputError(where + ": not a sheetform checkpoint");
+    }
+    const int version = in.read_attribute_int("/", "format_version");
+    if (version != kFormatVersion) {
+      throw InputError(fmt::format("{}: checkpoint format {}, this build reads format {}", where,
+                                   version, kFormatVersion));
+    }
+    CheckpointInfo info = read_info(in, where);
+    FieldReader reader(in, where);
+    visit_checkpoint_fields(reader, state);
+    return info;
+  } catch (const h5::Error& e) {
+    throw InputError(where + ": cannot read the checkpoint: " + e.what());
+  }
+}
+
+}  // namespace sf
