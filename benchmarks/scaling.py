@@ -250,6 +250,8 @@ def main():
     common = ["run", str(pathlib.Path(args.case).resolve()), "--stroke", f"{args.stroke:g}", "-q"]
     for item in args.set:
         common += ["--set", item]
+    if "--overwrite" in binary_help(args.binary):
+        common.append("--overwrite")  # the result folders of an earlier measurement
 
     rows = []
     has_threads = "--threads" in binary_help(binary)

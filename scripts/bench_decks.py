@@ -52,7 +52,8 @@ def main():
             sys.exit(f"unknown deck '{deck}' (known: {', '.join(DECKS)})")
         case, extra = DECKS[deck]
         out = pathlib.Path(args.out) / f"{args.tag}_{deck}"
-        subprocess.run([args.binary, "run", str(ROOT / case), "-o", str(out), "-q", *extra],
+        subprocess.run([args.binary, "run", str(ROOT / case), "-o", str(out), "-q", "--overwrite",
+                        *extra],
                        check=True, stdout=subprocess.DEVNULL)
         print(describe(deck, json.loads((out / "summary.json").read_text())), flush=True)
 

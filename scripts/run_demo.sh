@@ -6,4 +6,4 @@ cd "$(dirname "$0")/.."
 scripts/setup.sh
 build_dir="${SF_BUILD_DIR:-build}"
 echo "== Running the demo case"
-"$build_dir/sheetform" run cases/square_cup_aluminium/case.toml
+"$build_dir/sheetform" run cases/square_cup_aluminium/case.toml --overwrite

@@ -76,7 +76,7 @@ def run(sheetform, bench, mesh, formulation, work):
     label = "_".join(f"{k}{v}" for k, v in mesh.items())
     out = work / bench["case"] / f"{formulation}-{label}"
     command = [str(sheetform), "run", str(ROOT / "cases" / bench["case"] / "case.toml"), "-o",
-               str(out), "-q", "--set", f"blank.formulation=\"{formulation}\""]
+               str(out), "-q", "--overwrite", "--set", f"blank.formulation=\"{formulation}\""]
     for key, value in mesh.items():
         command += ["--set", f"blank.parameters.{key}={value}"]
     command += load_overrides(bench, mesh)

@@ -24,7 +24,7 @@ for size in ${SF_STUDY_SIZES:-2.5 1.25}; do
   for search in ${SF_STUDY_SEARCHES:-modified standard}; do
     out="$work/$size-$search"
     echo "== blank $size mm, $search search"
-    "$sheetform" run "$case_dir/case.toml" -o "$out" --search "$search" -q
+    "$sheetform" run "$case_dir/case.toml" -o "$out" --search "$search" -q --overwrite
   done
 done
 /usr/bin/python3 "$root/scripts/validation_tables.py" "$work"

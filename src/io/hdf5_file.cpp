@@ -8,6 +8,12 @@
 namespace sf::h5 {
 namespace {
 
+// HDF5 1.10 closes the files still open when the process exits, and crashes (a segmentation
+// fault in H5F__close_cb) on a file whose close failed, as after a full disk. Every file here is
+// closed by its owner, so the library's exit handler has nothing to do: turn it off, before the
+// first HDF5 call (static initialisation; later calls are ignored by HDF5).
+[[maybe_unused]] const herr_t no_exit_handler = H5dont_atexit();
+
 /// Turns off HDF5's automatic printing of its error stack (we report errors as exceptions).
 void initialize_library() {
   static std::once_flag once;

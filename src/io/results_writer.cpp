@@ -1,11 +1,16 @@
 #include "io/results_writer.hpp"
 
+#include <fmt/core.h>
+
+#include <sys/resource.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <set>
 #include <stdexcept>
 #include <system_error>
@@ -44,7 +49,7 @@ hsize_t to_hsize(Eigen::Index n) {
 // Runs a write to the results; a failure of the system (a full disk, a folder gone) becomes an
 // OutputError, which the command reports with its own exit code.
 template <class Write>
-void writing(Write write) {
+void writing(const std::filesystem::path& directory, Write write) {
   try {
     write();
   } catch (const InputError&) {
@@ -52,8 +57,33 @@ void writing(Write write) {
   } catch (const OutputError&) {
     throw;
   } catch (const std::runtime_error& e) {
-    throw OutputError(std::string("cannot write the results: ") + e.what());
+    const std::string what = e.what();
+    if (what.find("No space left on device") != std::string::npos ||
+        what.find("errno = 28") != std::string::npos) {
+      throw OutputError(
+          "cannot write the results in " + directory.string() +
+          ": the disk is full (No space left on device); free some space, then run again or go "
+          "on from the last checkpoint with --restart");
+    }
+    throw OutputError("cannot write the results: " + what);
   }
+}
+
+// Bytes the process may still add to `file` in `directory`: the file system's free space for
+// unprivileged users and the file-size limit (ulimit -f), whichever is less.
+double room_for(const std::filesystem::path& directory, const std::filesystem::path& file) {
+  double room = std::numeric_limits<double>::infinity();
+  struct statvfs disk {};
+  if (statvfs(directory.c_str(), &disk) == 0) {
+    room = static_cast<double>(disk.f_bavail) * static_cast<double>(disk.f_frsize);
+  }
+  struct rlimit limit {};
+  if (getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+    std::error_code error;
+    const auto size = std::filesystem::file_size(file, error);
+    room = std::min(room, static_cast<double>(limit.rlim_cur) - (error ? 0.0 : double(size)));
+  }
+  return room;
 }
 
 // A frame's fields in order, "name/node" or "name/cell" joined by commas (the frame group's
@@ -385,7 +415,31 @@ void ResultsWriter::check_frame(double time, const std::vector<PartFrameView>& p
 
 void ResultsWriter::write_frame(double time, int cycle, const std::vector<PartFrameView>& parts) {
   check_frame(time, parts);
-  writing([&] { write_checked_frame(time, cycle, parts); });
+  check_room(parts);
+  writing(directory_, [&] { write_checked_frame(time, cycle, parts); });
+}
+
+void ResultsWriter::check_room(const std::vector<PartFrameView>& parts) const {
+  // HDF5 cannot open a file it grew for a write that then failed (a full disk), so a frame is
+  // written only when twice its size and 1 MB fit; a disk filling up stops the run readable.
+  double bytes = 8.0 * static_cast<double>(history_buffer_.size()) + 1e6;
+  for (const PartFrameView& view : parts) {
+    const XdmfPart& grid = find_part(view.part).grid;
+    bytes += 24.0 * static_cast<double>(grid.node_count);
+    for (const FieldView& field : view.fields) {
+      const std::size_t rows =
+          field.center == FieldCenter::node ? grid.node_count : grid.cell_count;
+      bytes += 8.0 * static_cast<double>(rows) * field.components;
+    }
+  }
+  const double room = room_for(directory_, results_file());
+  if (room < 2.0 * bytes) {
+    throw OutputError(fmt::format(
+        "cannot write the results in {}: the disk is full ({:.1f} MB left, a frame needs about "
+        "{:.1f} MB); free some space, then run again or go on from the last checkpoint with "
+        "--restart",
+        directory_.string(), std::max(room, 0.0) / 1e6, bytes / 1e6));
+  }
 }
 
 void ResultsWriter::write_checked_frame(double time, int cycle,
@@ -446,7 +500,7 @@ void ResultsWriter::flush_history() {
   if (history_buffer_.empty()) {
     return;
   }
-  writing([&] {
+  writing(directory_, [&] {
     h5::File file(results_file(), h5::FileMode::read_write);
     const std::size_t rows = write_history_rows(file);
     file.close();
@@ -478,7 +532,7 @@ void ResultsWriter::commit_history(std::size_t rows) {
 
 void ResultsWriter::write_run_info(const std::string& key, const std::string& text) {
   check_name(key, "run information key");
-  writing([&] {
+  writing(directory_, [&] {
     h5::File file(results_file(), h5::FileMode::read_write);
     const std::string path = "/run/" + key;
     if (file.exists(path)) {

@@ -137,6 +137,7 @@ class ResultsWriter {
   void take_up(h5::File& file, const Resume& resume);
   const PartRecord& find_part(const std::string& name) const;
   void check_frame(double time, const std::vector<PartFrameView>& parts) const;
+  void check_room(const std::vector<PartFrameView>& parts) const;
   void write_checked_frame(double time, int cycle, const std::vector<PartFrameView>& parts);
   /// Writes the buffered rows into the open file; returns how many (commit_history after close).
   std::size_t write_history_rows(h5::File& file) const;

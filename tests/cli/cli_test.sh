@@ -187,5 +187,38 @@ sed 's/"blank.geo"/"blank_computed.geo"/' "$work/geo/case.toml" > "$work/geo/com
 expect "geo computed Include refused" 2 "Include with a computed path cannot be checked" -- \
   "$sheetform" check "$work/geo/computed.toml"
 
+# A full disk (issue 18: "internal error", then a segmentation fault, exit 139): exit 6, said,
+# and what was written before stays readable. A 6 MB tmpfs holds a few frames; where
+# mounting is not allowed, a file-size limit (ulimit -f, SIGXFSZ ignored) stands in for it. A
+# read-only parent of -o (root writes anywhere else) is bad input, exit 2.
+steel="$src/cases/square_cup_steel/case.toml"
+disk="$work/small_disk"; mkdir -p "$disk" "$work/read_only"
+if mount -t tmpfs -o size=6m tmpfs "$disk" 2>/dev/null; then
+  expect "full disk" 6 "the disk is full" -- \
+    "$sheetform" run "$steel" --stroke 0.5 --set blank.element_size=1.875 -q -o "$disk/out"
+  mount -t tmpfs -o ro,size=100k tmpfs "$work/read_only"
+  expect "read-only parent of -o" 2 "results folder .*read_only/out: cannot create it \(Read-only file system\)" -- \
+    "$sheetform" run "$demo" --stroke 0.01 -o "$work/read_only/out"
+  umount "$work/read_only"
+else
+  echo "note: cannot mount a tmpfs here; a file-size limit stands in for the full disk"
+  expect "file size limit" 6 "the disk is full" -- bash -c 'trap "" XFSZ; ulimit -f 6000; exec "$@"' _ \
+    "$sheetform" run "$steel" --stroke 0.5 --set blank.element_size=1.875 -q -o "$disk/out"
+fi
+/usr/bin/python3 - "$disk/out" <<'PY' && passed=$((passed+1)) || { echo "FAIL full disk: the results are not readable"; failures=$((failures+1)); }
+import sys, h5py, xml.etree.ElementTree as ET
+with h5py.File(sys.argv[1] + "/results.h5") as f:
+    assert "000000" in f["parts/blank/frames"] and f["history/time"].shape[0] >= 1
+frames = ET.parse(sys.argv[1] + "/blank.xdmf").getroot().findall(".//Time")
+assert len(frames) >= 1, "no frame listed"
+PY
+mountpoint -q "$disk" && umount "$disk"
+
+# A results folder holding an earlier run is not mixed with a new one: refused (exit 2), or
+# replaced with --overwrite.
+expect "earlier run refused" 2 "holds the results of an earlier run \(results.h5\); give --overwrite" -- \
+  "$sheetform" run "$demo" -o "$work/run" --stroke 0.05
+expect "--overwrite replaces it" 0 "draw-in DX" -- "$sheetform" run "$demo" -o "$work/run" --stroke 0.05 --overwrite
+
 echo "$passed passed, $failures failed"
 [ "$failures" -eq 0 ]
