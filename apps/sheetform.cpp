@@ -48,6 +48,7 @@
 #include "solver/explicit_driver.hpp"
 #include "solver/frame_output.hpp"
 #include "solver/model_report.hpp"
+#include "solver/run_estimate.hpp"
 #include "solver/static_driver.hpp"
 #include "solver/stop_request.hpp"
 
@@ -120,6 +121,7 @@ fs::path output_directory(const Arguments& args, const sf::CaseConfig& config) {
 struct LoadedCase {
   sf::CaseConfig config;
   sf::Model model;
+  sf::RunEstimate estimate;
 };
 
 LoadedCase load(const Arguments& args) {
@@ -128,7 +130,10 @@ LoadedCase load(const Arguments& args) {
   apply_overrides(args, config);
   // 2. Mesh every part and build the model.
   sf::Model model = sf::build_model(config);
-  return {std::move(config), std::move(model)};
+  // 3. What it will cost, and what it asks for beyond the case's limits (refused here).
+  sf::RunEstimate estimate = sf::estimate_run(config, model);
+  sf::enforce_run_limits(config, estimate);
+  return {std::move(config), std::move(model), std::move(estimate)};
 }
 
 // The results folder, made if missing; a path that cannot be a folder is bad input.
@@ -255,6 +260,7 @@ int run(const Arguments& args, const sf::MpiSession& mpi) {
   sf::RunOptions options;
   options.domain = make_domain(mpi, model, loaded.config.file.string());
   sf::print_model(loaded.config, model);
+  sf::print_run_estimate(loaded.estimate, model);
   // 3. Prepare the results folder and keep the resolved case beside the results.
   const fs::path out = output_directory(args, loaded.config);
   if (!args.restart.empty() && model.analysis.is_static()) {
@@ -285,6 +291,7 @@ int run(const Arguments& args, const sf::MpiSession& mpi) {
 int check(const Arguments& args) {
   const LoadedCase loaded = load(args);
   sf::print_model(loaded.config, loaded.model);
+  sf::print_run_estimate(loaded.estimate, loaded.model);
   sf::log_info("Case is valid.\n");
   return sf::exit_ok;
 }
@@ -296,6 +303,7 @@ int mesh(const Arguments& args, const sf::MpiSession& mpi) {
   }
   const sf::Model& model = loaded.model;
   sf::print_model(loaded.config, model);
+  sf::print_run_estimate(loaded.estimate, model);
   const fs::path out = output_directory(args, loaded.config);
   create_results_folder(out);
   sf::FrameOutput output(model, out);

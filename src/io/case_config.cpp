@@ -605,6 +605,22 @@ void read_output(const TomlSection& top, const fs::path& folder, OutputConfig& o
   }
 }
 
+void read_limits(const TomlSection& top, LimitsConfig& limits) {
+  const auto s = top.sub_table("limits", Presence::optional);
+  if (!s) {
+    return;
+  }
+  s->check_keys({"max_cycles", "max_elements", "max_frames", "max_output_gb", "max_memory_gb",
+                 "mesh_seconds", "max_initial_penetration"});
+  s->read_number("max_cycles", limits.max_cycles, greater_than(0.0, "cycles"));
+  s->read_number("max_elements", limits.max_elements, greater_than(0.0, "elements"));
+  s->read_integer("max_frames", limits.max_frames, IntegerRange{.lo = 1});
+  s->read_number("max_output_gb", limits.max_output_gb, greater_than(0.0, "GB"));
+  s->read_number("max_memory_gb", limits.max_memory_gb, at_least(0.0, "GB"));
+  s->read_number("mesh_seconds", limits.mesh_seconds, greater_than(0.0, "s"));
+  s->read_number("max_initial_penetration", limits.max_initial_penetration, at_least(0.0));
+}
+
 /// `units`: a consistent LENGTH-TIME-MASS-FORCE-STRESS system (parse_unit_system).
 void read_units(const TomlSection& top, std::string& units) {
   if (!top.read_string("units", units)) {
@@ -676,7 +692,7 @@ CaseConfig read_case(const fs::path& case_file, const std::vector<std::string>& 
   const TomlSection top(root, "", file);
   top.check_keys({"title", "units", "blank", "materials", "tools", "contact", "boundary", "draw_in",
                   "load", "initial_velocity", "prescribed_velocity", "prescribed_motion", "control",
-                  "output", "analysis", "implicit", "springback", "history"});
+                  "output", "analysis", "implicit", "springback", "history", "limits"});
   top.read_string("title", config.title, Presence::optional, true);
   read_units(top, config.units);
   read_materials(top, folder, config.materials);
@@ -688,6 +704,7 @@ CaseConfig read_case(const fs::path& case_file, const std::vector<std::string>& 
   read_initial_velocities(top, config.initial_velocities);
   read_constraint_sections(top, config);
   read_control(top, config, config.control);
+  read_limits(top, config.limits);
   read_output(top, folder, config.output);
   read_implicit_sections(top, config);
   check_constraints_for_analysis(top, config);

@@ -261,6 +261,20 @@ struct HistoryGroupConfig {
   bool reaction = true;      ///< summed reaction force (N) and moment (N mm) of the constraints
 };
 
+/// What a case may ask for before it is refused (exit 2) rather than run until killed: the
+/// estimates `check` prints (docs/case-file.md, [limits]). A user raises a limit in the case or
+/// with --set limits.KEY=VALUE.
+struct LimitsConfig {
+  double max_cycles = 1e8;       ///< explicit cycles (end time / time step)
+  double max_elements = 5e6;     ///< elements of one part (estimated before gmsh meshes a .geo)
+  int max_frames = 10000;        ///< control.output_frames
+  double max_output_gb = 100.0;  ///< GB, estimated size of results.h5
+  double max_memory_gb = 0.0;    ///< GB, estimated memory; 0 = this machine's memory
+  double mesh_seconds = 600.0;   ///< s of wall time gmsh may take to read and mesh one part
+  /// deepest initial penetration of a tool into the blank, as a fraction of the blank thickness
+  double max_initial_penetration = 0.5;
+};
+
 struct OutputConfig {
   std::string directory = "results";  ///< relative to the case folder unless given with -o
   bool stress_layers = true;          ///< write mid, top and bottom stress per element
@@ -343,6 +357,7 @@ struct CaseConfig {
   std::vector<BoundaryConfig> boundaries;
   ControlConfig control;
   OutputConfig output;
+  LimitsConfig limits;
   std::vector<DrawInConfig> draw_ins;                           ///< [[draw_in]] tables
   std::vector<HistoryGroupConfig> history_groups;               ///< [[history]] tables
   std::vector<LoadConfig> loads;                                ///< [[load]] tables

@@ -510,6 +510,15 @@ std::string format_resolved_case(const CaseConfig& config) {
   w.header("output");
   w.string("directory", config.output.directory);
   w.boolean("stress_layers", config.output.stress_layers);
+  const LimitsConfig& l = config.limits;
+  w.header("limits");
+  w.number("max_cycles", l.max_cycles, "explicit cycles");
+  w.number("max_elements", l.max_elements, "per part");
+  w.integer("max_frames", l.max_frames);
+  w.number("max_output_gb", l.max_output_gb, "GB of results.h5");
+  w.number("max_memory_gb", l.max_memory_gb, "GB; 0 = this machine's memory");
+  w.number("mesh_seconds", l.mesh_seconds, "s per part");
+  w.number("max_initial_penetration", l.max_initial_penetration, "fraction of the thickness");
   return w.take();
 }
 

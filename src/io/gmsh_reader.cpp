@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cctype>
 #include <cmath>
+#include <csignal>
 #include <deque>
 #include <exception>
 #include <fstream>
@@ -256,6 +257,67 @@ void open_with_parameters(const std::filesystem::path& file,
   }
 }
 
+// The message the alarm prints: made before the alarm is armed (the handler may only write).
+char g_budget_message[1024];
+std::size_t g_budget_message_size = 0;
+
+extern "C" void on_mesh_budget_alarm(int /*signal*/) {
+  [[maybe_unused]] const ssize_t written = ::write(2, g_budget_message, g_budget_message_size);
+  ::_exit(exit_input_error);
+}
+
+// Arms SIGALRM for the budget's seconds while gmsh reads and meshes one file: gmsh has no way to
+// be interrupted, so a .geo with a huge loop or an enormous mesh ends the process, said.
+class MeshTimeBudget {
+ public:
+  MeshTimeBudget(const std::filesystem::path& file, double seconds) {
+    const std::string text = fmt::format(
+        "error: {}: gmsh did not finish reading and meshing it within {:g} s "
+        "(limits.mesh_seconds); a loop without end, or far too fine a mesh? Raise "
+        "limits.mesh_seconds for a mesh that needs longer\n",
+        quoted(file), seconds);
+    g_budget_message_size = std::min(text.size(), sizeof(g_budget_message));
+    std::copy_n(text.data(), g_budget_message_size, g_budget_message);
+    previous_ = std::signal(SIGALRM, on_mesh_budget_alarm);
+    ::alarm(static_cast<unsigned>(std::clamp(std::ceil(seconds), 1.0, 1e9)));
+  }
+  ~MeshTimeBudget() {
+    ::alarm(0);
+    std::signal(SIGALRM, previous_);
+  }
+  MeshTimeBudget(const MeshTimeBudget&) = delete;
+  MeshTimeBudget& operator=(const MeshTimeBudget&) = delete;
+
+ private:
+  void (*previous_)(int) = SIG_DFL;
+};
+
+// Refuses a .geo whose element size asks gmsh for more elements than the budget, before gmsh
+// tries: the area of each surface is taken as the product of its bounding box's two longest
+// sides (exact for a rectangle in a coordinate plane, the right order of size for the others),
+// and a triangle of side h covers 0.43 h^2, a quad h^2.
+void check_mesh_size_estimate(const std::filesystem::path& file, double element_size,
+                              bool recombine) {
+  double area = 0.0;
+  gmsh::vectorpair surfaces;
+  gmsh::model::getEntities(surfaces, 2);
+  for (const auto& [dim, tag] : surfaces) {
+    double lo[3], hi[3];
+    gmsh::model::getBoundingBox(dim, tag, lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
+    double sides[3] = {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
+    std::sort(sides, sides + 3);
+    area += sides[1] * sides[2];
+  }
+  const double elements = area / (element_size * element_size) * (recombine ? 1.0 : 2.3);
+  if (elements > mesh_budget().max_elements) {
+    throw InputError(fmt::format(
+        "{}: element_size = {:g} mm asks gmsh for about {:.2g} elements (surfaces of about "
+        "{:.4g} mm^2), more than limits.max_elements = {:.3g}; give a larger element_size, or "
+        "raise limits.max_elements",
+        quoted(file), element_size, elements, area, mesh_budget().max_elements));
+  }
+}
+
 /// Opens (and for a .geo, meshes in 2-D) `file` in the current gmsh session.
 void open_and_mesh(const std::filesystem::path& file, double element_size, bool recombine,
                    std::span<const GeoParameter> parameters) {
@@ -272,10 +334,15 @@ void open_and_mesh(const std::filesystem::path& file, double element_size, bool 
     }
   };
   run_gmsh_step(file, "setting options", set_size);
+  const MeshTimeBudget budget(file, mesh_budget().seconds);
   if (parameters.empty()) {
     run_gmsh_step(file, "reading the file", [&] { gmsh::open(file.string()); });
   } else {
     open_with_parameters(file, parameters);
+  }
+  if (geo && element_size > 0.0) {
+    run_gmsh_step(file, "estimating the mesh size",
+                  [&] { check_mesh_size_estimate(file, element_size, recombine); });
   }
   if (geo) {
     run_gmsh_step(file, "meshing in 2-D", [&] {
@@ -471,6 +538,11 @@ std::string GmshModel::list_groups() const {
     text += (text.empty() ? "" : ", ") + group_label(g);
   }
   return text.empty() ? "none" : text;
+}
+
+MeshBudget& mesh_budget() {
+  static MeshBudget budget;
+  return budget;
 }
 
 GmshModel load_gmsh_model(const std::filesystem::path& file, double element_size, bool recombine,

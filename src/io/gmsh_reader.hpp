@@ -84,6 +84,17 @@ class GeoParameterError : public InputError {
 /// Runs its own gmsh session (initialize ... finalize; not re-entrant, do not call while another
 /// gmsh session is open) and restores the OpenMP thread count that gmsh resets. gmsh's terminal
 /// output is shown only at Verbosity::verbose.
+/// What gmsh may spend on one part (the case's [limits]): a .geo whose element_size asks for
+/// more elements than max_elements (estimated from its surfaces' bounding boxes before meshing)
+/// is refused with InputError; reading and meshing that take longer than `seconds` end the
+/// process with exit code 2 and a message naming the file (gmsh cannot be interrupted).
+struct MeshBudget {
+  double seconds = 600.0;
+  double max_elements = 5e6;
+};
+/// The budget of the meshing in this process (set from the case before its parts are meshed).
+MeshBudget& mesh_budget();
+
 GmshModel load_gmsh_model(const std::filesystem::path& file, double element_size, bool recombine,
                           std::span<const GeoParameter> parameters = {});
 

@@ -258,6 +258,11 @@ bool TomlSection::read_string(std::string_view key, std::string& value, Presence
   if (!text || (!allow_empty && text->get().empty())) {
     fail_value(key, expected);
   }
+  // A NUL cuts a path short where the system reads it (a mesh "blank\u0000.msh" made gmsh wait):
+  // no case-file text has one.
+  if (text->get().find('\0') != std::string::npos) {
+    fail_value(key, std::string(expected) + " without a NUL character (\\u0000)");
+  }
   value = text->get();
   return true;
 }

@@ -71,6 +71,7 @@ std::vector<double> make_material_angles(const CaseConfig& config, const PartMes
 GmshModel load_mesh_source(const CaseConfig& config, const MeshSourceConfig& mesh,
                            const std::string& key, bool recombine) {
   try {
+    mesh_budget() = {config.limits.mesh_seconds, config.limits.max_elements};
     return load_gmsh_model(mesh.file, mesh.element_size, recombine, mesh.parameters);
   } catch (const GeoParameterError& error) {
     const GeoParameter& p = mesh.parameters.at(error.index());

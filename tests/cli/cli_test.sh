@@ -187,6 +187,37 @@ sed 's/"blank.geo"/"blank_computed.geo"/' "$work/geo/case.toml" > "$work/geo/com
 expect "geo computed Include refused" 2 "Include with a computed path cannot be checked" -- \
   "$sheetform" check "$work/geo/computed.toml"
 
+# No input runs until killed (issue 18, item 3): check prints the cost, and what exceeds the
+# case's [limits] is refused before any work (exit 2, the limit named), each of which ran until
+# killed before: a density of 1e-300, 2e9 frames, a .geo asked for 1e10 elements, a mesh path
+# with a NUL, a .geo with an endless loop (gmsh's time budget).
+expect "check prints the cost" 0 "Cost +about [0-9.e+]+ cycles x 900 elements = .* element-cycles" -- "$sheetform" check "$demo"
+expect "check prints memory and output" 0 "Memory +about [0-9]+ MB; output about [0-9]+ MB \(40 frames" -- "$sheetform" check "$demo"
+expect "density 1e-300 refused" 2 "the run needs about .* cycles .* more than limits.max_cycles = 1e\+08" -- \
+  "$sheetform" run "$demo" -o "$work/tiny_density" --set materials.aluminium.density=1e-300
+expect "2e9 frames refused" 2 "control.output_frames = 2000000000, more than limits.max_frames = 10000" -- \
+  "$sheetform" check "$demo" --set control.output_frames=2000000000
+expect "1e10 elements refused before meshing" 2 "blank.geo.*element_size = 0.001 mm asks gmsh for about [0-9.e+]+ elements.*limits.max_elements" -- \
+  "$sheetform" check "$demo" --set blank.element_size=1e-3
+expect "a limit raised" 0 "Case is valid" -- "$sheetform" check "$demo" --set limits.max_frames=20000 --set control.output_frames=15000
+cp -r "$src/cases/verify_patch" "$work/nul"
+sed -i 's|^mesh = "blank.geo"|mesh = "blank\\u0000.geo"|' "$work/nul/case.toml"
+expect "mesh path with a NUL refused" 2 "blank.mesh.*without a NUL character" -- "$sheetform" check "$work/nul/case.toml"
+cp -r "$src/cases/verify_patch" "$work/loop"
+printf 'For i In {1:1e15}\nEndFor\n' >> "$work/loop/blank.geo"
+start=$SECONDS
+expect "endless .geo loop stopped" 2 "blank.geo.*gmsh did not finish reading and meshing it within 2 s \(limits.mesh_seconds\)" -- \
+  "$sheetform" check "$work/loop/case.toml" --set limits.mesh_seconds=2
+[ $((SECONDS - start)) -lt 30 ] && passed=$((passed+1)) || { echo "FAIL endless loop: $((SECONDS - start)) s"; failures=$((failures+1)); }
+# Tools inside the blank at the start are reported at check, and refused beyond the limit.
+expect "initial penetration reported" 0 "'holder' penetrates the blank at [0-9]+ nodes: deepest node [0-9]+ at .* by 0.595 mm \(29.8 % of the thickness\)" -- \
+  "$sheetform" check "$demo" --set blank.thickness=2
+expect "no penetration said" 0 "'holder' does not penetrate the blank" -- "$sheetform" check "$demo"
+expect "initial penetration refused" 2 "tool 'punch' penetrates the blank at the start at [0-9]+ nodes.*limits.max_initial_penetration = 0.2" -- \
+  "$sheetform" check "$demo" --set blank.thickness=2 --set limits.max_initial_penetration=0.2
+expect "memory limit" 2 "the run needs about .* GB of memory, more than limits.max_memory_gb = 0.01" -- \
+  "$sheetform" check "$demo" --set limits.max_memory_gb=0.01
+
 # A full disk (issue 18: "internal error", then a segmentation fault, exit 139): exit 6, said,
 # and what was written before stays readable. A 6 MB tmpfs holds a few frames; where
 # mounting is not allowed, a file-size limit (ulimit -f, SIGXFSZ ignored) stands in for it. A

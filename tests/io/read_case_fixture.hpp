@@ -190,6 +190,15 @@ checkpoint_minutes = 10.5
 [output]
 directory = "out/run1"
 stress_layers = false
+
+[limits]
+max_cycles = 2e6
+max_elements = 1e5
+max_frames = 50
+max_output_gb = 2.5
+max_memory_gb = 4
+mesh_seconds = 30
+max_initial_penetration = 0.1
 )toml";
 
 /// The 1-based line of the first occurrence of `needle` in `text`.

@@ -215,6 +215,13 @@ TEST_F(ReadCase, FullCaseReadsEveryValue) {
   EXPECT_EQ(c.control.mass_scaling_dt, 1e-7);
   EXPECT_EQ(c.control.mass_scaling_max_added, 0.05);
   EXPECT_EQ(c.control.checkpoint_cycles, 5000);
+  EXPECT_EQ(c.limits.max_cycles, 2e6);
+  EXPECT_EQ(c.limits.max_elements, 1e5);
+  EXPECT_EQ(c.limits.max_frames, 50);
+  EXPECT_EQ(c.limits.max_output_gb, 2.5);
+  EXPECT_EQ(c.limits.max_memory_gb, 4.0);
+  EXPECT_EQ(c.limits.mesh_seconds, 30.0);
+  EXPECT_EQ(c.limits.max_initial_penetration, 0.1);
   EXPECT_EQ(c.control.checkpoint_minutes, 10.5);
   EXPECT_EQ(c.control.energy_blowup_ratio, 5.0);
 
@@ -545,6 +552,13 @@ void expect_same_case(const sf::CaseConfig& a, const sf::CaseConfig& b) {
   EXPECT_EQ(a.control.checkpoint_minutes, b.control.checkpoint_minutes);
   EXPECT_EQ(a.output.directory, b.output.directory);
   EXPECT_EQ(a.output.stress_layers, b.output.stress_layers);
+  EXPECT_EQ(a.limits.max_cycles, b.limits.max_cycles);
+  EXPECT_EQ(a.limits.max_elements, b.limits.max_elements);
+  EXPECT_EQ(a.limits.max_frames, b.limits.max_frames);
+  EXPECT_EQ(a.limits.max_output_gb, b.limits.max_output_gb);
+  EXPECT_EQ(a.limits.max_memory_gb, b.limits.max_memory_gb);
+  EXPECT_EQ(a.limits.mesh_seconds, b.limits.mesh_seconds);
+  EXPECT_EQ(a.limits.max_initial_penetration, b.limits.max_initial_penetration);
 }
 
 TEST_F(ReadCase, ResolvedCaseReadsBackToTheSameCase) {
