@@ -257,6 +257,9 @@ int run(const Arguments& args, const sf::MpiSession& mpi) {
   sf::install_run_request_handlers();  // a Ctrl-C while meshing stops at the first cycle
   const LoadedCase loaded = load(args);
   const sf::Model& model = loaded.model;
+  if (model.analysis.is_static()) {
+    sf::restore_default_signal_actions();  // a static analysis has no cycles to stop at
+  }
   sf::RunOptions options;
   options.domain = make_domain(mpi, model, loaded.config.file.string());
   sf::print_model(loaded.config, model);

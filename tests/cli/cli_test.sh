@@ -245,6 +245,14 @@ assert len(frames) >= 1, "no frame listed"
 PY
 mountpoint -q "$disk" && umount "$disk"
 
+# --restart with what is not a checkpoint of the case (exit 2, the file named).
+expect "restart from a missing file" 2 "nowhere.h5: no such checkpoint file" -- \
+  "$sheetform" run "$demo" -o "$work/restart_missing" --restart "$work/nowhere.h5"
+expect "restart from a case file" 2 "case.toml: cannot read the checkpoint" -- \
+  "$sheetform" run "$demo" -o "$work/restart_toml" --restart "$demo"
+expect "restart of a static analysis" 2 "--restart continues an explicit run" -- \
+  "$sheetform" run "$src/cases/shell_scordelis_lo/case.toml" -o "$work/restart_static" --restart "$work/nowhere.h5"
+
 # A results folder holding an earlier run is not mixed with a new one: refused (exit 2), or
 # replaced with --overwrite.
 expect "earlier run refused" 2 "holds the results of an earlier run \(results.h5\); give --overwrite" -- \
