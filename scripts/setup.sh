@@ -14,21 +14,11 @@ if [ "${SF_WITH_PARAVIEW:-0}" = 1 ]; then
   packages+=(paraview python3-paraview xvfb xauth)
 fi
 
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  echo "== Installing Debian packages: ${missing[*]}"
-  sudo_cmd=()
-  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
-  "${sudo_cmd[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends \
-    "${missing[@]}" >/dev/null
-fi
+scripts/install_packages.sh "${packages[@]}"
 
 build_dir="${SF_BUILD_DIR:-build}"
 echo "== Configuring and building in $build_dir"
-cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+# The preset ci (CMakePresets.json: Ninja, Release, tests and benchmarks), in $build_dir.
+cmake --preset ci -B "$build_dir" >/dev/null
 cmake --build "$build_dir" -j"$(nproc)"
 echo "== Built $build_dir/sheetform"

@@ -6,8 +6,8 @@
 #   SF_TSAN_THREADS=4 scripts/tsan.sh    (default 3: more threads than the CI box's 2 cores)
 #
 # What it does:
-#  1. configures a separate build (BUILD_DIR, Ninja) with clang++, RelWithDebInfo,
-#     -fsanitize=thread -g, -DSF_BUILD_TESTS=ON -DSF_BUILD_BENCHMARKS=OFF;
+#  1. configures a separate build (BUILD_DIR, Ninja) with the CMake preset tsan: clang++,
+#     RelWithDebInfo, -fsanitize=thread -g, -DSF_BUILD_TESTS=ON -DSF_BUILD_BENCHMARKS=OFF;
 #  2. builds only the targets in SF_TSAN_TARGETS (below): the test executables whose tests carry
 #     the ctest label `threads`, plus test_core_exact_sum; then also any executable that a
 #     `threads`-labelled add_test() test names and that is not built yet (ctest --show-only);
@@ -62,13 +62,10 @@ done
 start=$(date +%s)
 echo "== Configure $build ($cxx, -fsanitize=thread)"
 mkdir -p "$build"
-cmake -S "$root" -B "$build" -G Ninja \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_C_COMPILER="$cc" -DCMAKE_CXX_COMPILER="$cxx" \
-  -DCMAKE_CXX_FLAGS="-fsanitize=thread -g" \
-  -DCMAKE_C_FLAGS="-fsanitize=thread -g" \
-  -DCMAKE_EXE_LINKER_FLAGS=-fsanitize=thread \
-  -DSF_BUILD_TESTS=ON -DSF_BUILD_BENCHMARKS=OFF >"$build/tsan-configure.log" 2>&1 \
+# The preset tsan (CMakePresets.json) holds the configuration; BUILD_DIR and the compilers given
+# here override its folder and clang/clang++.
+(cd "$root" && cmake --preset tsan -B "$build" \
+  -DCMAKE_C_COMPILER="$cc" -DCMAKE_CXX_COMPILER="$cxx") >"$build/tsan-configure.log" 2>&1 \
   || { cat "$build/tsan-configure.log"; echo "tsan.sh: configure failed" >&2; exit 1; }
 grep -q 'OpenMP_CXX_FLAGS:STRING=-fopenmp=libomp' "$build/CMakeCache.txt" \
   || echo "tsan.sh: warning: OpenMP is not LLVM's libomp ($(grep '^OpenMP_CXX_FLAGS' "$build/CMakeCache.txt"))"
