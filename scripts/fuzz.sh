@@ -1,0 +1,141 @@
+#!/usr/bin/env bash
+# libFuzzer runs of the input readers (tests/fuzz, docs/tooling.md).
+#
+#   scripts/fuzz.sh short              CI: each target for SF_FUZZ_SECONDS (default 60) seconds
+#   scripts/fuzz.sh long HOURS         HOURS (e.g. 0.5, 8) shared equally among the targets; a
+#                                      finding does not stop the run (libFuzzer's fork mode)
+#   scripts/fuzz.sh build              only configure and build (preset fuzz, build-fuzz/)
+#   SF_FUZZ_TARGETS="case_reader" scripts/fuzz.sh short     a subset of the targets
+#
+# Targets (tests/fuzz/fuzz_<name>.cpp): case_reader (case.toml -> read_case, and the resolved case
+# must read back to the same text), mesh_reader (.msh through gmsh -> load_gmsh_model,
+# extract_part_mesh, extract_node_group) and geo_safety (the .geo command scanner). A finding is
+# a crash, a sanitizer report (ASan, UBSan), an exception other than sf::InputError, a broken
+# property, a timeout (SF_FUZZ_TIMEOUT s per input) or more memory than SF_FUZZ_RSS_MB.
+#
+# Seeds (build-fuzz/seeds/<name>, made anew each run): every cases/*/case.toml; the .msh files in
+# cases/ up to the target's max_len and .msh files gmsh makes from tests/data/*.geo, in MSH 4.1
+# and 2.2; every .geo in cases/ and tests/data. Plus every saved finding in
+# tests/fuzz/regressions/<name>. The case reader gets a dictionary of the case file's keys taken
+# from src/io (build-fuzz/case_reader.dict), the others small dictionaries in tests/fuzz.
+# The corpus grows in build-fuzz/corpus/<name> and is kept between runs in the same build folder.
+# Findings go to build-fuzz/findings/<name>/ (crash-*, leak-*, timeout-*, oom-*): reproduce one
+# with build-fuzz/tests/fuzz/fuzz_<name> FILE; once fixed, copy it to
+# tests/fuzz/regressions/<name>/ (ctest's fuzz_replay.<name> then replays it for good).
+#
+# Exit status: 0 when no target found anything, 1 otherwise (the findings are listed).
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+cd "$root"
+mode="${1:-short}"
+all_targets="case_reader mesh_reader geo_safety"
+targets="${SF_FUZZ_TARGETS:-$all_targets}"
+timeout_s="${SF_FUZZ_TIMEOUT:-20}"
+rss_mb="${SF_FUZZ_RSS_MB:-4096}"
+case "$mode" in
+  short) seconds="${SF_FUZZ_SECONDS:-60}" ;;
+  long)
+    hours="${2:?usage: scripts/fuzz.sh long HOURS}"
+    seconds=$(python3 -c "import sys; print(max(1, int(float(sys.argv[1]) * 3600 / int(sys.argv[2]))))" \
+      "$hours" "$(echo "$targets" | wc -w)")
+    ;;
+  build) seconds=0 ;;
+  *) echo "usage: scripts/fuzz.sh short | long HOURS | build" >&2; exit 2 ;;
+esac
+
+# clang with libFuzzer and the sanitizer runtimes, LLVM's OpenMP, gmsh (the seeds).
+scripts/install_packages.sh clang libclang-rt-14-dev libomp-dev lld gmsh
+
+build="$root/build-fuzz"  # the preset's binaryDir
+start=$(date +%s)
+echo "== Fuzz: configure $build (preset fuzz: clang, -fsanitize=fuzzer-no-link,address,undefined)"
+mkdir -p "$build"
+cmake --preset fuzz >"$build/fuzz-configure.log" 2>&1 \
+  || { cat "$build/fuzz-configure.log"; echo "fuzz.sh: configure failed" >&2; exit 1; }
+fuzzers=""
+for t in $targets; do fuzzers+=" fuzz_$t"; done
+echo "== Build:$fuzzers"
+# shellcheck disable=SC2086
+cmake --build "$build" -j"$(nproc)" --target $fuzzers
+echo "== Built in $(( $(date +%s) - start )) s"
+[ "$mode" = build ] && exit 0
+
+# --- seeds, made anew
+seeds="$build/seeds"
+rm -rf "$seeds"
+mkdir -p "$seeds/case_reader" "$seeds/mesh_reader" "$seeds/geo_safety"
+for f in cases/*/case.toml; do cp "$f" "$seeds/case_reader/$(basename "$(dirname "$f")").toml"; done
+for f in cases/*/*.geo tests/data/*.geo; do
+  cp "$f" "$seeds/geo_safety/$(basename "$(dirname "$f")")_$(basename "$f")"
+done
+declare -A max_len=([case_reader]=16384 [mesh_reader]=32768 [geo_safety]=8192)
+for f in cases/*/*.msh; do
+  [ "$(stat -c %s "$f")" -le "${max_len[mesh_reader]}" ] \
+    && cp "$f" "$seeds/mesh_reader/$(basename "$(dirname "$f")")_$(basename "$f")"
+done
+for g in tests/data/*.geo; do  # the project's own test geometries: no commands in them
+  name=$(basename "$g" .geo)
+  gmsh -2 -format msh41 -o "$seeds/mesh_reader/${name}_41.msh" "$g" >/dev/null 2>&1 || true
+  gmsh -2 -format msh22 -o "$seeds/mesh_reader/${name}_22.msh" "$g" >/dev/null 2>&1 || true
+done
+find "$seeds/mesh_reader" -size +"${max_len[mesh_reader]}"c -delete
+
+# The case reader's dictionary: the quoted key names of src/io's case reader, and TOML syntax.
+dict="$build/case_reader.dict"
+{
+  grep -ohE '"[a-z_][a-z0-9_]*"' src/io/case_config*.cpp src/io/case_overrides.cpp | sort -u
+  cat tests/fuzz/toml.dict
+} >"$dict"
+
+status=0
+report=""
+for t in $targets; do
+  corpus="$build/corpus/$t"
+  findings="$build/findings/$t"
+  mkdir -p "$corpus" "$findings"
+  inputs=("$corpus" "$seeds/$t")
+  [ -d "tests/fuzz/regressions/$t" ] && inputs+=("tests/fuzz/regressions/$t")
+  case "$t" in
+    case_reader) d="$dict" ;;
+    *) d="tests/fuzz/$t.dict" ;;
+  esac
+  options=(-max_total_time="$seconds" -timeout="$timeout_s" -rss_limit_mb="$rss_mb"
+           -max_len="${max_len[$t]}" -dict="$d" -artifact_prefix="$findings/"
+           -print_final_stats=1 -close_fd_mask=1)
+  if [ "$mode" = short ]; then
+    options+=(-seed=1)
+  else
+    options+=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
+  fi
+  log="$build/fuzz-$t.log"
+  echo "== fuzz_$t: $seconds s ($mode; log $log)"
+  before=$(find "$findings" -type f | wc -l)
+  t0=$(date +%s)
+  # libFuzzer's output goes to the log; a crash's report is shown below.
+  # gmsh's and OpenCASCADE's own leaks are suppressed (tests/sanitizers/lsan.supp): gmsh 4.8 leaks
+  # elements on malformed MSH 2 files (GModel::_readMSH2), nothing sheetform can free.
+  ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=1" UBSAN_OPTIONS="print_stacktrace=1" \
+    LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0" \
+    "$build/tests/fuzz/fuzz_$t" "${options[@]}" "${inputs[@]}" >"$log" 2>&1 || true
+  t1=$(date +%s)
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  if [ -z "$runs" ]; then  # fork mode: the last status line, "#N: cov: ..."
+    runs=$(sed -n 's/^#\([0-9]*\):* .*cov.*/\1/p' "$log" | tail -1)
+  fi
+  cov=$(grep -oE 'cov: [0-9]+' "$log" | tail -1 | sed 's/cov: //')
+  new=$(( $(find "$findings" -type f | wc -l) - before ))
+  line="fuzz_$t: ${runs:-?} runs in $((t1 - t0)) s, coverage ${cov:-?} edges, corpus $(find "$corpus" -type f | wc -l) inputs, $new new findings"
+  echo "   $line"
+  report+="$line"$'\n'
+  if [ -z "$runs" ]; then
+    status=1
+    echo "   fuzz_$t did not run:"; tail -20 "$log"
+  elif [ "$new" -gt 0 ]; then
+    status=1
+    find "$findings" -type f -newermt "@$t0" | sed 's/^/   finding: /'
+    grep -E -A30 '^==[0-9]+==ERROR|runtime error|^fuzz: ' "$log" | head -60 || true
+  fi
+done
+echo "== Fuzz $( [ $status -eq 0 ] && echo clean || echo FOUND SOMETHING ) ($(( $(date +%s) - start )) s)"
+printf '%s' "$report"
+exit $status
