@@ -26,7 +26,11 @@ extern "C" void on_run_signal(int signal_number) {
 
 void install_run_request_handlers() {
   for (int s : {SIGINT, SIGTERM, SIGUSR1}) {
-    std::signal(s, on_run_signal);
+    // A SIGINT ignored by the parent stays ignored (a job a script sent to the background, which
+    // the terminal's Ctrl-C is not meant for).
+    if (std::signal(s, on_run_signal) == SIG_IGN && s == SIGINT) {
+      std::signal(s, SIG_IGN);
+    }
   }
 }
 

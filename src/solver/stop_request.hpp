@@ -12,7 +12,8 @@ enum RunRequest : int {
   request_stop = 2,
 };
 
-/// Installs the handlers of SIGINT, SIGTERM and SIGUSR1 (once per process).
+/// Installs the handlers of SIGINT, SIGTERM and SIGUSR1 (again: harmless); a SIGINT the process
+/// was started with ignored (a background job of a script) stays ignored.
 void install_run_request_handlers();
 
 /// Puts back the default actions of SIGINT, SIGTERM and SIGUSR1.

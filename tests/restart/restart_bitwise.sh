@@ -74,6 +74,18 @@ else
   fail "SIGTERM: exit $rc, expected 5 (did the run end before the signal?)"; tail -3 "$work/cup_term.log"
 fi
 
+# Ctrl-C (SIGINT; a script's background job starts with SIGINT ignored: python puts the default
+# back before it runs sheetform) stops it the same way.
+/usr/bin/python3 -c 'import os, signal, sys; signal.signal(signal.SIGINT, signal.SIG_DFL); os.execv(sys.argv[1], sys.argv[1:])' \
+  "$sheetform" run "$cup_case" "${cup[@]}" -o "$work/cup_int" > "$work/cup_int.log" 2>&1 &
+pid=$!; in_time_loop "$work/cup_int"; kill -INT "$pid"; wait "$pid"; rc=$?
+if [ "$rc" -eq 5 ] && grep -q "Stopped by SIGINT at t = " "$work/cup_int.log"; then
+  run cup_int_end 0 "$cup_case" "${cup[@]}" -o "$work/cup_int" --restart "$work/cup_int/checkpoint.h5"
+  same cup_int "$work/cup" "$work/cup_int"
+else
+  fail "SIGINT: exit $rc, expected 5 and a message"; tail -3 "$work/cup_int.log"
+fi
+
 # SIGUSR1: a checkpoint, and the run goes on to the same bits.
 cup_loud=("${cup_physics[@]}" --threads 1)
 "$sheetform" run "$cup_case" "${cup_loud[@]}" -o "$work/cup_usr1" > "$work/cup_usr1.log" 2>&1 &
