@@ -261,7 +261,7 @@ void orient_surface(TriangleSurface& surface, const Matrix3X& blank_nodes) {
       if (d2 < best_d2[c]) {
         best_d2[c] = d2;
         best_t[c] = t;
-        best_face[c] = face;
+        best_face[c] = static_cast<char>(face);
         best_q[c] = q;
       }
     }
