@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # libFuzzer runs of the input readers (tests/fuzz, docs/tooling.md).
 #
-#   scripts/fuzz.sh short              CI: each target for SF_FUZZ_SECONDS (default 60) seconds
+#   scripts/fuzz.sh short              CI: case_reader and mesh_reader 50 s each, geo_safety 20 s
+#                                      (it covers its scanner within seconds); SF_FUZZ_SECONDS=N
+#                                      gives every target N s
 #   scripts/fuzz.sh long HOURS         HOURS (e.g. 0.5, 8) shared equally among the targets; a
 #                                      finding does not stop the run (libFuzzer's fork mode)
 #   scripts/fuzz.sh build              only configure and build (preset fuzz, build-fuzz/)
@@ -23,7 +25,10 @@
 # with build-fuzz/tests/fuzz/fuzz_<name> FILE; once fixed, copy it to
 # tests/fuzz/regressions/<name>/ (ctest's fuzz_replay.<name> then replays it for good).
 #
-# Exit status: 0 when no target found anything, 1 otherwise (the findings are listed).
+# Exit status: 0 when no target found anything, 1 otherwise (the findings are listed). In the short
+# run (CI) a target with open findings (inputs in tests/fuzz/open-findings/<name>/, reported and
+# waiting for a fix) does not fail it: its findings are listed, and it fails again once the folder
+# is emptied into regressions/ with the fix.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
@@ -32,14 +37,20 @@ all_targets="case_reader mesh_reader geo_safety"
 targets="${SF_FUZZ_TARGETS:-$all_targets}"
 timeout_s="${SF_FUZZ_TIMEOUT:-20}"
 rss_mb="${SF_FUZZ_RSS_MB:-4096}"
+declare -A seconds_of=([case_reader]=50 [mesh_reader]=50 [geo_safety]=20)
 case "$mode" in
-  short) seconds="${SF_FUZZ_SECONDS:-60}" ;;
+  short)
+    if [ -n "${SF_FUZZ_SECONDS:-}" ]; then
+      for t in $all_targets; do seconds_of[$t]="$SF_FUZZ_SECONDS"; done
+    fi
+    ;;
   long)
     hours="${2:?usage: scripts/fuzz.sh long HOURS}"
     seconds=$(python3 -c "import sys; print(max(1, int(float(sys.argv[1]) * 3600 / int(sys.argv[2]))))" \
       "$hours" "$(echo "$targets" | wc -w)")
+    for t in $all_targets; do seconds_of[$t]="$seconds"; done
     ;;
-  build) seconds=0 ;;
+  build) ;;
   *) echo "usage: scripts/fuzz.sh short | long HOURS | build" >&2; exit 2 ;;
 esac
 
@@ -99,6 +110,7 @@ for t in $targets; do
     case_reader) d="$dict" ;;
     *) d="tests/fuzz/$t.dict" ;;
   esac
+  seconds="${seconds_of[$t]}"
   options=(-max_total_time="$seconds" -timeout="$timeout_s" -rss_limit_mb="$rss_mb"
            -max_len="${max_len[$t]}" -dict="$d" -artifact_prefix="$findings/"
            -print_final_stats=1 -close_fd_mask=1)
@@ -122,8 +134,11 @@ for t in $targets; do
   if [ -z "$runs" ]; then  # fork mode: the last status line, "#N: cov: ..."
     runs=$(sed -n 's/^#\([0-9]*\):* .*cov.*/\1/p' "$log" | tail -1)
   fi
-  cov=$(grep -oE 'cov: [0-9]+' "$log" | tail -1 | sed 's/cov: //')
+  cov=$(grep -oE 'cov: [0-9]+' "$log" | tail -1 | sed 's/cov: //' || true)
   new=$(( $(find "$findings" -type f | wc -l) - before ))
+  # An input found again (the same name as an earlier finding) adds no file: libFuzzer's own word.
+  written=$(grep -c 'Test unit written to' "$log" || true)
+  [ "$new" -lt "$written" ] && new=$written
   line="fuzz_$t: ${runs:-?} runs in $((t1 - t0)) s, coverage ${cov:-?} edges, corpus $(find "$corpus" -type f | wc -l) inputs, $new new findings"
   echo "   $line"
   report+="$line"$'\n'
@@ -131,11 +146,16 @@ for t in $targets; do
     status=1
     echo "   fuzz_$t did not run:"; tail -20 "$log"
   elif [ "$new" -gt 0 ]; then
-    status=1
-    find "$findings" -type f -newermt "@$t0" | sed 's/^/   finding: /'
+    open_dir="tests/fuzz/open-findings/$t"
+    if [ "$mode" = short ] && [ -n "$(find "$open_dir" -type f ! -name README.md 2>/dev/null)" ]; then
+      echo "   not failing: $t has open findings waiting for a fix ($open_dir/README.md)"
+    else
+      status=1
+    fi
+    sed -n 's/.*Test unit written to /   finding: /p' "$log" | sort -u
     grep -E -A30 '^==[0-9]+==ERROR|runtime error|^fuzz: ' "$log" | head -60 || true
   fi
 done
-echo "== Fuzz $( [ $status -eq 0 ] && echo clean || echo FOUND SOMETHING ) ($(( $(date +%s) - start )) s)"
+echo "== Fuzz $( [ $status -eq 0 ] && echo passed || echo FOUND SOMETHING ) ($(( $(date +%s) - start )) s)"
 printf '%s' "$report"
 exit $status

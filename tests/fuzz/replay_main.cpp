@@ -1,5 +1,6 @@
 // Replays inputs through a fuzz target without libFuzzer, for ctest (tests/fuzz/CMakeLists.txt):
-// each argument is a file, or a folder whose files are replayed in name order. Built with the
+// each argument is a file, or a folder whose files are replayed in name order (but README.md and
+// hidden files). Built with the
 // project's compiler and flags, so the saved crashes (tests/fuzz/regressions/) and the seeds run
 // in the ordinary test suite and under the sanitizers (scripts/sanitize.sh). A finding aborts.
 #include <algorithm>
@@ -22,7 +23,8 @@ int main(int argc, char** argv) {
     const std::filesystem::path path(argv[i]);
     if (std::filesystem::is_directory(path)) {
       for (const auto& entry : std::filesystem::directory_iterator(path)) {
-        if (entry.is_regular_file() && entry.path().filename().string().front() != '.') {
+        const std::string name = entry.path().filename().string();
+        if (entry.is_regular_file() && name.front() != '.' && name != "README.md") {
           inputs.push_back(entry.path());
         }
       }
