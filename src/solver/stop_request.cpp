@@ -55,8 +55,4 @@ const char* stop_signal_name() {
   }
 }
 
-void raise_run_request(int signal_number) {
-  on_run_signal(signal_number);
-}
-
 }  // namespace sf

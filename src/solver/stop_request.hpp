@@ -25,7 +25,4 @@ int take_run_requests();
 /// The name of the last signal that asked to stop ("SIGINT", "SIGTERM"), or "" for none.
 const char* stop_signal_name();
 
-/// For tests: as if the signal had arrived (SIGINT, SIGTERM or SIGUSR1).
-void raise_run_request(int signal_number);
-
 }  // namespace sf
