@@ -30,6 +30,9 @@
 # waiting for a fix) does not fail it: its findings are listed, and it fails again once the folder
 # is emptied into regressions/ with the fix.
 set -euo pipefail
+# The machine's cores. GNU nproc answers OMP_NUM_THREADS when it is set (CI sets it to 1 for
+# the tests), which would build and test one job at a time.
+sf_cores() { env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc; }
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
 mode="${1:-short}"
@@ -67,7 +70,7 @@ fuzzers=""
 for t in $targets; do fuzzers+=" fuzz_$t"; done
 echo "== Build:$fuzzers"
 # shellcheck disable=SC2086
-cmake --build "$build" -j"$(nproc)" --target $fuzzers
+cmake --build "$build" -j"$(sf_cores)" --target $fuzzers
 echo "== Built in $(( $(date +%s) - start )) s"
 [ "$mode" = build ] && exit 0
 

@@ -7,6 +7,9 @@
 # They run when no ctest arguments are given (CI) or with SF_EXTRA_CHECKS=1; SF_EXTRA_CHECKS=0
 # skips them.
 set -euo pipefail
+# The machine's cores. GNU nproc answers OMP_NUM_THREADS when it is set (CI sets it to 1 for
+# the tests), which would build and test one job at a time.
+sf_cores() { env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc; }
 cd "$(dirname "$0")/.."
 SF_WITH_PARAVIEW=1 scripts/setup.sh
 build_dir="${SF_BUILD_DIR:-build}"
@@ -16,7 +19,7 @@ echo "== Running the tests"
 # that wait sleep instead of spinning.
 export OMP_NUM_THREADS="${OMP_NUM_THREADS:-1}" OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-passive}"
 status=0
-ctest --test-dir "$build_dir" --output-on-failure -j"$(nproc)" -LE slow "$@" \
+ctest --test-dir "$build_dir" --output-on-failure -j"$(sf_cores)" -LE slow "$@" \
   | tee "$build_dir/ctest-main.log" || status=1  # pipefail: ctest's own status
 
 extra="${SF_EXTRA_CHECKS:-auto}"

@@ -4,6 +4,9 @@
 #   SF_WITH_PARAVIEW=1 ...      also ParaView (pvpython/pvbatch), needed by the ParaView tests
 #   SF_BUILD_DIR=dir ...        build folder (default: build)
 set -euo pipefail
+# The machine's cores. GNU nproc answers OMP_NUM_THREADS when it is set (CI sets it to 1 for
+# the tests), which would build and test one job at a time.
+sf_cores() { env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc; }
 cd "$(dirname "$0")/.."
 
 packages=(g++ cmake ninja-build pkg-config git libeigen3-dev libsuitesparse-dev libhdf5-dev hdf5-tools
@@ -20,5 +23,5 @@ build_dir="${SF_BUILD_DIR:-build}"
 echo "== Configuring and building in $build_dir"
 # The preset ci (CMakePresets.json: Ninja, Release, tests and benchmarks), in $build_dir.
 cmake --preset ci -B "$build_dir" >/dev/null
-cmake --build "$build_dir" -j"$(nproc)"
+cmake --build "$build_dir" -j"$(sf_cores)"
 echo "== Built $build_dir/sheetform"

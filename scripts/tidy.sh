@@ -13,6 +13,9 @@
 # prints the number of distinct findings per check (a finding in a header counts once, however
 # many files include it). Exit 1 when there is any finding.
 set -euo pipefail
+# The machine's cores. GNU nproc answers OMP_NUM_THREADS when it is set (CI sets it to 1 for
+# the tests), which would build and test one job at a time.
+sf_cores() { env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc; }
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
 scripts/install_packages.sh clang clang-tidy-14 libomp-dev
@@ -34,7 +37,7 @@ log="$build/tidy.log"
 echo "== clang-tidy over $pattern (log $log)"
 checks=()
 [ -n "${SF_TIDY_CHECKS:-}" ] && checks=(-checks="$SF_TIDY_CHECKS")
-run-clang-tidy-14 -p "$build" -j"${SF_TIDY_JOBS:-$(nproc)}" -quiet "${checks[@]}" \
+run-clang-tidy-14 -p "$build" -j"${SF_TIDY_JOBS:-$(sf_cores)}" -quiet "${checks[@]}" \
   -header-filter="^$root/(src|apps)/" "$pattern" >"$log" 2>&1 || true
 # "file:line:col: warning: text [check]" -> distinct (place, check), counted per check.
 # (run-clang-tidy-14 colours its output: the escapes are stripped first.)

@@ -29,6 +29,10 @@
 #include "core/log.hpp"
 #include "io/geo_safety.hpp"
 
+// The sanitizers' hook run before a sanitizer ends the process (libFuzzer sets it to save the
+// input as a finding). Weak: null in a build without sanitizers.
+extern "C" void __sanitizer_set_death_callback(void (*callback)(void)) __attribute__((weak));
+
 namespace sf {
 namespace {
 
@@ -549,6 +553,18 @@ MeshBudget& mesh_budget() {
   return budget;
 }
 
+// The child read's crash is the parent's answer, nothing more: a handler inherited from the
+// parent (a fuzzer's, which would save the input as its own finding, or a sanitizer's) must not
+// act on it. The child then dies by the signal, or a sanitizer's report exits it with status 1.
+void forget_inherited_crash_handlers() {
+  if (__sanitizer_set_death_callback != nullptr) {
+    __sanitizer_set_death_callback(nullptr);
+  }
+  for (const int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) {
+    std::signal(signal, SIG_DFL);
+  }
+}
+
 // gmsh 4.8 (Debian 12) corrupts its heap or reads out of bounds on some malformed .msh files
 // (found by fuzzing: tests/fuzz/regressions/mesh_reader): a truncated MSH 4.1 $Nodes block that
 // crashes gmsh::finalize, an $Elements block naming a node tag beyond the nodes. A .msh is
@@ -564,6 +580,7 @@ void read_msh_in_child_first(const std::filesystem::path& file) {
     return;  // cannot fork: gmsh reads it here, as before
   }
   if (child == 0) {
+    forget_inherited_crash_handlers();
     const int null = ::open("/dev/null", O_WRONLY);
     if (null >= 0) {
       ::dup2(null, 1);

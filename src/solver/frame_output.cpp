@@ -60,6 +60,7 @@ FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& direct
     names.push_back(std::move(column.name));
     units.push_back(std::move(column.unit));
   }
+  row_.resize(names.size());
   writer_ = std::make_unique<ResultsWriter>(directory, std::move(parts), std::move(names),
                                             std::move(units));
   writer_->write_run_info("resolved_case", model.output.resolved_case);
@@ -77,6 +78,7 @@ FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& direct
   for (HistoryColumn& column : history_columns(model)) {
     names.push_back(std::move(column.name));
   }
+  row_.resize(names.size());
   writer_ = std::make_unique<ResultsWriter>(
       directory, std::move(parts), std::move(names),
       ResultsWriter::Resume{mark.frames, mark.history_rows, mark.run_id});
@@ -124,7 +126,6 @@ std::vector<PartTopology> FrameOutput::set_up(const Model& model) {
     tool_coordinates_.push_back(t.mesh.nodes);
     tool_displacement_.push_back(Matrix3X::Zero(3, t.mesh.nodes.cols()));
   }
-  row_.resize(history_columns(model).size());
   const Eigen::Index n_elements = element_count(model.blank.part);
   displacement_.resize(3, model.blank.mesh.nodes.cols());
   has_springback_field_ = model.springback.has_value();
