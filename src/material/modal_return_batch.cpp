@@ -94,7 +94,7 @@ SF_BLOCK_INLINE void newton_step(Lanes& s, const ModalReturnBatch& b, const doub
     const Block lo = s.lo[k];
     const Block hi = s.hi[k];
     const Block fallback = block_abs(hi) < kInf ? 0.5 * (lo + hi) : 2.0 * lo + grow;
-    next = (next > lo) & (next < hi) ? next : fallback;
+    next = ((next > lo) & (next < hi)) ? next : fallback;
     const Block d_new = active ? next : D;
     s.D[k] = d_new;
     Block phi2 = {};
