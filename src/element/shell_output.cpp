@@ -19,6 +19,20 @@ Stress6 rotate_to_global(const Mat3& frame, double sxx, double syy, double sxy, 
   return out;
 }
 
+// The corotational frame of element e (quads first, then triangles) at the coordinates x.
+Mat3 element_frame(const ShellPart& part, const Matrix3X& x, int e) {
+  const int n_quads = static_cast<int>(part.quads.cols());
+  if (e < n_quads) {
+    ShellGeometry g;
+    compute_shell_geometry_or_throw(gather_quad(x, part.quads, e), e, "output", g);
+    return g.frame;
+  }
+  TriangleGeometry tg;
+  const int k = e - n_quads;
+  compute_triangle_geometry_or_throw(gather_triangle(x, part.triangles, k), e, k, "output", tg);
+  return tg.frame;
+}
+
 }  // namespace
 
 void compute_element_stress_output(const ShellPart& part, const Matrix3X& x,
@@ -64,6 +78,34 @@ void compute_element_stress_output(const ShellPart& part, const Matrix3X& x,
       ep += 0.5 * part.section.weight[k] * state.eps_p[base + k];
     }
     eps_p(e) = ep;
+  }
+}
+
+void compute_element_back_stress_output(const ShellPart& part, const Matrix3X& x,
+                                        const ShellState& state, StressColumns& top,
+                                        StressColumns& bottom) {
+  const int n_el = element_count(part);
+  const int np = state.n_points;
+  const std::size_t per_point =
+      state.back_stress.size() / (static_cast<std::size_t>(n_el) * static_cast<std::size_t>(np));
+  top.resize(6, n_el);
+  bottom.resize(6, n_el);
+  // The sum of a point's back stresses (xx, yy, xy in the element frame).
+  const auto total = [&](std::size_t point) {
+    Vec3 sum = Vec3::Zero();
+    for (std::size_t j = 0; j < per_point; j += 3) {
+      const double* a = state.back_stress.data() + per_point * point + j;
+      sum += Vec3(a[0], a[1], a[2]);
+    }
+    return sum;
+  };
+  for (int e = 0; e < n_el; ++e) {
+    const Mat3 frame = element_frame(part, x, e);
+    const std::size_t base = static_cast<std::size_t>(e) * np;
+    const Vec3 t = total(base + np - 1);
+    const Vec3 b = total(base);
+    top.col(e) = rotate_to_global(frame, t(0), t(1), t(2), 0.0, 0.0);
+    bottom.col(e) = rotate_to_global(frame, b(0), b(1), b(2), 0.0, 0.0);
   }
 }
 

@@ -30,6 +30,13 @@ void compute_element_stress_output(const ShellPart& part, const Matrix3X& x,
                                    const ShellState& state, StressColumns& mid, StressColumns& top,
                                    StressColumns& bottom, VectorX& eps_p);
 
+/// The back stress of a law with kinematic hardening (the sum of its back stresses, MPa, global
+/// components as the stress columns) at the outermost points, top (zeta = +1 side) and bottom.
+/// The state must hold back stresses (ShellState::back_stress not empty).
+void compute_element_back_stress_output(const ShellPart& part, const Matrix3X& x,
+                                        const ShellState& state, StressColumns& top,
+                                        StressColumns& bottom);
+
 /// Von Mises equivalent stress (MPa) of (xx, yy, zz, xy, yz, xz).
 double von_mises(const Stress6& s);
 

@@ -136,3 +136,16 @@ ShellState make_shell_state(int n_elements, int n_points, double thickness) {
 }
 
 }  // namespace sf
+
+namespace sf {
+
+void size_shell_state_for_material(ShellState& state, const Material& material) {
+  const auto* law = std::get_if<GeneralPlasticity>(&material);
+  const int n_back = law ? law->kinematic.count : 0;
+  state.back_stress.assign(static_cast<std::size_t>(state.n_elements) *
+                               static_cast<std::size_t>(state.n_points) * 3 *
+                               static_cast<std::size_t>(n_back),
+                           0.0);
+}
+
+}  // namespace sf

@@ -49,9 +49,13 @@ struct ShellState {
   /// part's hardening law: a state moved to another law must be made again. Empty: not stored.
   std::vector<double> flow_stress;
   std::vector<double> flow_stress_at;  ///< -, per point, see flow_stress
-  std::vector<double> sxz, syz;        ///< MPa, per element: transverse shear stress averaged over
-                                       ///< the thickness (Q / t, shear-corrected)
-  std::vector<double> thickness;       ///< mm, per element, current
+  /// MPa, the back stresses of a law with kinematic hardening (GeneralPlasticity), in the
+  /// element frame like the stress: index 3 (n_back i + b) + c for point i, back stress b of
+  /// n_back, component c (xx, yy, xy). Empty for other laws (size_shell_state_for_material).
+  std::vector<double> back_stress;
+  std::vector<double> sxz, syz;   ///< MPa, per element: transverse shear stress averaged over
+                                  ///< the thickness (Q / t, shear-corrected)
+  std::vector<double> thickness;  ///< mm, per element, current
   /// Hourglass (stabilisation) resultants per element, kHourglassModes per element (index
   /// kHourglassModes e + j). Belytschko-Tsay, stiffness form, in the element's corotational
   /// frame: j = 0, 1 in-plane (N), 2 out-of-plane (N), 3, 4 rotational (N mm), 5 unused. Assumed
@@ -74,6 +78,9 @@ inline constexpr int kDirectorNodes = 4;
 
 /// A stress-free state with uniform thickness (mm).
 ShellState make_shell_state(int n_elements, int n_points, double thickness);
+/// Sizes the material's own per-point arrays of `state` (zero): the back stresses of a law with
+/// kinematic hardening; clears them for other laws.
+void size_shell_state_for_material(ShellState& state, const Material& material);
 
 /// Hourglass control form (Flanagan & Belytschko 1981).
 enum class HourglassForm {

@@ -4,6 +4,7 @@
 // thickness strain and the work of the step. Inline: it runs once per element and cycle.
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <type_traits>
 
 #include "core/types.hpp"
@@ -63,6 +64,63 @@ inline FlowStressCache flow_stress_cache(ShellState& st, std::size_t base) {
     return {};
   }
   return {st.flow_stress.data() + base, st.flow_stress_at.data() + base};
+}
+
+/// update_section (below) for a GeneralPlasticity law (Barlat's criteria, kinematic hardening):
+/// the points are returned one at a time with their back stresses, which are stored like the
+/// stress, in the element frame (ShellState::back_stress). A plain overload: the element loops'
+/// update_section(kernel, ...) picks it for a GeneralKernel.
+inline SectionResult update_section(const GeneralKernel& kernel, const SectionConstants& sc, int e,
+                                    double t, const Vec3& dt_d_m, const Vec3& dt_d_k,
+                                    const double* material_angle, ShellState& st) {
+  const GeneralPlasticity& law = *kernel.law;
+  const MaterialFrame axes = make_material_frame(dt_d_m, dt_d_k, material_angle, e);
+  const int n_back = law.kinematic.count;
+  const std::size_t base = static_cast<std::size_t>(e) * static_cast<std::size_t>(sc.n_points);
+  const FlowStressCache cache = flow_stress_cache(st, base);
+  SectionResult r;
+  for (int k = 0; k < sc.n_points; ++k) {
+    const std::size_t i = base + static_cast<std::size_t>(k);
+    const double z = t * sc.half_zeta[k];
+    const double hw = t * sc.half_weight[k];
+    const Vec3 d_eps = dt_d_m - z * dt_d_k;
+    const Vec3 old_stress(st.sxx[i], st.syy[i], st.sxy[i]);
+    GeneralPlasticityState old;
+    old.stress = rotate_stress(old_stress, axes.c, axes.s);
+    old.eps_p = st.eps_p[i];
+    double* back = n_back > 0 ? st.back_stress.data() + 3 * n_back * i : nullptr;
+    for (int b = 0; b < n_back; ++b) {
+      old.back[b] =
+          rotate_stress(Vec3(back[3 * b], back[3 * b + 1], back[3 * b + 2]), axes.c, axes.s);
+    }
+    // The flow stress store (ShellState::flow_stress) spares a hardening evaluation per point.
+    const bool stored = cache.stress && cache.at[k] == old.eps_p;
+    const GeneralPlasticityUpdate up =
+        law.update(old, axes.d_m - z * axes.d_k, nullptr,
+                   stored ? cache.stress[k] : std::numeric_limits<double>::quiet_NaN());
+    if (cache.stress) {
+      cache.stress[k] = up.flow_stress;
+      cache.at[k] = up.state.eps_p;
+    }
+    const Vec3 stress = rotate_stress(up.state.stress, axes.c, -axes.s);
+    st.sxx[i] = stress(0);
+    st.syy[i] = stress(1);
+    st.sxy[i] = stress(2);
+    st.eps_p[i] = up.state.eps_p;
+    for (int b = 0; b < n_back; ++b) {
+      const Vec3 alpha = rotate_stress(up.state.back[b], axes.c, -axes.s);
+      back[3 * b] = alpha(0);
+      back[3 * b + 1] = alpha(1);
+      back[3 * b + 2] = alpha(2);
+    }
+    r.n += hw * stress;
+    r.m -= (hw * z) * stress;
+    r.d_ezz_mean += sc.half_weight[k] * up.d_ezz;
+    r.work += hw * 0.5 * (old_stress + stress).dot(d_eps);
+    r.plastic_work += hw * up.d_plastic_work;
+    r.stress_change_work += hw * (stress - old_stress).dot(d_eps);
+  }
+  return r;
 }
 
 /// Updates the points of element e (state indices e * n_points + k) for the strain increments

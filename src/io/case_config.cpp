@@ -112,7 +112,9 @@ void read_hardening(const TomlSection& s, const fs::path& folder, HardeningConfi
                  {"linear", Law::linear},
                  {"voce", Law::voce},
                  {"ludwik", Law::ludwik},
-                 {"tabulated", Law::tabulated}});
+                 {"tabulated", Law::tabulated},
+                 {"hockett_sherby", Law::hockett_sherby},
+                 {"swift_voce", Law::swift_voce}});
   switch (hardening.law) {
     case Law::swift:
       s.check_keys({"law", "K", "eps0", "n"});
@@ -137,6 +139,25 @@ void read_hardening(const TomlSection& s, const fs::path& folder, HardeningConfi
       s.read_number("A", hardening.ludwik_a, greater_than(0.0, "MPa"), Presence::required);
       s.read_number("B", hardening.ludwik_b, at_least(0.0, "MPa"), Presence::required);
       s.read_number("n", hardening.ludwik_n, interval(0.0, true, 1.0, false), Presence::required);
+      return;
+    case Law::hockett_sherby:
+      s.check_keys({"law", "sigma_s", "sigma_i", "N", "p"});
+      s.read_number("sigma_s", hardening.hs_sigma_s, greater_than(0.0, "MPa"), Presence::required);
+      s.read_number("sigma_i", hardening.hs_sigma_i,
+                    interval(0.0, true, hardening.hs_sigma_s, false, "MPa"), Presence::required);
+      s.read_number("N", hardening.hs_n, greater_than(0.0), Presence::required);
+      s.read_number("p", hardening.hs_p, interval(0.0, true, 1.0, false));
+      return;
+    case Law::swift_voce:
+      s.check_keys({"law", "weight", "K", "eps0", "n", "sigma0", "Q", "b"});
+      s.read_number("weight", hardening.sv_weight, interval(0.0, false, 1.0, false),
+                    Presence::required);
+      s.read_number("K", hardening.swift_k, greater_than(0.0, "MPa"), Presence::required);
+      s.read_number("eps0", hardening.swift_eps0, greater_than(0.0), Presence::required);
+      s.read_number("n", hardening.swift_n, interval(0.0, false, 1.0, true), Presence::required);
+      s.read_number("sigma0", hardening.voce_sigma0, greater_than(0.0, "MPa"), Presence::required);
+      s.read_number("Q", hardening.voce_q, at_least(0.0, "MPa"), Presence::required);
+      s.read_number("b", hardening.voce_b, greater_than(0.0), Presence::required);
       return;
     case Law::tabulated:
       s.check_keys({"law", "file"});
@@ -190,37 +211,94 @@ void read_forming_limit_curve(const TomlSection& s,
   forming_limit_curve = std::move(curve);
 }
 
+void read_kinematic(const TomlSection& s, KinematicConfig& kinematic) {
+  s.check_keys({"C", "gamma"});
+  s.read_numbers("C", kinematic.C, at_least(0.0, "MPa"), 1, 4, Presence::required);
+  s.read_numbers("gamma", kinematic.gamma, at_least(0.0), 1, 4, Presence::required);
+  if (kinematic.gamma.size() != kinematic.C.size()) {
+    s.fail_value("gamma", fmt::format("one gamma per back stress: an array of {} numbers (as C)",
+                                      kinematic.C.size()));
+  }
+}
+
+// The anisotropy keys of each type: r-values (hill48, yld89, yld2000's fit), Barlat's exponent,
+// Yld2000-2d's coefficients or the data they are fitted to.
+void read_anisotropy(const TomlSection& s, MaterialConfig& material) {
+  using Type = MaterialConfig::Type;
+  const auto forbid = [&](std::initializer_list<const char*> keys, std::string_view why) {
+    for (const auto* key : keys) {
+      if (s.has(key)) {
+        s.fail_forbidden(key, why);
+      }
+    }
+  };
+  const auto r_values = [&](Presence presence) {
+    s.read_number("r0", material.r0, greater_than(0.0), presence);
+    s.read_number("r45", material.r45, greater_than(0.0), presence);
+    s.read_number("r90", material.r90, greater_than(0.0), presence);
+  };
+  const bool barlat = material.type == Type::yld2000 || material.type == Type::yld89;
+  if (barlat) {
+    s.read_number("exponent", material.exponent, at_least(2.0), Presence::optional);
+  } else {
+    forbid({"exponent"}, "the exponent is for type = \"yld2000\" or \"yld89\"");
+  }
+  if (material.type == Type::hill48 || material.type == Type::yld89) {
+    r_values(Presence::required);
+  }
+  if (material.type != Type::yld2000) {
+    forbid({"alpha", "sigma0", "sigma45", "sigma90", "sigma_b", "r_b"},
+           "Yld2000-2d coefficients and data are for type = \"yld2000\"");
+    if (material.type != Type::hill48 && material.type != Type::yld89) {
+      forbid({"r0", "r45", "r90"},
+             "Lankford coefficients are for type = \"hill48\", \"yld89\" or \"yld2000\"");
+    }
+    return;
+  }
+  if (s.read_numbers("alpha", material.alpha, NumberRange{}, 8, 8)) {
+    forbid({"sigma0", "sigma45", "sigma90", "sigma_b", "r0", "r45", "r90", "r_b"},
+           "alpha is given: Yld2000-2d is not fitted (give either alpha or the eight data)");
+    return;
+  }
+  const NumberRange stress = greater_than(0.0, "MPa, or ratios");
+  s.read_number("sigma0", material.sigma0, stress, Presence::required);
+  s.read_number("sigma45", material.sigma45, stress, Presence::required);
+  s.read_number("sigma90", material.sigma90, stress, Presence::required);
+  s.read_number("sigma_b", material.sigma_b, stress, Presence::required);
+  r_values(Presence::required);
+  s.read_number("r_b", material.r_b, greater_than(0.0), Presence::required);
+}
+
 void read_material(const TomlSection& s, const fs::path& folder, MaterialConfig& material) {
   using Type = MaterialConfig::Type;
-  s.check_keys({"type", "density", "young", "poisson", "hardening", "r0", "r45", "r90",
+  s.check_keys({"type", "density", "young", "poisson", "hardening", "kinematic", "r0", "r45", "r90",
+                "exponent", "alpha", "sigma0", "sigma45", "sigma90", "sigma_b", "r_b",
                 "forming_limit_curve"});
-  s.read_choice(
-      "type", material.type,
-      {{"von_mises", Type::von_mises}, {"elastic", Type::elastic}, {"hill48", Type::hill48}});
+  s.read_choice("type", material.type,
+                {{"von_mises", Type::von_mises},
+                 {"elastic", Type::elastic},
+                 {"hill48", Type::hill48},
+                 {"yld2000", Type::yld2000},
+                 {"yld89", Type::yld89}});
   s.read_number("density", material.density, greater_than(0.0, "tonne/mm^3"), Presence::required);
   s.read_number("young", material.young, greater_than(0.0, "MPa"), Presence::required);
   s.read_number("poisson", material.poisson, interval(-1.0, true, 0.5, true), Presence::required);
   read_forming_limit_curve(s, material.forming_limit_curve);
-  if (material.type == Type::hill48) {
-    s.read_number("r0", material.r0, greater_than(0.0), Presence::required);
-    s.read_number("r45", material.r45, greater_than(0.0), Presence::required);
-    s.read_number("r90", material.r90, greater_than(0.0), Presence::required);
-  } else {
-    for (const auto key : {"r0", "r45", "r90"}) {
-      if (s.has(key)) {
-        s.fail_forbidden(key, "Lankford coefficients are for type = \"hill48\"");
-      }
-    }
-  }
+  read_anisotropy(s, material);
   if (material.type == Type::elastic) {
-    if (s.has("hardening")) {
-      s.fail_forbidden("hardening",
-                       "an elastic material has no hardening (remove the table or "
-                       "set type = \"von_mises\" or \"hill48\")");
+    for (const auto* key : {"hardening", "kinematic"}) {
+      if (s.has(key)) {
+        s.fail_forbidden(key,
+                         "an elastic material has no hardening (remove the table or set type = "
+                         "\"von_mises\", \"hill48\", \"yld2000\" or \"yld89\")");
+      }
     }
     return;
   }
   read_hardening(*s.sub_table("hardening", Presence::required), folder, material.hardening);
+  if (const auto kinematic = s.sub_table("kinematic", Presence::optional)) {
+    read_kinematic(*kinematic, material.kinematic);
+  }
 }
 
 void read_materials(const TomlSection& top, const fs::path& folder,

@@ -22,7 +22,7 @@ struct CurveConfig {
 
 /// Isotropic hardening: flow stress as a function of equivalent plastic strain.
 struct HardeningConfig {
-  enum class Law { swift, linear, voce, ludwik, tabulated };
+  enum class Law { swift, linear, voce, ludwik, tabulated, hockett_sherby, swift_voce };
   Law law = Law::swift;
   // swift: sigma_y = K * (eps0 + eps_p)^n
   double swift_k = 0.0;     ///< MPa
@@ -39,13 +39,27 @@ struct HardeningConfig {
   double ludwik_a = 0.0;  ///< MPa, initial yield stress
   double ludwik_b = 0.0;  ///< MPa
   double ludwik_n = 0.0;  ///< -
+  // hockett_sherby: sigma_y = sigma_s - (sigma_s - sigma_i) exp(-N eps_p^p)
+  double hs_sigma_s = 0.0;  ///< MPa
+  double hs_sigma_i = 0.0;  ///< MPa
+  double hs_n = 0.0;        ///< -
+  double hs_p = 1.0;        ///< -
+  // swift_voce: sigma_y = weight Swift (K, eps0, n) + (1 - weight) Voce (sigma0, Q, b)
+  double sv_weight = 0.5;  ///< -
   /// tabulated: a CSV file of (equivalent plastic strain -, true stress MPa) rows, absolute
   /// (resolved against the case file's folder); read by build_model (read_hardening_csv).
   std::filesystem::path table_file;
 };
 
+/// Nonlinear kinematic hardening (Armstrong-Frederick back stresses, Chaboche's sum): one C and
+/// one gamma per back stress, 1 to 4 of them; empty = isotropic hardening only.
+struct KinematicConfig {
+  std::vector<double> C;      ///< MPa, each >= 0
+  std::vector<double> gamma;  ///< -, each >= 0
+};
+
 struct MaterialConfig {
-  enum class Type { elastic, von_mises, hill48 };
+  enum class Type { elastic, von_mises, hill48, yld2000, yld89 };
   std::string name;  ///< the table's key under [materials]
   Type type = Type::von_mises;
   double density = 0.0;       ///< tonne/mm^3
@@ -57,6 +71,17 @@ struct MaterialConfig {
   double r0 = 1.0;   ///< -
   double r45 = 1.0;  ///< -
   double r90 = 1.0;  ///< -
+  // yld2000 and yld89 (Barlat): the exponent a (M for Yld89), >= 2; 8 for aluminium, 6 for steel.
+  double exponent = 8.0;  ///< -
+  /// yld2000: alpha_1..alpha_8 given directly, or empty: fitted to sigma0, sigma45, sigma90,
+  /// sigma_b, r0, r45, r90, r_b (Barlat et al. 2003). yld89 uses r0, r45, r90.
+  std::vector<double> alpha;
+  double sigma0 = 1.0;        ///< MPa (or any unit: only ratios to sigma0 are used), yld2000 fit
+  double sigma45 = 1.0;       ///< as sigma0
+  double sigma90 = 1.0;       ///< as sigma0
+  double sigma_b = 1.0;       ///< as sigma0, equibiaxial
+  double r_b = 1.0;           ///< -, equibiaxial d_eps_yy / d_eps_xx, yld2000 fit
+  KinematicConfig kinematic;  ///< any plastic type; empty = none
   /// Optional forming limit curve: [minor, major] true (logarithmic) strain points, minor
   /// strictly increasing, major > 0; empty = none. Not used by the solver: read back from
   /// case.resolved.toml by scripts/plot_forming_limit.py.

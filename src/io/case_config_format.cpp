@@ -61,6 +61,15 @@ class TomlWriter {
     entry(key, fmt::format("[{}]", text), unit);
   }
 
+  void numbers(std::string_view key, const std::vector<double>& values,
+               std::string_view unit = {}) {
+    std::string text;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      text += fmt::format("{}{}", i == 0 ? "" : ", ", format_toml_number(values[i]));
+    }
+    entry(key, fmt::format("[{}]", text), unit);
+  }
+
   std::string take() { return std::move(text_); }
 
  private:
@@ -130,6 +139,10 @@ std::string_view material_type_name(MaterialConfig::Type type) {
       return "von_mises";
     case MaterialConfig::Type::hill48:
       return "hill48";
+    case MaterialConfig::Type::yld2000:
+      return "yld2000";
+    case MaterialConfig::Type::yld89:
+      return "yld89";
   }
   return "von_mises";
 }
@@ -159,10 +172,55 @@ void write_hardening(TomlWriter& w, const HardeningConfig& h) {
       w.number("B", h.ludwik_b, "MPa");
       w.number("n", h.ludwik_n);
       return;
+    case HardeningConfig::Law::hockett_sherby:
+      w.string("law", "hockett_sherby");
+      w.number("sigma_s", h.hs_sigma_s,
+               "MPa; sigma_y = sigma_s - (sigma_s - sigma_i) exp(-N eps_p^p)");
+      w.number("sigma_i", h.hs_sigma_i, "MPa");
+      w.number("N", h.hs_n);
+      w.number("p", h.hs_p);
+      return;
+    case HardeningConfig::Law::swift_voce:
+      w.string("law", "swift_voce");
+      w.number("weight", h.sv_weight, "sigma_y = weight Swift + (1 - weight) Voce");
+      w.number("K", h.swift_k, "MPa; Swift: K (eps0 + eps_p)^n");
+      w.number("eps0", h.swift_eps0);
+      w.number("n", h.swift_n);
+      w.number("sigma0", h.voce_sigma0, "MPa; Voce: sigma0 + Q (1 - exp(-b eps_p))");
+      w.number("Q", h.voce_q, "MPa");
+      w.number("b", h.voce_b);
+      return;
     case HardeningConfig::Law::tabulated:
       w.string("law", "tabulated");
       w.string("file", h.table_file.string());
       return;
+  }
+}
+
+void write_anisotropy(TomlWriter& w, const MaterialConfig& material) {
+  using Type = MaterialConfig::Type;
+  if (material.type == Type::yld2000 || material.type == Type::yld89) {
+    w.number("exponent", material.exponent, "Barlat's exponent (a, or M for Yld89)");
+  }
+  if (material.type == Type::yld2000 && !material.alpha.empty()) {
+    w.numbers("alpha", material.alpha, "Yld2000-2d alpha_1..alpha_8, given directly");
+    return;
+  }
+  if (material.type == Type::yld2000) {
+    w.number("sigma0", material.sigma0,
+             "the data Yld2000-2d is fitted to (stresses: ratios count)");
+    w.number("sigma45", material.sigma45);
+    w.number("sigma90", material.sigma90);
+    w.number("sigma_b", material.sigma_b);
+  }
+  if (material.type == Type::hill48 || material.type == Type::yld89 ||
+      material.type == Type::yld2000) {
+    w.number("r0", material.r0, "Lankford coefficient at 0 deg to the rolling direction");
+    w.number("r45", material.r45);
+    w.number("r90", material.r90);
+  }
+  if (material.type == Type::yld2000) {
+    w.number("r_b", material.r_b, "equibiaxial d eps_yy / d eps_xx");
   }
 }
 
@@ -173,11 +231,7 @@ void write_material(TomlWriter& w, const MaterialConfig& material) {
   w.number("density", material.density, "tonne/mm^3");
   w.number("young", material.young, "MPa");
   w.number("poisson", material.poisson);
-  if (material.type == MaterialConfig::Type::hill48) {
-    w.number("r0", material.r0, "Lankford coefficient at 0 deg to the rolling direction");
-    w.number("r45", material.r45);
-    w.number("r90", material.r90);
-  }
+  write_anisotropy(w, material);
   if (!material.forming_limit_curve.empty()) {
     w.points("forming_limit_curve", material.forming_limit_curve,
              "[[minor, major], ...] true strains; used by scripts/plot_forming_limit.py only");
@@ -187,6 +241,13 @@ void write_material(TomlWriter& w, const MaterialConfig& material) {
   }
   w.header(table + ".hardening");
   write_hardening(w, material.hardening);
+  if (!material.kinematic.C.empty()) {
+    w.header(table + ".kinematic");
+    w.numbers(
+        "C", material.kinematic.C,
+        "MPa; Armstrong-Frederick back stresses: d alpha = C m d eps_p - gamma alpha d eps_p");
+    w.numbers("gamma", material.kinematic.gamma);
+  }
 }
 
 void write_tool(TomlWriter& w, const ToolConfig& tool) {

@@ -277,6 +277,36 @@ bool TomlSection::read_name(std::string_view key, std::string& value, Presence p
   return true;
 }
 
+bool TomlSection::read_numbers(std::string_view key, std::vector<double>& values,
+                               const NumberRange& range, std::size_t min_count,
+                               std::size_t max_count, Presence presence) const {
+  const std::string expected =
+      min_count == max_count ? fmt::format("an array of {} numbers", min_count)
+                             : fmt::format("an array of {} to {} numbers", min_count, max_count);
+  const toml::node* node = find(key);
+  if (!node) {
+    if (presence == Presence::required) {
+      fail_missing(key, expected);
+    }
+    return false;
+  }
+  const auto* array = node->as_array();
+  if (!array || array->size() < min_count || array->size() > max_count) {
+    fail_value(key, expected);
+  }
+  std::vector<double> read;
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const std::optional<double> number = number_of(*array->get(i));
+    if (!number || !range.contains(*number)) {
+      fail_at(*array->get(i), fmt::format("{}[{}]", key_path(key), i),
+              fmt::format("expected {}, got {}", range.describe(), describe_value(*array->get(i))));
+    }
+    read.push_back(*number);
+  }
+  values = std::move(read);
+  return true;
+}
+
 bool TomlSection::read_direction(std::string_view key, std::array<double, 3>& value) const {
   constexpr std::string_view expected = "an array of 3 numbers, not all zero";
   const toml::node* node = find(key);

@@ -89,6 +89,10 @@ class TomlSection {
   bool read_choice(std::string_view key, T& value,
                    std::initializer_list<std::pair<std::string_view, T>> choices,
                    Presence presence = Presence::optional) const;
+  /// An array of min_count..max_count numbers, each in `range`.
+  bool read_numbers(std::string_view key, std::vector<double>& values, const NumberRange& range,
+                    std::size_t min_count, std::size_t max_count,
+                    Presence presence = Presence::optional) const;
   /// An array of three numbers, not all zero, normalised to unit length.
   bool read_direction(std::string_view key, std::array<double, 3>& value) const;
 

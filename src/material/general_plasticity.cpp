@@ -101,7 +101,8 @@ class Return {
 }  // namespace
 
 GeneralPlasticityUpdate GeneralPlasticity::update(const GeneralPlasticityState& old,
-                                                  const Vec3& d_strain, Mat3* tangent) const {
+                                                  const Vec3& d_strain, Mat3* tangent,
+                                                  double flow_at_old) const {
   const Vec3 trial = elastic_trial(E, nu, old.stress, d_strain);
   if (!trial.allFinite()) {
     throw InstabilityError(std::string(criterion_name(criterion)) +
@@ -112,9 +113,11 @@ GeneralPlasticityUpdate GeneralPlasticity::update(const GeneralPlasticityState& 
     back_sum += old.back[i];
   }
   const Vec3 eta_trial = trial - back_sum;
-  const double flow_n = evaluate_hardening(hardening, old.eps_p).stress;
+  const double flow_n =
+      std::isnan(flow_at_old) ? evaluate_hardening(hardening, old.eps_p).stress : flow_at_old;
   GeneralPlasticityUpdate up;
   if (equivalent_stress_value(criterion, eta_trial) <= flow_n) {
+    up.flow_stress = flow_n;
     up.state = old;
     up.state.stress = trial;
     up.d_ezz = through_thickness_increment(E, nu, d_strain, old.stress, trial);
@@ -170,6 +173,7 @@ GeneralPlasticityUpdate GeneralPlasticity::update(const GeneralPlasticityState& 
   }
   up.plastic = true;
   up.iterations = iterations;
+  up.flow_stress = it.flow.stress;
   up.state.eps_p = old.eps_p + it.d_lambda;
   up.state.stress = it.eta;
   for (int i = 0; i < kinematic.count; ++i) {

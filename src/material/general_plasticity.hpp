@@ -15,6 +15,7 @@
 // under uniaxial tension along the rolling direction alpha_xx = C / gamma (1 - exp(-gamma eps_p)),
 // Armstrong and Frederick's closed form. FRAME: material axes, like Hill48PlaneStress.
 #include <array>
+#include <limits>
 
 #include "core/types.hpp"
 #include "material/hardening.hpp"
@@ -59,7 +60,8 @@ struct GeneralPlasticityUpdate {
   bool plastic = false;          ///< true when the step was plastic
   /// Plastic work increment per unit volume, MPa: sigma_mid . d_eps^p (as PlaneStressUpdate).
   double d_plastic_work = 0.0;
-  int iterations = 0;  ///< Newton iterations of the return (0 when elastic)
+  int iterations = 0;        ///< Newton iterations of the return (0 when elastic)
+  double flow_stress = 0.0;  ///< MPa, the flow stress at the new plastic strain
 };
 
 /// The law's constants.
@@ -74,8 +76,19 @@ struct GeneralPlasticity {
   /// With `tangent`, also the consistent tangent d stress / d strain (MPa; engineering shear).
   /// Throws InstabilityError if the return mapping does not converge (the message gives the
   /// criterion, the trial stress and the residual).
-  GeneralPlasticityUpdate update(const GeneralPlasticityState& old, const Vec3& d_strain,
-                                 Mat3* tangent = nullptr) const;
+  /// `flow_at_old`: the flow stress at old.eps_p when the caller knows it (MPa; a store of the
+  /// last update's flow_stress), NaN to evaluate it.
+  GeneralPlasticityUpdate update(
+      const GeneralPlasticityState& old, const Vec3& d_strain, Mat3* tangent = nullptr,
+      double flow_at_old = std::numeric_limits<double>::quiet_NaN()) const;
+};
+
+/// The element loops' handle on the law (material/plane_stress_kernels.hpp: point_kernel). Works
+/// in the material axes; shell_section_update.hpp updates its points one at a time, with their
+/// back stresses.
+struct GeneralKernel {
+  static constexpr bool kMaterialAxes = true;
+  const GeneralPlasticity* law;
 };
 
 /// Throws InputError naming `what` unless E > 0, -1 < nu < 0.5, the criterion and hardening are

@@ -33,6 +33,17 @@ FlowStress LudwikHardening::evaluate(double eps_p) const {
   return {A + hardening, n * hardening / eps_p};
 }
 
+FlowStress HockettSherbyHardening::evaluate(double eps_p) const {
+  const double range = sigma_s - sigma_i;
+  if (!(eps_p > 0.0)) {
+    const double slope = p < 1.0 ? std::numeric_limits<double>::infinity() : range * N;
+    return {sigma_i, range == 0.0 ? 0.0 : slope};
+  }
+  const double power = p == 1.0 ? eps_p : std::pow(eps_p, p);
+  const double decay = range * std::exp(-N * power);
+  return {sigma_s - decay, decay * N * p * power / eps_p};
+}
+
 FlowStress TabulatedHardening::evaluate(double e) const {
   const std::size_t n = eps_p.size();
   if (n < 2) {
@@ -129,6 +140,22 @@ void check_hardening(const Hardening& hardening, const char* what) {
       throw InputError(name + ": Ludwik hardening needs A > 0, B >= 0 and 0 < n <= 1 (got A = " +
                        num(h->A) + ", B = " + num(h->B) + ", n = " + num(h->n) + ")");
     }
+  } else if (const auto* hs = std::get_if<HockettSherbyHardening>(&hardening)) {
+    if (!(hs->sigma_i > 0.0) || !(hs->sigma_s >= hs->sigma_i) || !(hs->N > 0.0) ||
+        !(hs->p > 0.0 && hs->p <= 1.0) || !all_finite({hs->sigma_s, hs->sigma_i, hs->N, hs->p})) {
+      throw InputError(name +
+                       ": Hockett-Sherby hardening needs sigma_s >= sigma_i > 0, N > 0 and "
+                       "0 < p <= 1 (got sigma_s = " +
+                       num(hs->sigma_s) + ", sigma_i = " + num(hs->sigma_i) +
+                       ", N = " + num(hs->N) + ", p = " + num(hs->p) + ")");
+    }
+  } else if (const auto* sv = std::get_if<SwiftVoceHardening>(&hardening)) {
+    if (!(sv->weight >= 0.0 && sv->weight <= 1.0)) {
+      throw InputError(name + ": Swift-Voce hardening needs 0 <= weight <= 1 (got " +
+                       num(sv->weight) + ")");
+    }
+    check_hardening(sv->swift, what);
+    check_hardening(sv->voce, what);
   } else {
     const auto& t = std::get<TabulatedHardening>(hardening);
     const std::string err = table_error(t.eps_p, t.stress, nullptr);

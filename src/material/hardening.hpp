@@ -98,6 +98,40 @@ struct LudwikHardening {
   FlowStress evaluate(double eps_p) const;
 };
 
+/// Hockett & Sherby (1975) saturation hardening: sigma_y = sigma_s - (sigma_s - sigma_i)
+/// exp(-N eps_p^p). Needs sigma_s >= sigma_i > 0, N > 0, 0 < p <= 1 (p = 1 is Voce's form with
+/// sigma0 = sigma_i, Q = sigma_s - sigma_i, b = N; for p < 1 the slope is infinite at eps_p = 0,
+/// returned as +inf like Ludwik's).
+struct HockettSherbyHardening {
+  double sigma_s = 0.0;  ///< MPa, saturation stress
+  double sigma_i = 0.0;  ///< MPa, initial yield stress
+  double N = 0.0;        ///< -, rate
+  double p = 1.0;        ///< -, exponent of eps_p
+
+  double flow_stress(double eps_p) const { return evaluate(eps_p).stress; }
+  double slope(double eps_p) const { return evaluate(eps_p).slope; }
+  /// Both at once.
+  FlowStress evaluate(double eps_p) const;
+};
+
+/// Swift-Voce combined hardening: sigma_y = w Swift(eps_p) + (1 - w) Voce(eps_p), 0 <= w <= 1
+/// (the weight is the Swift part's; the Swift law keeps hardening where Voce saturates).
+struct SwiftVoceHardening {
+  double weight = 0.5;  ///< -, the Swift part's weight w
+  SwiftHardening swift;
+  VoceHardening voce;
+
+  double flow_stress(double eps_p) const { return evaluate(eps_p).stress; }
+  double slope(double eps_p) const { return evaluate(eps_p).slope; }
+  /// Both at once.
+  FlowStress evaluate(double eps_p) const {
+    const FlowStress a = swift.evaluate(eps_p);
+    const FlowStress b = voce.evaluate(eps_p);
+    return {weight * a.stress + (1.0 - weight) * b.stress,
+            weight * a.slope + (1.0 - weight) * b.slope};
+  }
+};
+
 /// Tabulated hardening: points (eps_p[i], stress[i]) of true stress (MPa) against equivalent
 /// plastic strain (-), interpolated linearly and extrapolated beyond the last point with the last
 /// segment's slope (a single point: perfect plasticity). Valid tables (check_hardening): at least
@@ -115,7 +149,7 @@ struct TabulatedHardening {
 
 /// A hardening law, chosen once per material.
 using Hardening = std::variant<SwiftHardening, LinearHardening, VoceHardening, LudwikHardening,
-                               TabulatedHardening>;
+                               TabulatedHardening, HockettSherbyHardening, SwiftVoceHardening>;
 
 /// Flow stress (MPa) of any hardening law at eps_p (-).
 double flow_stress(const Hardening& hardening, double eps_p);

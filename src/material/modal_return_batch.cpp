@@ -211,6 +211,8 @@ SF_INSTANTIATE_RETURN(LinearHardening)
 SF_INSTANTIATE_RETURN(VoceHardening)
 SF_INSTANTIATE_RETURN(LudwikHardening)
 SF_INSTANTIATE_RETURN(TabulatedHardening)
+SF_INSTANTIATE_RETURN(HockettSherbyHardening)
+SF_INSTANTIATE_RETURN(SwiftVoceHardening)
 #undef SF_INSTANTIATE_RETURN
 
 }  // namespace sf

@@ -97,6 +97,9 @@ void check_material(const Material& material, const char* what) {
     }
     check_hardening(h->hardening, what);
   }
+  if (const auto* g = std::get_if<GeneralPlasticity>(&material)) {
+    check_general_plasticity(*g, what);
+  }
 }
 
 }  // namespace sf

@@ -5,7 +5,9 @@
 #include <variant>
 
 #include "core/types.hpp"
+#include "material/general_plasticity.hpp"
 #include "material/hardening.hpp"
+#include "material/hill48_coefficients.hpp"
 
 namespace sf {
 
@@ -53,19 +55,6 @@ struct J2PlaneStress {
   PlaneStressUpdate update(const State& old, const Vec3& d_strain) const;
 };
 
-/// Hill (1948) quadratic anisotropic yield function coefficients, normalised with the rolling
-/// direction (RD) as reference: G + H = 1, so sigma_eq = sigma_y in uniaxial tension along RD.
-/// From the Lankford coefficients: G = 1/(1 + r0), H = r0/(1 + r0), F = r0/(r90 (1 + r0)),
-/// N = (r0 + r90)(1 + 2 r45) / (2 r90 (1 + r0)).
-struct Hill48Coefficients {
-  double F, G, H, N;  ///< -
-};
-/// Hill48 coefficients from r0, r45, r90 (> 0; not checked here, see check_material).
-Hill48Coefficients hill48_coefficients(double r0, double r45, double r90);
-/// Hill48 plane-stress equivalent stress (MPa) of (sxx, syy, sxy) in material axes:
-/// sigma_eq^2 = G sxx^2 + F syy^2 + H (sxx - syy)^2 + 2 N sxy^2.
-double hill48_equivalent_stress(const Hill48Coefficients& c, const Vec3& stress);
-
 /// Hill (1948) orthotropic elastic-plastic plane stress with isotropic elasticity, associated
 /// flow and isotropic hardening (hardening gives sigma_y of the rolling direction, the reference).
 /// The return is the closed-point (backward-Euler) return of the J2 law generalised to the Hill
@@ -94,8 +83,11 @@ struct Hill48PlaneStress {
   PlaneStressUpdate update(const State& old, const Vec3& d_strain) const;
 };
 
-/// A shell part's material law, chosen once per part (visit it outside element loops).
-using Material = std::variant<ElasticPlaneStress, J2PlaneStress, Hill48PlaneStress>;
+/// A shell part's material law, chosen once per part (visit it outside element loops). J2 and
+/// Hill48 with isotropic hardening have closed-form returns (modal_return_batch.hpp); every other
+/// plastic law (Barlat's criteria, kinematic hardening) is a GeneralPlasticity.
+using Material =
+    std::variant<ElasticPlaneStress, J2PlaneStress, Hill48PlaneStress, GeneralPlasticity>;
 
 /// True for a law whose update works in the material (rolling-direction) axes, which the element
 /// must rotate into and out of (Hill48); false for isotropic laws, which take the element frame
@@ -104,6 +96,8 @@ template <class Law>
 inline constexpr bool kUsesMaterialAxes = false;
 template <>
 inline constexpr bool kUsesMaterialAxes<Hill48PlaneStress> = true;
+template <>
+inline constexpr bool kUsesMaterialAxes<GeneralPlasticity> = true;
 
 /// Components of a strain (exx, eyy, gxy; engineering shear) in axes rotated by `angle` (rad,
 /// counter-clockwise about e3) from the current ones: e' = R^T e R, R = [[c, -s], [s, c]].

@@ -181,5 +181,8 @@ inline J2Kernel point_kernel(const J2PlaneStress& law) {
 inline Hill48Kernel point_kernel(const Hill48PlaneStress& law) {
   return Hill48Kernel(law);
 }
+inline GeneralKernel point_kernel(const GeneralPlasticity& law) {
+  return GeneralKernel{&law};
+}
 
 }  // namespace sf

@@ -10,7 +10,7 @@
 #include <variant>
 
 #include "core/types.hpp"
-#include "material/plane_stress.hpp"
+#include "material/hill48_coefficients.hpp"
 
 namespace sf {
 

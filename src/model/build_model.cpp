@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <string>
 #include <type_traits>
 #include <variant>
 
@@ -12,6 +13,7 @@
 #include "core/errors.hpp"
 #include "core/log.hpp"
 #include "io/gmsh_reader.hpp"
+#include "material/anisotropy_fit.hpp"
 #include "model/constraint_assembly.hpp"
 
 namespace sf {
@@ -30,6 +32,11 @@ Hardening make_hardening(const CaseConfig& config, const MaterialConfig& m) {
       return VoceHardening{h.voce_sigma0, h.voce_q, h.voce_b};
     case HardeningConfig::Law::ludwik:
       return LudwikHardening{h.ludwik_a, h.ludwik_b, h.ludwik_n};
+    case HardeningConfig::Law::hockett_sherby:
+      return HockettSherbyHardening{h.hs_sigma_s, h.hs_sigma_i, h.hs_n, h.hs_p};
+    case HardeningConfig::Law::swift_voce:
+      return SwiftVoceHardening{h.sv_weight, SwiftHardening{h.swift_k, h.swift_eps0, h.swift_n},
+                                VoceHardening{h.voce_sigma0, h.voce_q, h.voce_b}};
     case HardeningConfig::Law::tabulated:
       try {
         return read_hardening_csv(h.table_file);
@@ -41,16 +48,63 @@ Hardening make_hardening(const CaseConfig& config, const MaterialConfig& m) {
   return LinearHardening{h.yield_stress, h.modulus};
 }
 
+// The yield criterion of a plastic material; Barlat's are fitted here, errors naming the case
+// file and the material.
+YieldCriterion make_criterion(const CaseConfig& config, const MaterialConfig& m) {
+  const std::string what = fmt::format("{}: materials.{}", config.file.string(), m.name);
+  switch (m.type) {
+    case MaterialConfig::Type::hill48:
+      return Hill48Criterion{hill48_coefficients(m.r0, m.r45, m.r90)};
+    case MaterialConfig::Type::yld2000:
+      if (m.alpha.size() == 8) {
+        Yld2000Criterion c;
+        std::copy(m.alpha.begin(), m.alpha.end(), c.alpha.begin());
+        c.a = m.exponent;
+        return c;
+      }
+      return fit_yld2000(
+          Yld2000Data{m.sigma0, m.sigma45, m.sigma90, m.sigma_b, m.r0, m.r45, m.r90, m.r_b},
+          m.exponent, what.c_str());
+    case MaterialConfig::Type::yld89:
+      return fit_yld89(m.r0, m.r45, m.r90, m.exponent, what.c_str());
+    case MaterialConfig::Type::elastic:
+    case MaterialConfig::Type::von_mises:
+      break;
+  }
+  return VonMisesCriterion{};
+}
+
 Material make_material(const CaseConfig& config, const MaterialConfig& m) {
+  const bool kinematic = !m.kinematic.C.empty();
   switch (m.type) {
     case MaterialConfig::Type::elastic:
       return ElasticPlaneStress{m.young, m.poisson};
     case MaterialConfig::Type::von_mises:
-      return J2PlaneStress{m.young, m.poisson, make_hardening(config, m)};
+      if (!kinematic) {
+        return J2PlaneStress{m.young, m.poisson, make_hardening(config, m)};
+      }
+      break;
     case MaterialConfig::Type::hill48:
-      return Hill48PlaneStress{m.young, m.poisson, m.r0, m.r45, m.r90, make_hardening(config, m)};
+      if (!kinematic) {
+        return Hill48PlaneStress{m.young, m.poisson, m.r0, m.r45, m.r90, make_hardening(config, m)};
+      }
+      break;
+    case MaterialConfig::Type::yld2000:
+    case MaterialConfig::Type::yld89:
+      break;
   }
-  return ElasticPlaneStress{m.young, m.poisson};
+  GeneralPlasticity law;
+  law.E = m.young;
+  law.nu = m.poisson;
+  law.criterion = make_criterion(config, m);
+  law.hardening = make_hardening(config, m);
+  law.kinematic.count = static_cast<int>(m.kinematic.C.size());
+  for (int i = 0; i < law.kinematic.count; ++i) {
+    law.kinematic.terms[i] = {m.kinematic.C[i], m.kinematic.gamma[i]};
+  }
+  check_general_plasticity(law,
+                           fmt::format("{}: materials.{}", config.file.string(), m.name).c_str());
+  return law;
 }
 
 // Material axes of every blank element (laws with material axes only): the angle from each

@@ -70,6 +70,7 @@ void visit_checkpoint_fields(Visitor& v, State& s) {
   v.elements("shell/thickness", s.shell.thickness, n);
   v.elements("shell/hourglass", s.shell.hourglass, n);
   v.elements("shell/director", s.shell.director, n);
+  v.elements("shell/back_stress", s.shell.back_stress, n);
 
   auto& e = s.energies;
   v.scalar("energies/kinetic", e.kinetic);

@@ -180,6 +180,13 @@ void FrameOutput::write_frame(const Model& model, const SolutionState& s) {
     blank.fields.push_back({"stress_top", FieldCenter::cell, 6, stress_top_.data()});
     blank.fields.push_back({"stress_bottom", FieldCenter::cell, 6, stress_bottom_.data()});
   }
+  if (!s.shell.back_stress.empty()) {
+    compute_element_back_stress_output(model.blank.part, stress_geometry_ ? *stress_geometry_ : s.x,
+                                       s.shell, back_stress_top_, back_stress_bottom_);
+    blank.fields.push_back({"back_stress_top", FieldCenter::cell, 6, back_stress_top_.data()});
+    blank.fields.push_back(
+        {"back_stress_bottom", FieldCenter::cell, 6, back_stress_bottom_.data()});
+  }
   for (const SearchAuditRecord& r : audits_.records()) {
     blank.fields.push_back({"search_miss_" + r.tool, FieldCenter::node, 1, r.miss.data()});
     blank.fields.push_back(

@@ -71,6 +71,8 @@ class FrameOutput {
   VectorX plastic_strain_;
   VectorX added_mass_percent_;  ///< per element, written when mass scaling is on
   Eigen::Matrix<double, 6, Eigen::Dynamic> stress_mid_, stress_top_, stress_bottom_;
+  /// MPa, the back stresses of a law with kinematic hardening at the outer points (else unused).
+  Eigen::Matrix<double, 6, Eigen::Dynamic> back_stress_top_, back_stress_bottom_;
   std::vector<Matrix3X> tool_coordinates_;
   std::vector<Matrix3X> tool_displacement_;
   std::vector<double> row_;

@@ -25,6 +25,7 @@ SolutionState make_initial_state(const Model& model) {
   }
   s.shell = make_shell_state(element_count(model.blank.part), model.initial.integration_points,
                              model.initial.thickness);
+  size_shell_state_for_material(s.shell, model.blank.part.material);
   initialize_directors(model.blank.part, model.blank.mesh.nodes, s.shell);
   s.tools.resize(model.tools.size());
   s.contacts.resize(model.contacts.size());

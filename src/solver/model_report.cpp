@@ -3,10 +3,12 @@
 #include <fmt/core.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 
 #include "core/log.hpp"
+#include "material/anisotropy_fit.hpp"
 #include "model/constraint_assembly.hpp"
 #include "model/external_loads.hpp"
 
@@ -47,20 +49,67 @@ void print_analysis(const CaseConfig& config) {
   log_info("Analysis    explicit dynamic (central differences){}\n", springback);
 }
 
-void print_material(const CaseConfig& config, const UnitSystem& units) {
+// Barlat's criteria: the coefficients in use (fitted or given) and what they give in uniaxial
+// tension every 15 deg and in equibiaxial tension, so a user sees the fit before a run.
+void print_criterion(const Material& material) {
+  const auto* law = std::get_if<GeneralPlasticity>(&material);
+  if (!law) {
+    return;
+  }
+  if (const auto* y = std::get_if<Yld2000Criterion>(&law->criterion)) {
+    log_info(
+        "Yld2000-2d  a = {}, alpha1..8 = {:.6g}, {:.6g}, {:.6g}, {:.6g}, {:.6g}, {:.6g}, {:.6g}, "
+        "{:.6g}\n",
+        y->a, y->alpha[0], y->alpha[1], y->alpha[2], y->alpha[3], y->alpha[4], y->alpha[5],
+        y->alpha[6], y->alpha[7]);
+  } else if (const auto* b = std::get_if<Yld89Criterion>(&law->criterion)) {
+    log_info("Yld89       M = {}, a = {:.6g}, c = {:.6g}, h = {:.6g}, p = {:.6g}\n", b->M, b->a,
+             b->c, b->h, b->p);
+  }
+  std::string sigma, r;
+  const double pi = std::acos(-1.0);
+  for (int deg = 0; deg <= 90; deg += 15) {
+    sigma += fmt::format(" {:.4f}", uniaxial_yield_ratio(law->criterion, deg * pi / 180.0));
+    r += fmt::format(" {:.4f}", lankford_coefficient(law->criterion, deg * pi / 180.0));
+  }
+  log_info(
+      "Directions  0, 15, .., 90 deg: sigma/sigma0{}; r{}; equibiaxial sigma_b/sigma0 {:.4f}, "
+      "r_b {:.4f}\n",
+      sigma, r, equibiaxial_yield_ratio(law->criterion), equibiaxial_r_value(law->criterion));
+  for (int i = 0; i < law->kinematic.count; ++i) {
+    log_info("Back stress {}: C = {} MPa, gamma = {} (saturates at C/gamma = {:.6g} MPa)\n", i + 1,
+             law->kinematic.terms[i].C, law->kinematic.terms[i].gamma,
+             law->kinematic.terms[i].gamma > 0.0
+                 ? law->kinematic.terms[i].C / law->kinematic.terms[i].gamma
+                 : std::numeric_limits<double>::infinity());
+  }
+}
+
+void print_material(const CaseConfig& config, const Material& material, const UnitSystem& units) {
   const MaterialConfig& m = config.blank_material();
   using Type = MaterialConfig::Type;
   using Law = HardeningConfig::Law;
   std::string law = "elastic";
+  const auto& d = config.blank.rolling_direction;
+  const std::string axes =
+      fmt::format("rolling direction ({:.3g}, {:.3g}, {:.3g})", d[0], d[1], d[2]);
   if (m.type == Type::hill48) {
-    const auto& d = config.blank.rolling_direction;
-    law = fmt::format("Hill48 (r0 {}, r45 {}, r90 {}; rolling direction ({:.3g}, {:.3g}, {:.3g}))",
-                      m.r0, m.r45, m.r90, d[0], d[1], d[2]);
+    law = fmt::format("Hill48 (r0 {}, r45 {}, r90 {}; {})", m.r0, m.r45, m.r90, axes);
   } else if (m.type == Type::von_mises) {
     law = "von Mises";
+  } else if (m.type == Type::yld2000) {
+    law = fmt::format("Yld2000-2d ({}; {})", m.alpha.empty() ? "fitted to the data" : "alpha given",
+                      axes);
+  } else if (m.type == Type::yld89) {
+    law = fmt::format("Yld89 (r0 {}, r45 {}, r90 {}; {})", m.r0, m.r45, m.r90, axes);
+  }
+  if (!m.kinematic.C.empty()) {
+    law += fmt::format(", {} Armstrong-Frederick back stress{}", m.kinematic.C.size(),
+                       m.kinematic.C.size() > 1 ? "es" : "");
   }
   if (m.type != Type::elastic) {
-    static constexpr const char* names[] = {"Swift", "linear", "Voce", "Ludwik", "tabulated"};
+    static constexpr const char* names[] = {"Swift",     "linear",         "Voce",      "Ludwik",
+                                            "tabulated", "Hockett-Sherby", "Swift-Voce"};
     law += fmt::format(", {} hardening", names[static_cast<int>(m.hardening.law)]);
     if (m.hardening.law == Law::tabulated) {
       law += fmt::format(" ({})", m.hardening.table_file.string());
@@ -68,6 +117,7 @@ void print_material(const CaseConfig& config, const UnitSystem& units) {
   }
   log_info("Material    '{}': E = {} {}, nu = {}, density {} {}, {}\n", m.name, m.young,
            units.stress, m.poisson, m.density, units.density(), law);
+  print_criterion(material);
 }
 
 void print_mass(const Model& model, const UnitSystem& units) {
@@ -340,7 +390,7 @@ void print_model(const CaseConfig& config, const Model& model) {
            element_count(blank.part), config.blank.thickness, units.length, config.blank.material);
   log_info("Elements    {}\n", describe_shell_formulation(blank.part, is_static(config)));
   print_mesh_parameters(config);
-  print_material(config, units);
+  print_material(config, blank.part.material, units);
   if (!is_static(config)) {
     print_mass(model, units);
   }

@@ -72,7 +72,8 @@ void gather_state_to_root(SolutionState& s) {
   ShellState& shell = s.shell;
   for (std::vector<double>* field :
        {&shell.sxx, &shell.syy, &shell.sxy, &shell.eps_p, &shell.flow_stress, &shell.flow_stress_at,
-        &shell.sxz, &shell.syz, &shell.thickness, &shell.hourglass, &shell.director}) {
+        &shell.sxz, &shell.syz, &shell.thickness, &shell.hourglass, &shell.director,
+        &shell.back_stress}) {
     gather_element_field(domain, *field, shell.n_elements);
   }
   gather_element_field(domain, s.scaling.element_dt, shell.n_elements);

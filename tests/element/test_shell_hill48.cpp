@@ -1,17 +1,21 @@
 // Hill48 in the shell element: material axes from the rolling direction (compute_material_angles),
 // uniaxial tension at 0, 45 and 90 deg to the rolling direction through the element (r-values and
-// flow stress against Hill's closed forms), and Hill48 with r = 1 against von Mises.
+// flow stress against Hill's closed forms), Hill48 with r = 1 against von Mises, and the same
+// tension test for Yld2000-2d through the general return (issue 19), quad and triangle.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 #include <random>
 #include <string>
+#include <type_traits>
+#include <variant>
 
 #include "core/errors.hpp"
 #include "element/shell_geometry.hpp"
 #include "element/shell_material_axes.hpp"
 #include "element/shell_test_support.hpp"
+#include "material/anisotropy_fit.hpp"
 
 namespace sf {
 namespace {
@@ -100,6 +104,7 @@ TEST(ShellMaterialAxes, RollingDirectionNormalToAnElementIsAnErrorNamingIt) {
 // Hill48 steel (r-values of the NUMISHEET'93 steel, REFERENCES.md grade C) with Voce hardening.
 const VoceHardening kVoce{180.0, 250.0, 12.5};
 const Hill48PlaneStress kHill{kE, kNu, 1.79, 1.51, 2.27, kVoce};
+const Hill48Criterion kHillCriterion{hill48_coefficients(1.79, 1.51, 2.27)};
 
 struct TensionResult {
   double r_last;         // width / thickness plastic strain increment ratio, last step
@@ -119,8 +124,9 @@ struct TensionResult {
 // the global lateral stresses syy, sxy vanish (to 1e-11 of sxx): free lateral contraction.
 // With `triangle`, the element is the C0 triangle on nodes 0, 1, 2 of the square (its e1 is also
 // side x21), node 3 unused.
-TensionResult run_tension(const Hill48PlaneStress& material, double alpha, double beta, int steps,
-                          bool triangle = false) {
+// `criterion` is the material's yield criterion (for the loading stress's factor k(alpha)).
+TensionResult run_tension(const Material& material, const YieldCriterion& criterion, double alpha,
+                          double beta, int steps, bool triangle = false) {
   const double a = 10.0;
   const double dt = 1e-6;
   const double d = 200.0;  // 1/s: strain 2e-4 per step
@@ -134,6 +140,7 @@ TensionResult run_tension(const Hill48PlaneStress& material, double alpha, doubl
   const Vec3 rd(std::cos(alpha), -std::sin(alpha), 0.0);
   part.material_angle = compute_material_angles(x0, part.quads, part.triangles, rd);
   ShellState st = make_shell_state(1, 5, 1.0);
+  size_shell_state_for_material(st, part.material);
   Matrix3X x = x0;
   const Vec2 t(std::cos(beta), std::sin(beta));
   const Vec2 n(-t(1), t(0));
@@ -167,11 +174,19 @@ TensionResult run_tension(const Hill48PlaneStress& material, double alpha, doubl
 
   TensionResult out{0, 0, 0, 0, part.material_angle[0]};
   Vec2 u(-0.5 * d, 0.0);
-  const Hill48Coefficients k = hill48_coefficients(material.r0, material.r45, material.r90);
   const double ca = std::cos(alpha), sa = std::sin(alpha);
-  const double k_alpha =
-      std::sqrt(k.G * std::pow(ca, 4) + k.F * std::pow(sa, 4) +
-                k.H * std::pow(ca * ca - sa * sa, 2) + 2 * k.N * ca * ca * sa * sa);
+  // sigma_eq of the unit uniaxial stress at alpha (Hill48: sqrt(G c^4 + F s^4 + H (c^2 - s^2)^2
+  // + 2 N c^2 s^2)).
+  const double k_alpha = equivalent_stress_value(criterion, Vec3(ca * ca, sa * sa, ca * sa));
+  const Hardening hardening = std::visit(
+      [](const auto& law) -> Hardening {
+        if constexpr (std::is_same_v<std::decay_t<decltype(law)>, ElasticPlaneStress>) {
+          return LinearHardening{};
+        } else {
+          return law.hardening;
+        }
+      },
+      material);
   for (int step = 0; step < steps; ++step) {
     Trial tr = trial(u);
     for (int it = 0; it < 30; ++it) {
@@ -201,7 +216,7 @@ TensionResult run_tension(const Hill48PlaneStress& material, double alpha, doubl
     const bool plastic = tr.st.eps_p[2] > st.eps_p[2];
     if (plastic) {
       out.r_last = d_ep(1) / d_ezz_p;
-      const double sy = flow_stress(material.hardening, tr.st.eps_p[2]);
+      const double sy = flow_stress(hardening, tr.st.eps_p[2]);
       out.max_curve_err = std::max(out.max_curve_err, std::abs(tr.s_global(0) * k_alpha - sy) / sy);
     }
     out.max_lateral = std::max(
@@ -228,7 +243,7 @@ TEST(ShellHill48, UniaxialTensionThroughTheElementGivesTheLankfordCoefficients) 
   for (int i = 0; i < 3; ++i) {
     const double alpha = 45.0 * i * kDeg;
     SCOPED_TRACE("alpha = " + std::to_string(45 * i) + " deg");
-    const TensionResult r = run_tension(kHill, alpha, beta, 150);
+    const TensionResult r = run_tension(kHill, kHillCriterion, alpha, beta, 150);
     EXPECT_NEAR(wrap(r.angle - (-alpha - beta)), 0.0, 1e-14);
     EXPECT_NEAR(r.r_last, r_expected[i], 1e-9 * r_expected[i]);
     EXPECT_LT(r.max_curve_err, 1e-9);
@@ -251,7 +266,7 @@ TEST(ShellHill48, UniaxialTensionThroughTheTriangleGivesTheLankfordCoefficients)
   for (int i = 0; i < 3; ++i) {
     const double alpha = 45.0 * i * kDeg;
     SCOPED_TRACE("alpha = " + std::to_string(45 * i) + " deg");
-    const TensionResult r = run_tension(kHill, alpha, beta, 150, true);
+    const TensionResult r = run_tension(kHill, kHillCriterion, alpha, beta, 150, true);
     EXPECT_NEAR(wrap(r.angle - (-alpha - beta)), 0.0, 1e-14);
     EXPECT_NEAR(r.r_last, r_expected[i], 1e-9 * r_expected[i]);
     EXPECT_LT(r.max_curve_err, 1e-9);
@@ -261,6 +276,44 @@ TEST(ShellHill48, UniaxialTensionThroughTheTriangleGivesTheLankfordCoefficients)
         "triangle, alpha %2d deg: r = %.12f (exact %.2f, rel. err %.1e), flow-stress err "
         "%.1e\n",
         45 * i, r.r_last, r_expected[i], std::abs(r.r_last / r_expected[i] - 1.0), r.max_curve_err);
+  }
+}
+
+// Yld2000-2d fitted to Barlat et al. (2003) Table 2's AA2090-T3 data (docs/references.md), with
+// the same Voce hardening, through the general return (material/general_plasticity.hpp).
+GeneralPlasticity aa2090() {
+  GeneralPlasticity law;
+  law.E = kE;
+  law.nu = kNu;
+  law.criterion = fit_yld2000({1.000, 0.811, 0.910, 1.035, 0.21, 1.58, 0.69, 0.67}, 8.0, "test");
+  law.hardening = kVoce;
+  return law;
+}
+
+TEST(ShellYld2000, UniaxialTensionThroughTheQuadAndTheTriangleGivesTheFittedRValues) {
+  // Exact answers: the r-values and flow-stress ratios Yld2000-2d was fitted to (the fit solves
+  // them to 1e-12), reached through the element at 0, 45, 90 deg to the rolling direction with
+  // the element's e1 at 30 deg to the load. Tolerances as for Hill48 above (1e-9): the general
+  // return converges to 1e-10 of sigma_y, and its flow direction is the normal at the end stress.
+  const GeneralPlasticity law = aa2090();
+  const double beta = 30 * kDeg;
+  const double r_expected[3] = {0.21, 1.58, 0.69};
+  for (const bool triangle : {false, true}) {
+    for (int i = 0; i < 3; ++i) {
+      const double alpha = 45.0 * i * kDeg;
+      SCOPED_TRACE(std::string(triangle ? "triangle" : "quad") +
+                   ", alpha = " + std::to_string(45 * i) + " deg");
+      const TensionResult r = run_tension(law, law.criterion, alpha, beta, 150, triangle);
+      EXPECT_NEAR(r.r_last, r_expected[i], 1e-9 * r_expected[i]);
+      EXPECT_LT(r.max_curve_err, 1e-9);
+      EXPECT_GT(r.eps_p, 0.02);
+      EXPECT_LT(r.max_lateral, 1e-9);
+      std::printf(
+          "Yld2000-2d %s, alpha %2d deg: r = %.12f (exact %.2f, rel. err %.1e), "
+          "flow-stress err %.1e\n",
+          triangle ? "triangle" : "quad", 45 * i, r.r_last, r_expected[i],
+          std::abs(r.r_last / r_expected[i] - 1.0), r.max_curve_err);
+    }
   }
 }
 

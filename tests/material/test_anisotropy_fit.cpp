@@ -54,9 +54,10 @@ TEST(AnisotropyFit, Yld2000FitReproducesItsDataAndThePublishedCoefficients) {
   EXPECT_NEAR(lankford_coefficient(c, deg(90)), kAA2090.r90, 1e-10);
   EXPECT_NEAR(equibiaxial_r_value(c), kAA2090.r_b, 1e-10);
   // The paper's coefficients came from the same eight equations with its unrounded data: the
-  // rounding of the data to 2-3 digits moves them in the third decimal at most.
+  // rounding of the data to 2-3 digits moves them in the third decimal at most (alpha1: 0.4850
+  // against 0.4865, the others within 5e-4).
   for (int i = 0; i < 8; ++i) {
-    EXPECT_NEAR(fit.alpha[i], kAA2090Table3.alpha[i], 2e-2) << "alpha" << i + 1;
+    EXPECT_NEAR(fit.alpha[i], kAA2090Table3.alpha[i], 2e-3) << "alpha" << i + 1;
   }
   EXPECT_NO_THROW(check_yield_criterion(c, "materials.aa2090"));
 }

@@ -11,6 +11,7 @@
 #include "core/errors.hpp"
 #include "material/anisotropy_fit.hpp"
 #include "material/general_plasticity.hpp"
+#include "material/plane_stress.hpp"
 
 namespace sf {
 namespace {

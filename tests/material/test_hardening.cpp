@@ -1,5 +1,6 @@
-// Voce, Ludwik and tabulated hardening, the hardening-table reader, and J2 with a tabulated Swift
-// curve and with Ludwik from the virgin state.
+// Voce, Ludwik, Hockett-Sherby, Swift-Voce and tabulated hardening, the hardening-table reader,
+// and J2 with a tabulated Swift curve, with Ludwik from the virgin state and with the combined
+// laws.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -73,6 +74,84 @@ TEST(Hardening, LudwikAgainstClosedForm) {
         LudwikHardening{200.0, 500.0, 0.0}, LudwikHardening{200.0, 500.0, 1.5}}) {
     EXPECT_NE(input_error([&] { check_hardening(Hardening{bad}, "m"); }).find("Ludwik hardening"),
               std::string::npos);
+  }
+}
+
+TEST(Hardening, HockettSherbyAgainstClosedForm) {
+  // sigma_y = sigma_s - (sigma_s - sigma_i) exp(-N e^p) (Hockett & Sherby 1975), slope
+  // (sigma_s - sigma_i) N p e^(p-1) exp(-N e^p); 1e-13 against the formulas, the slope also
+  // against a central difference (1e-7). p = 1 is Voce's law
+  // with sigma0 = sigma_i, Q = sigma_s - sigma_i, b = N, to round-off.
+  const HockettSherbyHardening h{420.0, 150.0, 6.0, 0.7};
+  const VoceHardening voce{150.0, 270.0, 6.0};
+  const HockettSherbyHardening h1{420.0, 150.0, 6.0, 1.0};
+  for (const double e : {1e-6, 1e-4, 0.01, 0.1, 0.5}) {
+    const double x = std::exp(-6.0 * std::pow(e, 0.7));
+    EXPECT_NEAR(h.flow_stress(e) / (420.0 - 270.0 * x), 1.0, 1e-13);
+    EXPECT_NEAR(h.slope(e) / (270.0 * 6.0 * 0.7 * std::pow(e, -0.3) * x), 1.0, 1e-13);
+    // h = 1e-5 e: truncation (p-1)(p-2)/6 (h/e)^2 ~ 1e-11, cancellation ~ 1e-8 at e = 1e-6.
+    const double step = 1e-5 * e;
+    const double fd = (h.flow_stress(e + step) - h.flow_stress(e - step)) / (2 * step);
+    EXPECT_NEAR(h.slope(e) / fd, 1.0, 1e-7);
+    EXPECT_NEAR(h1.flow_stress(e) / voce.flow_stress(e), 1.0, 1e-14);
+    EXPECT_NEAR(h1.slope(e) / voce.slope(e), 1.0, 1e-13);
+  }
+  EXPECT_EQ(h.flow_stress(0.0), 150.0);
+  EXPECT_EQ(h.slope(0.0), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(h1.slope(0.0), 270.0 * 6.0);
+  EXPECT_NO_THROW(check_hardening(Hardening{h}, "m"));
+  for (const HockettSherbyHardening& bad : {HockettSherbyHardening{100.0, 150.0, 6.0, 1.0},
+                                            HockettSherbyHardening{420.0, 0.0, 6.0, 1.0},
+                                            HockettSherbyHardening{420.0, 150.0, 0.0, 1.0},
+                                            HockettSherbyHardening{420.0, 150.0, 6.0, 1.5}}) {
+    EXPECT_NE(
+        input_error([&] { check_hardening(Hardening{bad}, "m"); }).find("Hockett-Sherby hardening"),
+        std::string::npos);
+  }
+}
+
+TEST(Hardening, SwiftVoceIsTheWeightedSum) {
+  // w Swift + (1 - w) Voce, exactly; w = 1 is Swift, w = 0 Voce.
+  const SwiftHardening swift{576.79, 0.01658, 0.3593};
+  const VoceHardening voce{180.0, 250.0, 12.5};
+  for (const double w : {0.0, 0.3, 1.0}) {
+    const SwiftVoceHardening sv{w, swift, voce};
+    for (const double e : {0.0, 1e-4, 0.05, 0.4}) {
+      EXPECT_NEAR(sv.flow_stress(e), w * swift.flow_stress(e) + (1 - w) * voce.flow_stress(e),
+                  1e-12 * 600);
+      EXPECT_NEAR(sv.slope(e), w * swift.slope(e) + (1 - w) * voce.slope(e), 1e-12 * 1e4);
+    }
+  }
+  EXPECT_NO_THROW(check_hardening(Hardening{SwiftVoceHardening{0.3, swift, voce}}, "m"));
+  EXPECT_NE(input_error([&] {
+              check_hardening(Hardening{SwiftVoceHardening{1.2, swift, voce}}, "m");
+            }).find("Swift-Voce"),
+            std::string::npos);
+  EXPECT_NE(input_error([&] {
+              check_hardening(Hardening{SwiftVoceHardening{0.5, swift, VoceHardening{}}}, "m");
+            }).find("Voce hardening"),
+            std::string::npos);
+}
+
+TEST(Hardening, J2WithHockettSherbyAndSwiftVoceStaysOnTheCurve) {
+  // The closed-form J2 return with the two laws (instantiated for them): after every plastic
+  // step of a mixed strain path the von Mises stress equals the flow stress to 1e-9.
+  for (const Hardening& law :
+       {Hardening{HockettSherbyHardening{420.0, 150.0, 6.0, 0.7}},
+        Hardening{SwiftVoceHardening{0.4, SwiftHardening{576.79, 0.01658, 0.3593},
+                                     VoceHardening{180.0, 250.0, 12.5}}}}) {
+    const J2PlaneStress j2{210000.0, 0.3, law};
+    PlaneStressState state;
+    for (int i = 0; i < 100; ++i) {
+      const PlaneStressUpdate u = j2.update(state, Vec3(2e-4, -1e-4, 2e-5));
+      const Vec3& s = u.stress;
+      const double mises = std::sqrt(s(0) * s(0) - s(0) * s(1) + s(1) * s(1) + 3.0 * s(2) * s(2));
+      if (u.eps_p > state.eps_p) {
+        EXPECT_NEAR(mises / flow_stress(law, u.eps_p), 1.0, 1e-9) << "step " << i;
+      }
+      state = {u.stress, u.eps_p};
+    }
+    EXPECT_GT(state.eps_p, 0.01);
   }
 }
 

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "core/errors.hpp"
+#include "material/plane_stress.hpp"
 #include "material/yield_criterion.hpp"
 
 namespace sf {

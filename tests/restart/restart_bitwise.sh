@@ -3,7 +3,7 @@
 # item 1): every results.h5 dataset and every summary.json number (scripts/compare_results.py).
 # The square cup (steel, 1.875 mm quads, 0.5 mm stroke): force-controlled holder, friction, the
 # cached search, and mass scaling; stopped at the first cycle, at a frame's cycle, twice in a row,
-# restarted on 2 threads, by a real SIGTERM at an arbitrary moment; a SIGUSR1 checkpoint that the
+# restarted on 2 threads, by a real SIGTERM at an arbitrary moment; Yld89 with back stresses; a SIGUSR1 checkpoint that the
 # run goes on from; the U-channel stopped during the forming and restarted, its implicit
 # springback after the restart; at 2 ranks stopped and restarted serially and at 3 ranks. Then
 # what a restart refuses (a changed case, another run's folder) and what it allows (a longer
@@ -51,6 +51,30 @@ run cup_frame 5 "$cup_case" "${cup[@]}" -o "$work/cup_frame" --stop-at-cycle "$f
 run cup_frame_end 0 "$cup_case" "${cup[@]}" -o "$work/cup_frame" \
   --restart "$work/cup_frame/checkpoint.h5"
 same cup_frame "$work/cup" "$work/cup_frame"
+
+# Yld89 with two Armstrong-Frederick back stresses (issue 19): the back stresses are part of the
+# checkpoint; stopped mid-run and restarted on 2 threads.
+cp -r "$src/cases/square_cup_steel" "$work/kin_case"; rm -rf "$work/kin_case/results"
+/usr/bin/python3 - "$work/kin_case/case.toml" <<'PY'
+import sys
+s = open(sys.argv[1]).read()
+s = s.replace('type = "hill48"', 'type = "yld89"\nexponent = 6.0', 1)
+s = s.replace("[materials.mild_steel.hardening]",
+              "[materials.mild_steel.kinematic]\nC = [20000, 1500]\ngamma = [200, 10]\n\n"
+              "[materials.mild_steel.hardening]")
+open(sys.argv[1], "w").write(s)
+PY
+run kin 0 "$work/kin_case/case.toml" "${cup[@]}" -o "$work/kin"
+run kin_stop 5 "$work/kin_case/case.toml" "${cup[@]}" -o "$work/kin_stop" --stop-at-cycle 450
+run kin_end 0 "$work/kin_case/case.toml" "${cup_physics[@]}" -q -o "$work/kin_stop" \
+  --restart "$work/kin_stop/checkpoint.h5" --threads 2
+same kin "$work/kin" "$work/kin_stop"
+/usr/bin/python3 - "$work/kin/results.h5" <<'PY' || fail "Yld89 with back stresses: no back stress in the results"
+import h5py, sys
+f = h5py.File(sys.argv[1])
+last = sorted(f["parts/blank/frames"].keys())[-1]
+assert abs(f["parts/blank/frames"][last]["back_stress_top"][()]).max() > 0.0
+PY
 
 # in_time_loop FOLDER: waits until the run writing FOLDER has written its second frame (it is in
 # its time loop, not meshing), up to 60 s.
