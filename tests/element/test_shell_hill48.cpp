@@ -15,6 +15,7 @@
 #include "element/shell_geometry.hpp"
 #include "element/shell_material_axes.hpp"
 #include "element/shell_test_support.hpp"
+#include "material/aa2090_data.hpp"
 #include "material/anisotropy_fit.hpp"
 
 namespace sf {
@@ -285,7 +286,7 @@ GeneralPlasticity aa2090() {
   GeneralPlasticity law;
   law.E = kE;
   law.nu = kNu;
-  law.criterion = fit_yld2000({1.000, 0.811, 0.910, 1.035, 0.21, 1.58, 0.69, 0.67}, 8.0, "test");
+  law.criterion = fit_yld2000(test::kAA2090, 8.0, "test");
   law.hardening = kVoce;
   return law;
 }

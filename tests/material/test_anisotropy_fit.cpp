@@ -12,21 +12,15 @@
 #include <cmath>
 
 #include "core/errors.hpp"
+#include "material/aa2090_data.hpp"
 #include "material/anisotropy_fit.hpp"
 
 namespace sf {
 namespace {
 
-const double kPi = std::acos(-1.0);
-double deg(double d) {
-  return d * kPi / 180.0;
-}
-
-// Barlat et al. (2003) Table 2, AA2090-T3 (stresses normalised by sigma0, experimental r_b).
-const Yld2000Data kAA2090{1.000, 0.811, 0.910, 1.035, 0.21, 1.58, 0.69, 0.67};
-// Barlat et al. (2003) Table 3, AA2090-T3, "Exp. r_b", a = 8.
-const Yld2000Criterion kAA2090Table3{
-    {0.4865, 1.3783, 0.7536, 1.0246, 1.0363, 0.9036, 1.2321, 1.4858}, 8.0};
+using test::deg;
+using test::kAA2090;
+using test::kAA2090Table3;
 
 TEST(AnisotropyFit, PublishedAA2090CoefficientsGiveThePublishedData) {
   // The paper prints the data to 3 decimals (stresses) and 2 (r-values) and the coefficients to

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "core/errors.hpp"
+#include "material/aa2090_data.hpp"
 #include "material/anisotropy_fit.hpp"
 #include "material/general_plasticity.hpp"
 #include "material/plane_stress.hpp"
@@ -16,13 +17,9 @@
 namespace sf {
 namespace {
 
-const double kPi = std::acos(-1.0);
-double deg(double d) {
-  return d * kPi / 180.0;
-}
+using test::deg;
+using test::kAA2090;
 
-// Barlat et al. (2003) Table 2, AA2090-T3 (docs/references.md).
-const Yld2000Data kAA2090{1.000, 0.811, 0.910, 1.035, 0.21, 1.58, 0.69, 0.67};
 const SwiftHardening kSwift{646.0, 0.025, 0.227};  // an AA2090-T3-like curve, MPa
 
 GeneralPlasticity aa2090_law() {
@@ -31,6 +28,15 @@ GeneralPlasticity aa2090_law() {
   law.nu = 0.33;
   law.criterion = fit_yld2000(kAA2090, 8.0, "test");
   law.hardening = kSwift;
+  return law;
+}
+
+// The same with two back stresses (a fast and a slow one).
+GeneralPlasticity aa2090_kinematic_law() {
+  GeneralPlasticity law = aa2090_law();
+  law.kinematic.count = 2;
+  law.kinematic.terms[0] = {15000.0, 150.0};
+  law.kinematic.terms[1] = {2000.0, 5.0};
   return law;
 }
 
@@ -202,10 +208,7 @@ TEST(GeneralPlasticity, ArmstrongFrederickCycleConvergesToTheClosedForm) {
 }
 
 TEST(GeneralPlasticity, ConsistentTangentMatchesFiniteDifferences) {
-  GeneralPlasticity law = aa2090_law();
-  law.kinematic.count = 2;
-  law.kinematic.terms[0] = {15000.0, 150.0};
-  law.kinematic.terms[1] = {2000.0, 5.0};
+  const GeneralPlasticity law = aa2090_kinematic_law();
   std::mt19937 gen(11);
   std::uniform_real_distribution<double> u(-0.004, 0.004);
   GeneralPlasticityState s;
@@ -233,10 +236,7 @@ TEST(GeneralPlasticity, ConsistentTangentMatchesFiniteDifferences) {
 TEST(GeneralPlasticity, LargeStepsConvergeOntoTheYieldSurface) {
   // Strain increments of up to 10 % (about 30 times the yield strain) in random directions,
   // with a = 8 and two back stresses: the return converges and the end state yields exactly.
-  GeneralPlasticity law = aa2090_law();
-  law.kinematic.count = 2;
-  law.kinematic.terms[0] = {15000.0, 150.0};
-  law.kinematic.terms[1] = {2000.0, 5.0};
+  const GeneralPlasticity law = aa2090_kinematic_law();
   std::mt19937 gen(5);
   std::uniform_real_distribution<double> u(-0.1, 0.1);
   GeneralPlasticityState s;
