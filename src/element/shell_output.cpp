@@ -43,36 +43,25 @@ void compute_element_stress_output(const ShellPart& part, const Matrix3X& x,
 void compute_element_stress_output(const ShellPart& part, const Matrix3X& x,
                                    const ShellState& state, StressColumns& mid, StressColumns& top,
                                    StressColumns& bottom, VectorX& eps_p) {
-  const int n_quads = static_cast<int>(part.quads.cols());
   const int n_el = element_count(part);
   const int np = state.n_points;
   mid.resize(6, n_el);
   top.resize(6, n_el);
   bottom.resize(6, n_el);
   eps_p.resize(n_el);
-  ShellGeometry g;
-  TriangleGeometry tg;
   for (int e = 0; e < n_el; ++e) {
-    const Mat3* frame = nullptr;
-    if (e < n_quads) {
-      compute_shell_geometry_or_throw(gather_quad(x, part.quads, e), e, "output", g);
-      frame = &g.frame;
-    } else {
-      const int k = e - n_quads;
-      compute_triangle_geometry_or_throw(gather_triangle(x, part.triangles, k), e, k, "output", tg);
-      frame = &tg.frame;
-    }
+    const Mat3 frame = element_frame(part, x, e);
     const std::size_t base = static_cast<std::size_t>(e) * np;
     const std::size_t lo = base + (np - 1) / 2;  // central point(s)
     const std::size_t hi = base + np / 2;
     mid.col(e) = rotate_to_global(
-        *frame, 0.5 * (state.sxx[lo] + state.sxx[hi]), 0.5 * (state.syy[lo] + state.syy[hi]),
+        frame, 0.5 * (state.sxx[lo] + state.sxx[hi]), 0.5 * (state.syy[lo] + state.syy[hi]),
         0.5 * (state.sxy[lo] + state.sxy[hi]), state.syz[e], state.sxz[e]);
     const std::size_t k_top = base + np - 1;
     top.col(e) =
-        rotate_to_global(*frame, state.sxx[k_top], state.syy[k_top], state.sxy[k_top], 0.0, 0.0);
+        rotate_to_global(frame, state.sxx[k_top], state.syy[k_top], state.sxy[k_top], 0.0, 0.0);
     bottom.col(e) =
-        rotate_to_global(*frame, state.sxx[base], state.syy[base], state.sxy[base], 0.0, 0.0);
+        rotate_to_global(frame, state.sxx[base], state.syy[base], state.sxy[base], 0.0, 0.0);
     double ep = 0.0;
     for (int k = 0; k < np; ++k) {
       ep += 0.5 * part.section.weight[k] * state.eps_p[base + k];

@@ -135,10 +135,6 @@ ShellState make_shell_state(int n_elements, int n_points, double thickness) {
   return st;
 }
 
-}  // namespace sf
-
-namespace sf {
-
 void size_shell_state_for_material(ShellState& state, const Material& material) {
   const auto* law = std::get_if<GeneralPlasticity>(&material);
   const int n_back = law ? law->kinematic.count : 0;

@@ -21,12 +21,17 @@ Vec3 uniaxial_direction(double angle) {
   return {c * c, s * s, c * s};
 }
 
-// The Lankford equation d_eps_width - r d_eps_thickness = 0 for the plastic strain direction g
-// (engineering shear), d_eps_thickness = -(g0 + g1): s^2 g0 + c^2 g1 - c s g2 + r (g0 + g1).
-double lankford_residual(const Vec3& g, double angle, double r) {
+// The width strain rate of uniaxial tension at `angle` for the plastic strain direction g
+// (engineering shear): s^2 g0 + c^2 g1 - c s g2; the thickness rate is -(g0 + g1).
+double width_rate(const Vec3& g, double angle) {
   const double c = std::cos(angle);
   const double s = std::sin(angle);
-  return s * s * g(0) + c * c * g(1) - c * s * g(2) + r * (g(0) + g(1));
+  return s * s * g(0) + c * c * g(1) - c * s * g(2);
+}
+
+// The Lankford equation d_eps_width - r d_eps_thickness = 0.
+double lankford_residual(const Vec3& g, double angle, double r) {
+  return width_rate(g, angle) + r * (g(0) + g(1));
 }
 
 // The eight equations of the Yld2000-2d fit (Barlat et al. 2003, sect. 4), each O(1).
@@ -62,9 +67,7 @@ double uniaxial_yield_ratio(const YieldCriterion& criterion, double angle) {
 
 double lankford_coefficient(const YieldCriterion& criterion, double angle) {
   const Vec3 g = equivalent_stress(criterion, uniaxial_direction(angle)).gradient;
-  const double c = std::cos(angle);
-  const double s = std::sin(angle);
-  return (s * s * g(0) + c * c * g(1) - c * s * g(2)) / -(g(0) + g(1));
+  return width_rate(g, angle) / -(g(0) + g(1));
 }
 
 double equibiaxial_yield_ratio(const YieldCriterion& criterion) {

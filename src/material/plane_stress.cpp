@@ -77,6 +77,10 @@ double poisson_ratio(const Material& material) {
 }
 
 void check_material(const Material& material, const char* what) {
+  if (const auto* g = std::get_if<GeneralPlasticity>(&material)) {
+    check_general_plasticity(*g, what);  // its elasticity too
+    return;
+  }
   const double E = young_modulus(material);
   const double nu = poisson_ratio(material);
   if (!(E > 0.0) || !std::isfinite(E) || !(nu > -1.0) || !(nu < 0.5)) {
@@ -96,9 +100,6 @@ void check_material(const Material& material, const char* what) {
       }
     }
     check_hardening(h->hardening, what);
-  }
-  if (const auto* g = std::get_if<GeneralPlasticity>(&material)) {
-    check_general_plasticity(*g, what);
   }
 }
 

@@ -33,6 +33,15 @@ inline double power_derivative(double u, double a, int k) {
   return (k % 2 == 1 && u < 0.0) ? -c * m : c * m;
 }
 
+/// The values alone of the two terms below (the yield checks need no derivatives).
+inline double symmetric_power_pair_value(double m, double s, double k, double a) {
+  const double R = std::sqrt(std::max(s, 0.0));
+  return std::pow(std::abs(k * m + R), a) + std::pow(std::abs(k * m - R), a);
+}
+inline double principal_difference_power_value(double s, double a) {
+  return s > 0.0 ? std::pow(2.0, a) * std::pow(s, 0.5 * a) : 0.0;
+}
+
 /// P(m, s) = |k m + R|^a + |k m - R|^a, R = sqrt(s) (Yld2000-2d's phi'' with k = 3 and Yld89's
 /// first two terms with k = 1). P is even in R, hence smooth in s. For R below 5e-3 |k m| the
 /// divided differences of the derivatives are replaced by their Taylor series in R (two terms:
@@ -43,7 +52,7 @@ inline InvariantTerm symmetric_power_pair(double m, double s, double k, double a
   const double up = c + R;
   const double um = c - R;
   InvariantTerm t;
-  t.value = std::pow(std::abs(up), a) + std::pow(std::abs(um), a);
+  t.value = symmetric_power_pair_value(m, s, k, a);
   const double h1p = power_derivative(up, a, 1);
   const double h1m = power_derivative(um, a, 1);
   const double h2p = power_derivative(up, a, 2);
@@ -69,8 +78,8 @@ inline InvariantTerm symmetric_power_pair(double m, double s, double k, double a
 inline InvariantTerm principal_difference_power(double s, double a) {
   InvariantTerm t;
   const double f = std::pow(2.0, a);
+  t.value = principal_difference_power_value(s, a);
   if (s > 0.0) {
-    t.value = f * std::pow(s, 0.5 * a);
     t.d_s = f * 0.5 * a * std::pow(s, 0.5 * a - 1.0);
     t.d_ss = f * 0.5 * a * (0.5 * a - 1.0) * std::pow(s, 0.5 * a - 2.0);
   } else {

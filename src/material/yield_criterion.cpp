@@ -114,20 +114,6 @@ EquivalentStress equivalent_stress(const YieldCriterion& criterion, const Vec3& 
   return std::visit(Visitor{stress}, criterion);
 }
 
-namespace {
-
-// |X1 - X2|^a and |k m + R|^a + |k m - R|^a of X, values only (the yield checks).
-double difference_power(const Vec3& X, double a) {
-  return std::pow(2.0 * std::sqrt(invariant_s(X)), a);
-}
-double pair_power(const Vec3& X, double k, double a) {
-  const double c = k * invariant_m(X);
-  const double R = std::sqrt(invariant_s(X));
-  return std::pow(std::abs(c + R), a) + std::pow(std::abs(c - R), a);
-}
-
-}  // namespace
-
 double equivalent_stress_value(const YieldCriterion& criterion, const Vec3& s) {
   struct Visitor {
     const Vec3& s;
@@ -138,13 +124,16 @@ double equivalent_stress_value(const YieldCriterion& criterion, const Vec3& s) {
       return std::sqrt(std::max(s.dot(hill_matrix(c.k) * s), 0.0));
     }
     double operator()(const Yld2000Criterion& c) const {
-      const double phi = difference_power(yld2000_l1(c.alpha) * s, c.a) +
-                         pair_power(yld2000_l2(c.alpha) * s, 3.0, c.a);
+      const Vec3 X1 = yld2000_l1(c.alpha) * s;
+      const Vec3 X2 = yld2000_l2(c.alpha) * s;
+      const double phi = principal_difference_power_value(invariant_s(X1), c.a) +
+                         symmetric_power_pair_value(invariant_m(X2), invariant_s(X2), 3.0, c.a);
       return std::pow(0.5 * phi, 1.0 / c.a);
     }
     double operator()(const Yld89Criterion& c) const {
       const Vec3 X(s(0), c.h * s(1), c.p * s(2));
-      const double f = c.a * pair_power(X, 1.0, c.M) + c.c * difference_power(X, c.M);
+      const double f = c.a * symmetric_power_pair_value(invariant_m(X), invariant_s(X), 1.0, c.M) +
+                       c.c * principal_difference_power_value(invariant_s(X), c.M);
       return std::pow(0.5 * f, 1.0 / c.M);
     }
   };

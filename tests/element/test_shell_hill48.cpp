@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <random>
 #include <string>
@@ -105,7 +106,13 @@ TEST(ShellMaterialAxes, RollingDirectionNormalToAnElementIsAnErrorNamingIt) {
 // Hill48 steel (r-values of the NUMISHEET'93 steel, REFERENCES.md grade C) with Voce hardening.
 const VoceHardening kVoce{180.0, 250.0, 12.5};
 const Hill48PlaneStress kHill{kE, kNu, 1.79, 1.51, 2.27, kVoce};
-const Hill48Criterion kHillCriterion{hill48_coefficients(1.79, 1.51, 2.27)};
+// Hill's closed form k(alpha) = sqrt(G c^4 + F s^4 + H (c^2 - s^2)^2 + 2 N c^2 s^2).
+double hill_k(double alpha) {
+  const Hill48Coefficients k = hill48_coefficients(kHill.r0, kHill.r45, kHill.r90);
+  const double ca = std::cos(alpha), sa = std::sin(alpha);
+  return std::sqrt(k.G * std::pow(ca, 4) + k.F * std::pow(sa, 4) +
+                   k.H * std::pow(ca * ca - sa * sa, 2) + 2 * k.N * ca * ca * sa * sa);
+}
 
 struct TensionResult {
   double r_last;         // width / thickness plastic strain increment ratio, last step
@@ -125,9 +132,10 @@ struct TensionResult {
 // the global lateral stresses syy, sxy vanish (to 1e-11 of sxx): free lateral contraction.
 // With `triangle`, the element is the C0 triangle on nodes 0, 1, 2 of the square (its e1 is also
 // side x21), node 3 unused.
-// `criterion` is the material's yield criterion (for the loading stress's factor k(alpha)).
-TensionResult run_tension(const Material& material, const YieldCriterion& criterion, double alpha,
-                          double beta, int steps, bool triangle = false) {
+// `k_of_alpha(alpha)` is the material's equivalent stress of the unit uniaxial stress at alpha to
+// the rolling direction (the loading stress's factor k(alpha)).
+TensionResult run_tension(const Material& material, const std::function<double(double)>& k_of_alpha,
+                          double alpha, double beta, int steps, bool triangle = false) {
   const double a = 10.0;
   const double dt = 1e-6;
   const double d = 200.0;  // 1/s: strain 2e-4 per step
@@ -175,10 +183,7 @@ TensionResult run_tension(const Material& material, const YieldCriterion& criter
 
   TensionResult out{0, 0, 0, 0, part.material_angle[0]};
   Vec2 u(-0.5 * d, 0.0);
-  const double ca = std::cos(alpha), sa = std::sin(alpha);
-  // sigma_eq of the unit uniaxial stress at alpha (Hill48: sqrt(G c^4 + F s^4 + H (c^2 - s^2)^2
-  // + 2 N c^2 s^2)).
-  const double k_alpha = equivalent_stress_value(criterion, Vec3(ca * ca, sa * sa, ca * sa));
+  const double k_alpha = k_of_alpha(alpha);
   const Hardening hardening = std::visit(
       [](const auto& law) -> Hardening {
         if constexpr (std::is_same_v<std::decay_t<decltype(law)>, ElasticPlaneStress>) {
@@ -244,7 +249,7 @@ TEST(ShellHill48, UniaxialTensionThroughTheElementGivesTheLankfordCoefficients) 
   for (int i = 0; i < 3; ++i) {
     const double alpha = 45.0 * i * kDeg;
     SCOPED_TRACE("alpha = " + std::to_string(45 * i) + " deg");
-    const TensionResult r = run_tension(kHill, kHillCriterion, alpha, beta, 150);
+    const TensionResult r = run_tension(kHill, hill_k, alpha, beta, 150);
     EXPECT_NEAR(wrap(r.angle - (-alpha - beta)), 0.0, 1e-14);
     EXPECT_NEAR(r.r_last, r_expected[i], 1e-9 * r_expected[i]);
     EXPECT_LT(r.max_curve_err, 1e-9);
@@ -267,7 +272,7 @@ TEST(ShellHill48, UniaxialTensionThroughTheTriangleGivesTheLankfordCoefficients)
   for (int i = 0; i < 3; ++i) {
     const double alpha = 45.0 * i * kDeg;
     SCOPED_TRACE("alpha = " + std::to_string(45 * i) + " deg");
-    const TensionResult r = run_tension(kHill, kHillCriterion, alpha, beta, 150, true);
+    const TensionResult r = run_tension(kHill, hill_k, alpha, beta, 150, true);
     EXPECT_NEAR(wrap(r.angle - (-alpha - beta)), 0.0, 1e-14);
     EXPECT_NEAR(r.r_last, r_expected[i], 1e-9 * r_expected[i]);
     EXPECT_LT(r.max_curve_err, 1e-9);
@@ -304,7 +309,11 @@ TEST(ShellYld2000, UniaxialTensionThroughTheQuadAndTheTriangleGivesTheFittedRVal
       const double alpha = 45.0 * i * kDeg;
       SCOPED_TRACE(std::string(triangle ? "triangle" : "quad") +
                    ", alpha = " + std::to_string(45 * i) + " deg");
-      const TensionResult r = run_tension(law, law.criterion, alpha, beta, 150, triangle);
+      const auto k_of_alpha = [&](double a) {
+        const double c = std::cos(a), s = std::sin(a);
+        return equivalent_stress_value(law.criterion, Vec3(c * c, s * s, c * s));
+      };
+      const TensionResult r = run_tension(law, k_of_alpha, alpha, beta, 150, triangle);
       EXPECT_NEAR(r.r_last, r_expected[i], 1e-9 * r_expected[i]);
       EXPECT_LT(r.max_curve_err, 1e-9);
       EXPECT_GT(r.eps_p, 0.02);
