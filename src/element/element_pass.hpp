@@ -16,7 +16,12 @@ struct ElementInputs {
   const Matrix3X& x;
   const Matrix3X& v;
   const Matrix3X& omega;
-  double dt = 0.0;
+  double dt = 0.0;  ///< s
+  /// true in the implicit static steps, whose dt is a pseudo-time: rate-dependent laws then take
+  /// their rate-free flow stress.
+  bool pseudo_time = false;
+
+  double rate_dt() const { return pseudo_time ? 0.0 : dt; }  ///< s, for rate-dependent laws
 };
 
 /// One share's outputs. Aligned apart so that threads do not share cache lines.

@@ -144,7 +144,7 @@ void compute_forces(const ShellPart& part, const Law& law, const ElementInputs& 
   const Constants c{law.E, law.nu, 5.0 / 6.0 * 0.5 * law.E / (1.0 + law.nu),
                     plane_stress_stiffness(law.E, law.nu)};
   const SectionConstants section = make_section_constants(part.section);
-  const auto kernel = point_kernel(law);  // the material update's constants
+  const auto kernel = point_kernel(law, in.rate_dt());  // the material update's constants
   const int* conn = part.quads.data();
   const double* material_angle = part.material_angle.empty() ? nullptr : part.material_angle.data();
 

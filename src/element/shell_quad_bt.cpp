@@ -36,7 +36,7 @@ void compute_forces(const ShellPart& part, const Law& law, const ElementInputs& 
   const double kappa = part.hourglass_coefficient;
   const bool stiffness_form = part.hourglass_form == HourglassForm::stiffness;
   const SectionConstants section = make_section_constants(part.section);
-  const auto kernel = point_kernel(law);  // the material update's constants
+  const auto kernel = point_kernel(law, in.rate_dt());  // the material update's constants
   const int* conn = part.quads.data();
   const double* xd = x.data();
   const double* vd = in.v.data();

@@ -97,7 +97,7 @@ inline SectionResult update_section(const GeneralKernel& kernel, const SectionCo
     const bool stored = cache.stress && cache.at[k] == old.eps_p;
     const GeneralPlasticityUpdate up =
         law.update(old, axes.d_m - z * axes.d_k, nullptr,
-                   stored ? cache.stress[k] : std::numeric_limits<double>::quiet_NaN());
+                   stored ? cache.stress[k] : std::numeric_limits<double>::quiet_NaN(), kernel.dt);
     if (cache.stress) {
       cache.stress[k] = up.flow_stress;
       cache.at[k] = up.state.eps_p;

@@ -26,7 +26,7 @@ void compute_forces(const ShellPart& part, const Law& law, const ElementInputs& 
   const double* material_angle = part.material_angle.empty() ? nullptr : part.material_angle.data();
   const double ks_g = 5.0 / 6.0 * 0.5 * law.E / (1.0 + law.nu);  // shear correction factor 5/6
   const SectionConstants section = make_section_constants(part.section);
-  const auto kernel = point_kernel(law);  // the material update's constants
+  const auto kernel = point_kernel(law, in.rate_dt());  // the material update's constants
   const int* conn = part.triangles.data();
   const double* xd = x.data();
   const double* vd = in.v.data();

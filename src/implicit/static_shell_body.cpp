@@ -90,7 +90,7 @@ ShellForceResult StaticShellBody::compute_forces(const Matrix3X& du, const Matri
   // One step of unit length: "velocities" du, dtheta over dt = 1; every node's corners summed
   // into f, m (the scratch and the lists are the body's: a Newton iteration allocates nothing).
   ShellForceResult r =
-      run_element_pass(part_, ElementInputs{x_trial_, du, dtheta, 1.0}, trial, pass_);
+      run_element_pass(part_, ElementInputs{x_trial_, du, dtheta, 1.0, true}, trial, pass_);
   gather_corner_forces(node_corners_, pass_.corners, f, m);
   // Drilling springs about the committed normals, anchored at the increment's start: their work
   // over it, 1/2 k (n . dtheta)^2 per node, is part of the body's internal work (without it a

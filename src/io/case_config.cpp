@@ -221,6 +221,12 @@ void read_kinematic(const TomlSection& s, KinematicConfig& kinematic) {
   }
 }
 
+void read_cowper_symonds(const TomlSection& s, CowperSymondsConfig& rate) {
+  s.check_keys({"D", "q"});
+  s.read_number("D", rate.D, greater_than(0.0, "1/s"), Presence::required);
+  s.read_number("q", rate.q, greater_than(0.0), Presence::required);
+}
+
 // The anisotropy keys of each type: r-values (hill48, yld89, yld2000's fit), Barlat's exponent,
 // Yld2000-2d's coefficients or the data they are fitted to.
 void read_anisotropy(const TomlSection& s, MaterialConfig& material) {
@@ -271,9 +277,9 @@ void read_anisotropy(const TomlSection& s, MaterialConfig& material) {
 
 void read_material(const TomlSection& s, const fs::path& folder, MaterialConfig& material) {
   using Type = MaterialConfig::Type;
-  s.check_keys({"type", "density", "young", "poisson", "hardening", "kinematic", "r0", "r45", "r90",
-                "exponent", "alpha", "sigma0", "sigma45", "sigma90", "sigma_b", "r_b",
-                "forming_limit_curve"});
+  s.check_keys({"type", "density", "young", "poisson", "hardening", "kinematic", "cowper_symonds",
+                "r0", "r45", "r90", "exponent", "alpha", "sigma0", "sigma45", "sigma90", "sigma_b",
+                "r_b", "forming_limit_curve"});
   s.read_choice("type", material.type,
                 {{"von_mises", Type::von_mises},
                  {"elastic", Type::elastic},
@@ -286,7 +292,7 @@ void read_material(const TomlSection& s, const fs::path& folder, MaterialConfig&
   read_forming_limit_curve(s, material.forming_limit_curve);
   read_anisotropy(s, material);
   if (material.type == Type::elastic) {
-    for (const auto* key : {"hardening", "kinematic"}) {
+    for (const auto* key : {"hardening", "kinematic", "cowper_symonds"}) {
       if (s.has(key)) {
         s.fail_forbidden(key,
                          "an elastic material has no hardening (remove the table or set type = "
@@ -298,6 +304,9 @@ void read_material(const TomlSection& s, const fs::path& folder, MaterialConfig&
   read_hardening(*s.sub_table("hardening", Presence::required), folder, material.hardening);
   if (const auto kinematic = s.sub_table("kinematic", Presence::optional)) {
     read_kinematic(*kinematic, material.kinematic);
+  }
+  if (const auto rate = s.sub_table("cowper_symonds", Presence::optional)) {
+    read_cowper_symonds(*rate, material.cowper_symonds);
   }
 }
 

@@ -58,6 +58,13 @@ struct KinematicConfig {
   std::vector<double> gamma;  ///< -, each >= 0
 };
 
+/// Cowper-Symonds strain-rate dependence: sigma_y times 1 + (rate / D)^(1/q), rate the
+/// equivalent plastic strain rate. D = 0: none (the default).
+struct CowperSymondsConfig {
+  double D = 0.0;  ///< 1/s, > 0 when given
+  double q = 1.0;  ///< -, > 0
+};
+
 struct MaterialConfig {
   enum class Type { elastic, von_mises, hill48, yld2000, yld89 };
   std::string name;  ///< the table's key under [materials]
@@ -82,6 +89,7 @@ struct MaterialConfig {
   double sigma_b = 1.0;       ///< as sigma0, equibiaxial
   double r_b = 1.0;           ///< -, equibiaxial d_eps_yy / d_eps_xx, yld2000 fit
   KinematicConfig kinematic;  ///< any plastic type; empty = none
+  CowperSymondsConfig cowper_symonds;  ///< any plastic type; D = 0 = none
   /// Optional forming limit curve: [minor, major] true (logarithmic) strain points, minor
   /// strictly increasing, major > 0; empty = none. Not used by the solver: read back from
   /// case.resolved.toml by scripts/plot_forming_limit.py.

@@ -248,6 +248,12 @@ void write_material(TomlWriter& w, const MaterialConfig& material) {
         "MPa; Armstrong-Frederick back stresses: d alpha = C m d eps_p - gamma alpha d eps_p");
     w.numbers("gamma", material.kinematic.gamma);
   }
+  if (material.cowper_symonds.D > 0.0) {
+    w.header(table + ".cowper_symonds");
+    w.number("D", material.cowper_symonds.D,
+             "1/s; sigma_y (1 + (plastic strain rate / D)^(1/q)), Cowper-Symonds");
+    w.number("q", material.cowper_symonds.q);
+  }
 }
 
 void write_tool(TomlWriter& w, const ToolConfig& tool) {

@@ -24,29 +24,54 @@ struct Iterate {
   Vec3 eta = Vec3::Zero();
   double d_lambda = 0.0;
   EquivalentStress eq;
-  FlowStress flow{};
-  double B = 0.0;        // sum_i C_i d_lambda / (sigma_y (1 + gamma_i d_lambda))
-  double dB = 0.0;       // d B / d d_lambda
-  Vec3 decayed_sum;      // sum_i alpha_n,i / (1 + gamma_i d_lambda)
-  Vec3 d_decayed_sum;    // its d / d d_lambda
-  Vec3 r_stress;         // residual of the stress equation, MPa
-  double r_yield = 0.0;  // residual of the yield condition, MPa
+  FlowStress flow{};         // flow stress at eps_p + d_lambda, with the rate factor
+  double static_flow = 0.0;  // MPa, the rate-free flow stress sigma_y(eps_p + d_lambda)
+  double B = 0.0;            // sum_i C_i d_lambda / (sigma_y (1 + gamma_i d_lambda))
+  double dB = 0.0;           // d B / d d_lambda
+  Vec3 decayed_sum;          // sum_i alpha_n,i / (1 + gamma_i d_lambda)
+  Vec3 d_decayed_sum;        // its d / d d_lambda
+  Vec3 r_stress;             // residual of the stress equation, MPa
+  double r_yield = 0.0;      // residual of the yield condition, MPa
 
   double merit() const { return r_stress.squaredNorm() + r_yield * r_yield; }
 };
 
 class Return {
  public:
-  Return(const GeneralPlasticity& law, const GeneralPlasticityState& old, const Vec3& trial)
-      : law_(law), old_(old), trial_(trial), C_(plane_stress_stiffness(law.E, law.nu)) {}
+  Return(const GeneralPlasticity& law, const GeneralPlasticityState& old, const Vec3& trial,
+         double dt)
+      : law_(law),
+        old_(old),
+        trial_(trial),
+        C_(plane_stress_stiffness(law.E, law.nu)),
+        rate_D_dt_(law.rate.active() && dt > 0.0 ? law.rate.D * dt : 0.0) {}
+
+  // The rate-free flow stress f at eps_p + d_lambda times the Cowper-Symonds factor
+  // 1 + (d_lambda / (D dt))^(1/q) when the rate dependence is on; the slope d / d d_lambda
+  // includes the factor's.
+  FlowStress with_rate(const FlowStress& f, double d_lambda) const {
+    if (rate_D_dt_ == 0.0) {
+      return f;
+    }
+    if (!(d_lambda > 0.0)) {
+      // The factor's slope is infinite at d_lambda = 0 for q > 1: flagged, bounded by the caller.
+      return {f.stress, std::numeric_limits<double>::infinity()};
+    }
+    const double power = std::pow(d_lambda / rate_D_dt_, 1.0 / law_.rate.q);
+    const double d_power = power / (law_.rate.q * d_lambda);
+    return {f.stress * (1.0 + power), f.slope * (1.0 + power) + f.stress * d_power};
+  }
 
   Iterate evaluate(const Vec3& eta, double d_lambda) const {
     Iterate it;
     it.eta = eta;
     it.d_lambda = d_lambda;
     it.eq = equivalent_stress(law_.criterion, eta);
-    it.flow = evaluate_hardening(law_.hardening, old_.eps_p + d_lambda);
-    // An infinite initial slope (Ludwik with n < 1) only steers Newton: bound it.
+    const FlowStress rate_free = evaluate_hardening(law_.hardening, old_.eps_p + d_lambda);
+    it.static_flow = rate_free.stress;
+    it.flow = with_rate(rate_free, d_lambda);
+    // An infinite initial slope (Ludwik with n < 1, the rate factor at d_lambda = 0) only steers
+    // Newton: bound it.
     if (!std::isfinite(it.flow.slope)) {
       it.flow.slope = 1e3 * law_.E;
     }
@@ -88,6 +113,7 @@ class Return {
   const GeneralPlasticityState& old_;
   Vec3 trial_;
   Mat3 C_;
+  double rate_D_dt_;  // D dt of the rate dependence (-: D in 1/s, dt in s); 0 = rate-free
 };
 
 [[noreturn]] void fail(const GeneralPlasticity& law, const Vec3& trial, const Iterate& it) {
@@ -102,7 +128,7 @@ class Return {
 
 GeneralPlasticityUpdate GeneralPlasticity::update(const GeneralPlasticityState& old,
                                                   const Vec3& d_strain, Mat3* tangent,
-                                                  double flow_at_old) const {
+                                                  double flow_at_old, double dt) const {
   const Vec3 trial = elastic_trial(E, nu, old.stress, d_strain);
   if (!trial.allFinite()) {
     throw InstabilityError(std::string(criterion_name(criterion)) +
@@ -126,7 +152,7 @@ GeneralPlasticityUpdate GeneralPlasticity::update(const GeneralPlasticityState& 
     }
     return up;
   }
-  const Return ret(*this, old, trial);
+  const Return ret(*this, old, trial, dt);
   // First iterate: one cutting-plane step from the trial state (Simo & Ortiz 1985).
   Iterate it = ret.evaluate(eta_trial, 0.0);
   {
@@ -173,7 +199,7 @@ GeneralPlasticityUpdate GeneralPlasticity::update(const GeneralPlasticityState& 
   }
   up.plastic = true;
   up.iterations = iterations;
-  up.flow_stress = it.flow.stress;
+  up.flow_stress = it.static_flow;
   up.state.eps_p = old.eps_p + it.d_lambda;
   up.state.stress = it.eta;
   for (int i = 0; i < kinematic.count; ++i) {
@@ -216,6 +242,14 @@ void check_general_plasticity(const GeneralPlasticity& law, const char* what) {
                        " needs C >= 0 and gamma >= 0, finite (got C = " + std::to_string(t.C) +
                        ", gamma = " + std::to_string(t.gamma) + ")");
     }
+  }
+  const CowperSymonds& r = law.rate;
+  if (!(r.D >= 0.0) || !std::isfinite(r.D) ||
+      (r.active() && (!(r.q > 0.0) || !std::isfinite(r.q)))) {
+    throw InputError(name +
+                     ": the Cowper-Symonds rate dependence needs D > 0 (1/s) and q > 0, "
+                     "finite (got D = " +
+                     std::to_string(r.D) + ", q = " + std::to_string(r.q) + ")");
   }
 }
 

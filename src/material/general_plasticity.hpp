@@ -45,6 +45,17 @@ inline std::array<Vec3, kMaxBackStresses> zero_back_stresses() {
   return back;
 }
 
+/// Strain-rate dependence of the flow stress (Cowper & Symonds 1957), in the viscoplastic form:
+///   sigma_y(eps_p, rate) = sigma_y(eps_p) (1 + (rate / D)^(1/q)),
+/// rate = d_lambda / dt, the step's equivalent plastic strain rate (1/s), solved for inside the
+/// return (so the factor does not lag a step behind, and an elastic step sees the rate-free flow
+/// stress). D = 0: rate-independent.
+struct CowperSymonds {
+  double D = 0.0;  ///< 1/s, the rate at which the flow stress doubles
+  double q = 1.0;  ///< -, the exponent's reciprocal
+  bool active() const { return D > 0.0; }
+};
+
 /// The state of one point: stress, plastic strain and back stresses (material axes).
 struct GeneralPlasticityState {
   Vec3 stress = Vec3::Zero();  ///< (sxx, syy, sxy), MPa
@@ -60,8 +71,10 @@ struct GeneralPlasticityUpdate {
   bool plastic = false;          ///< true when the step was plastic
   /// Plastic work increment per unit volume, MPa: sigma_mid . d_eps^p (as PlaneStressUpdate).
   double d_plastic_work = 0.0;
-  int iterations = 0;        ///< Newton iterations of the return (0 when elastic)
-  double flow_stress = 0.0;  ///< MPa, the flow stress at the new plastic strain
+  int iterations = 0;  ///< Newton iterations of the return (0 when elastic)
+  /// MPa, the rate-free flow stress sigma_y(eps_p) at the new plastic strain (the store that
+  /// flow_at_old reads back).
+  double flow_stress = 0.0;
 };
 
 /// The law's constants.
@@ -71,6 +84,7 @@ struct GeneralPlasticity {
   YieldCriterion criterion = VonMisesCriterion{};
   Hardening hardening = LinearHardening{};  ///< flow stress of the rolling direction, MPa
   KinematicHardening kinematic{};
+  CowperSymonds rate{};  ///< off by default
 
   /// New state after the strain increment d_strain = (d_exx, d_eyy, d_gxy) in material axes.
   /// With `tangent`, also the consistent tangent d stress / d strain (MPa; engineering shear).
@@ -78,9 +92,12 @@ struct GeneralPlasticity {
   /// criterion, the trial stress and the residual).
   /// `flow_at_old`: the flow stress at old.eps_p when the caller knows it (MPa; a store of the
   /// last update's flow_stress), NaN to evaluate it.
-  GeneralPlasticityUpdate update(
-      const GeneralPlasticityState& old, const Vec3& d_strain, Mat3* tangent = nullptr,
-      double flow_at_old = std::numeric_limits<double>::quiet_NaN()) const;
+  /// `dt`: the step's duration (s) for the rate dependence; 0 (a static step's pseudo-time, or
+  /// no rate dependence) takes the rate-free flow stress.
+  GeneralPlasticityUpdate update(const GeneralPlasticityState& old, const Vec3& d_strain,
+                                 Mat3* tangent = nullptr,
+                                 double flow_at_old = std::numeric_limits<double>::quiet_NaN(),
+                                 double dt = 0.0) const;
 };
 
 /// The element loops' handle on the law (material/plane_stress_kernels.hpp: point_kernel). Works
@@ -89,11 +106,12 @@ struct GeneralPlasticity {
 struct GeneralKernel {
   static constexpr bool kMaterialAxes = true;
   const GeneralPlasticity* law;
+  double dt = 0.0;  ///< s, the step's duration for the rate dependence (0: rate-free)
 };
 
 /// Throws InputError naming `what` unless E > 0, -1 < nu < 0.5, the criterion and hardening are
 /// admissible, and every back stress has C >= 0, gamma >= 0, both finite, count in
-/// [0, kMaxBackStresses].
+/// [0, kMaxBackStresses], and the rate dependence (if on) has finite D > 0 and q > 0.
 void check_general_plasticity(const GeneralPlasticity& law, const char* what);
 
 }  // namespace sf

@@ -171,18 +171,20 @@ struct Hill48Kernel {
   double modal_v(const Vec3& tr) const { return -sn * wu(tr) + cs * wv(tr); }
 };
 
-/// The kernel of a law, formed once per element loop.
-inline ElasticKernel point_kernel(const ElasticPlaneStress& law) {
+/// The kernel of a law, formed once per element loop. `rate_dt`: the step's duration (s) for a
+/// rate-dependent law, 0 for a rate-free update (the static steps' pseudo-time); only
+/// GeneralPlasticity is rate-dependent.
+inline ElasticKernel point_kernel(const ElasticPlaneStress& law, double /*rate_dt*/) {
   return ElasticKernel(law);
 }
-inline J2Kernel point_kernel(const J2PlaneStress& law) {
+inline J2Kernel point_kernel(const J2PlaneStress& law, double /*rate_dt*/) {
   return J2Kernel(law);
 }
-inline Hill48Kernel point_kernel(const Hill48PlaneStress& law) {
+inline Hill48Kernel point_kernel(const Hill48PlaneStress& law, double /*rate_dt*/) {
   return Hill48Kernel(law);
 }
-inline GeneralKernel point_kernel(const GeneralPlasticity& law) {
-  return GeneralKernel{&law};
+inline GeneralKernel point_kernel(const GeneralPlasticity& law, double rate_dt) {
+  return GeneralKernel{&law, rate_dt};
 }
 
 }  // namespace sf

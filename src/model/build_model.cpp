@@ -75,17 +75,18 @@ YieldCriterion make_criterion(const CaseConfig& config, const MaterialConfig& m)
 }
 
 Material make_material(const CaseConfig& config, const MaterialConfig& m) {
-  const bool kinematic = !m.kinematic.C.empty();
+  // Kinematic hardening or a rate dependence takes the general return.
+  const bool closed_form = m.kinematic.C.empty() && !(m.cowper_symonds.D > 0.0);
   switch (m.type) {
     case MaterialConfig::Type::elastic:
       return ElasticPlaneStress{m.young, m.poisson};
     case MaterialConfig::Type::von_mises:
-      if (!kinematic) {
+      if (closed_form) {
         return J2PlaneStress{m.young, m.poisson, make_hardening(config, m)};
       }
       break;
     case MaterialConfig::Type::hill48:
-      if (!kinematic) {
+      if (closed_form) {
         return Hill48PlaneStress{m.young, m.poisson, m.r0, m.r45, m.r90, make_hardening(config, m)};
       }
       break;
@@ -102,6 +103,7 @@ Material make_material(const CaseConfig& config, const MaterialConfig& m) {
   for (int i = 0; i < law.kinematic.count; ++i) {
     law.kinematic.terms[i] = {m.kinematic.C[i], m.kinematic.gamma[i]};
   }
+  law.rate = {m.cowper_symonds.D, m.cowper_symonds.q};
   check_general_plasticity(law,
                            fmt::format("{}: materials.{}", config.file.string(), m.name).c_str());
   return law;

@@ -107,6 +107,15 @@ void print_material(const CaseConfig& config, const Material& material, const Un
     law += fmt::format(", {} Armstrong-Frederick back stress{}", m.kinematic.C.size(),
                        m.kinematic.C.size() > 1 ? "es" : "");
   }
+  if (m.cowper_symonds.D > 0.0) {
+    const auto factor = [&](double rate) {
+      return 1.0 + std::pow(rate / m.cowper_symonds.D, 1.0 / m.cowper_symonds.q);
+    };
+    law += fmt::format(
+        ", Cowper-Symonds rate dependence (D {} 1/s, q {}: flow stress x {:.3g} at 1 /s, x {:.3g} "
+        "at 100 /s of plastic strain rate)",
+        m.cowper_symonds.D, m.cowper_symonds.q, factor(1.0), factor(100.0));
+  }
   if (m.type != Type::elastic) {
     static constexpr const char* names[] = {"Swift",     "linear",         "Voce",      "Ludwik",
                                             "tabulated", "Hockett-Sherby", "Swift-Voce"};

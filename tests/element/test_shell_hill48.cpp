@@ -133,9 +133,11 @@ struct TensionResult {
 // With `triangle`, the element is the C0 triangle on nodes 0, 1, 2 of the square (its e1 is also
 // side x21), node 3 unused.
 // `k_of_alpha(alpha)` is the material's equivalent stress of the unit uniaxial stress at alpha to
-// the rolling direction (the loading stress's factor k(alpha)).
+// the rolling direction (the loading stress's factor k(alpha)). `rate`: the law's Cowper-Symonds
+// parameters, by which the expected flow stress is scaled with the step's plastic strain rate.
 TensionResult run_tension(const Material& material, const std::function<double(double)>& k_of_alpha,
-                          double alpha, double beta, int steps, bool triangle = false) {
+                          double alpha, double beta, int steps, bool triangle = false,
+                          const CowperSymonds& rate = {}) {
   const double a = 10.0;
   const double dt = 1e-6;
   const double d = 200.0;  // 1/s: strain 2e-4 per step
@@ -222,7 +224,11 @@ TensionResult run_tension(const Material& material, const std::function<double(d
     const bool plastic = tr.st.eps_p[2] > st.eps_p[2];
     if (plastic) {
       out.r_last = d_ep(1) / d_ezz_p;
-      const double sy = flow_stress(hardening, tr.st.eps_p[2]);
+      const double rate_factor =
+          rate.active()
+              ? 1.0 + std::pow((tr.st.eps_p[2] - st.eps_p[2]) / (rate.D * dt), 1.0 / rate.q)
+              : 1.0;
+      const double sy = flow_stress(hardening, tr.st.eps_p[2]) * rate_factor;
       out.max_curve_err = std::max(out.max_curve_err, std::abs(tr.s_global(0) * k_alpha - sy) / sy);
     }
     out.max_lateral = std::max(
@@ -323,6 +329,36 @@ TEST(ShellYld2000, UniaxialTensionThroughTheQuadAndTheTriangleGivesTheFittedRVal
           "flow-stress err %.1e\n",
           triangle ? "triangle" : "quad", 45 * i, r.r_last, r_expected[i],
           std::abs(r.r_last / r_expected[i] - 1.0), r.max_curve_err);
+    }
+  }
+}
+
+TEST(ShellYld2000, CowperSymondsThroughTheElementScalesTheFlowStressAndKeepsTheRValues) {
+  // The element hands the law its step (1e-6 s at 200 /s): the loading stress must follow
+  // sigma_y(eps_p) (1 + (d eps_p / (D dt))^(1/q)) to 1e-9 (Cowper & Symonds 1957), about 1.4
+  // times the rate-free flow stress here, while the r-values, set by the criterion's normal
+  // alone, stay the fitted ones.
+  GeneralPlasticity law = aa2090();
+  law.rate = {6500.0, 4.0};
+  const double beta = 30 * kDeg;
+  const double r_expected[3] = {0.21, 1.58, 0.69};
+  for (const bool triangle : {false, true}) {
+    for (int i = 0; i < 3; ++i) {
+      const double alpha = 45.0 * i * kDeg;
+      SCOPED_TRACE(std::string(triangle ? "triangle" : "quad") +
+                   ", alpha = " + std::to_string(45 * i) + " deg");
+      const auto k_of_alpha = [&](double a) {
+        const double c = std::cos(a), s = std::sin(a);
+        return equivalent_stress_value(law.criterion, Vec3(c * c, s * s, c * s));
+      };
+      const TensionResult r = run_tension(law, k_of_alpha, alpha, beta, 150, triangle, law.rate);
+      EXPECT_NEAR(r.r_last, r_expected[i], 1e-9 * r_expected[i]);
+      EXPECT_LT(r.max_curve_err, 1e-9);
+      EXPECT_GT(r.eps_p, 0.02);
+      // Without the rate in the expected flow stress the check must fail: the plumbing is live.
+      const TensionResult rate_free_check =
+          run_tension(law, k_of_alpha, alpha, beta, 150, triangle);
+      EXPECT_GT(rate_free_check.max_curve_err, 0.2);
     }
   }
 }

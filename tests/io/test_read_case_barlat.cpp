@@ -1,7 +1,8 @@
 // read_case: Barlat's criteria (type = "yld2000", "yld89"), kinematic hardening
-// ([materials.NAME.kinematic]) and the Hockett-Sherby and Swift-Voce hardening laws: values, each
-// error naming the case file, the line and the dotted key, and the resolved-case round trip (bit
-// for bit).
+// ([materials.NAME.kinematic]), the Cowper-Symonds rate dependence
+// ([materials.NAME.cowper_symonds]) and the Hockett-Sherby and Swift-Voce hardening laws: values,
+// each error naming the case file, the line and the dotted key, and the resolved-case round trip
+// (bit for bit).
 #include <fmt/core.h>
 #include <gtest/gtest.h>
 
@@ -109,6 +110,20 @@ TEST_F(ReadCase, KinematicHardeningReadsOneCAndGammaPerBackStress) {
   expect_error(text, 0, {"materials.steel.kinematic", "elastic"});
 }
 
+TEST_F(ReadCase, CowperSymondsReadsDAndQ) {
+  const std::string rate = "\n[materials.steel.cowper_symonds]\nD = 40.4\nq = 5\n";
+  const sf::CaseConfig c = sf::read_case(write_case(std::string(kMinimal) + rate));
+  EXPECT_EQ(c.blank_material().cowper_symonds.D, 40.4);
+  EXPECT_EQ(c.blank_material().cowper_symonds.q, 5.0);
+  EXPECT_EQ(sf::read_case(write_case(kMinimal)).blank_material().cowper_symonds.D, 0.0);  // off
+  std::string text = std::string(kMinimal) + "\n[materials.steel.cowper_symonds]\nD = 0\nq = 5\n";
+  expect_error(text, line_of(text, "D = 0"), {"materials.steel.cowper_symonds.D", "1/s"});
+  text = std::string(kMinimal) + "\n[materials.steel.cowper_symonds]\nD = 40.4\n";
+  expect_error(text, 0, {"materials.steel.cowper_symonds.q", "missing required key"});
+  text = std::string(kMinimal) + "\n[materials.steel.cowper_symonds]\nD = 40.4\nq = 5\nC = 1\n";
+  expect_error(text, line_of(text, "C = 1"), {"materials.steel.cowper_symonds", "C"});
+}
+
 TEST_F(ReadCase, BarlatAndKinematicKeysRoundTripThroughTheResolvedCase) {
   for (const std::string& text :
        {material_case("yld2000", std::string(kData) + "exponent = 7.5\n") +
@@ -116,7 +131,8 @@ TEST_F(ReadCase, BarlatAndKinematicKeysRoundTripThroughTheResolvedCase) {
         material_case("yld2000",
                       "alpha = [0.4865, 1.3783, 0.7536, 1.0246, 1.0363, 0.9036, "
                       "1.2321, 1.4858]\n"),
-        material_case("yld89", "r0 = 0.71\nr45 = 0.58\nr90 = 0.70\nexponent = 8\n")}) {
+        material_case("yld89", "r0 = 0.71\nr45 = 0.58\nr90 = 0.70\nexponent = 8\n") +
+            "\n[materials.steel.cowper_symonds]\nD = 6500.25\nq = 4\n"}) {
     const sf::CaseConfig a = sf::read_case(write_case(text));
     const std::string resolved = sf::format_resolved_case(a);
     const sf::CaseConfig b = sf::read_case(write_case(resolved, "again.toml"));
@@ -133,6 +149,8 @@ TEST_F(ReadCase, BarlatAndKinematicKeysRoundTripThroughTheResolvedCase) {
     EXPECT_EQ(mb.r90, ma.r90);
     EXPECT_EQ(mb.kinematic.C, ma.kinematic.C);
     EXPECT_EQ(mb.kinematic.gamma, ma.kinematic.gamma);
+    EXPECT_EQ(mb.cowper_symonds.D, ma.cowper_symonds.D);
+    EXPECT_EQ(mb.cowper_symonds.q, ma.cowper_symonds.q);
   }
 }
 
