@@ -1,7 +1,7 @@
 // Cylindrical cup: a quarter of the rigid die (x >= 0, y >= 0; cup axis = z axis), opening
 // diameter 74 mm, profile radius 8 mm (the NUMISHEET'93 square cup's die section turned round:
-// README.md). Its top face at z = -0.39 touches the bottom surface of the 0.78 mm blank
-// (mid-surface at z = 0). Only the contact side is kept: the top face out to a radius of 80 mm,
+// README.md). Its top face at z = -t/2 touches the bottom surface of the blank of thickness t
+// (the parameter `thickness`: 0.78 mm, or a case's tools[].parameters; mid-surface at z = 0). Only the contact side is kept: the top face out to a radius of 80 mm,
 // the profile and the opening's wall, with normals outwards (towards the blank). Units: mm.
 // Mesh: 3-node triangles. Element size: Mesh.MeshSizeMax when the caller sets it, else 2 mm.
 SetFactory("OpenCASCADE");
@@ -9,7 +9,8 @@ SetFactory("OpenCASCADE");
 opening_radius = 37;    // mm
 profile_radius = 8;     // mm
 outer = 80;             // mm, radius of the die's top face
-z_top = -0.78 / 2;      // mm
+DefineConstant[ thickness = {0.78, Name "Parameters/blank thickness (mm)"} ];  // mm
+z_top = -thickness / 2;  // mm
 z_bottom = -60;         // mm
 If (Mesh.MeshSizeMax >= 1e21)
   Mesh.MeshSizeMax = 2;

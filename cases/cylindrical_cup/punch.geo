@@ -1,7 +1,7 @@
 // Cylindrical cup: a quarter of the rigid flat-bottomed punch (x >= 0, y >= 0; cup axis = z axis),
 // diameter 70 mm, profile radius 8 mm (the NUMISHEET'93 square cup's punch section turned round:
-// README.md). Its flat face at z = +0.39 touches the top surface of the 0.78 mm blank (mid-surface
-// at z = 0). Only the contact side is kept: the flat bottom, the profile and the side wall, with
+// README.md). Its flat face at z = +t/2 touches the top surface of the blank of thickness t (the
+// parameter `thickness`, 0.78 mm by default; mid-surface at z = 0). Only the contact side is kept: the flat bottom, the profile and the side wall, with
 // normals outwards (towards the blank). Units: mm.
 // Mesh: 3-node triangles. Element size: Mesh.MeshSizeMax when the caller sets it (sheetform's
 // element_size, or `gmsh -2 -clmax 1 punch.geo`), else 2 mm.
@@ -9,7 +9,8 @@ SetFactory("OpenCASCADE");
 
 radius = 35;            // mm
 profile_radius = 8;     // mm
-z_bottom = 0.78 / 2;    // mm
+DefineConstant[ thickness = {0.78, Name "Parameters/blank thickness (mm)"} ];  // mm
+z_bottom = thickness / 2;  // mm
 z_top = 60;             // mm
 If (Mesh.MeshSizeMax >= 1e21)
   Mesh.MeshSizeMax = 2;

@@ -15,7 +15,7 @@ SetFactory("OpenCASCADE");
 
 half_opening = 37;      // mm
 corner_radius = 12;     // mm, in plan
-profile_radius = 8;     // mm
+DefineConstant[ profile_radius = {8, Name "Parameters/die profile radius (mm)"} ];  // mm
 outer = 90;             // mm, quarter extent in x and y
 z_top = -0.81 / 2;      // mm
 z_bottom = -60;         // mm
