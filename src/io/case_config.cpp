@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -15,6 +16,7 @@
 #include "io/case_config_history.hpp"
 #include "io/case_config_implicit.hpp"
 #include "io/case_overrides.hpp"
+#include "io/mesh_import.hpp"
 #include "io/toml_reader.hpp"
 #include "io/unit_system.hpp"
 
@@ -32,10 +34,13 @@ fs::path read_existing_file(const TomlSection& s, std::string_view key, const fs
   const toml::node& node = *s.find(key);
   const fs::path given(text);
   std::string accepted;
+  std::string given_ext = given.extension().string();
+  std::transform(given_ext.begin(), given_ext.end(), given_ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   bool extension_ok = false;
   for (const auto ext : extensions) {
-    accepted += fmt::format("{}{}", accepted.empty() ? "" : " or ", ext);
-    extension_ok = extension_ok || given.extension() == ext;
+    accepted += fmt::format("{}{}", accepted.empty() ? "" : ", ", ext);
+    extension_ok = extension_ok || given_ext == ext;
   }
   if (!extension_ok) {
     s.fail_value(key, fmt::format("a {} file", accepted));
@@ -98,11 +103,47 @@ void read_geo_parameters(const TomlSection& s, const MeshSourceConfig& mesh,
             [](const GeoParameter& a, const GeoParameter& b) { return a.name < b.name; });
 }
 
+// The keys of CAD and STL files: scale, curvature refinement (CAD), the surfaces that form the
+// part; each refused for the formats it means nothing to.
+void read_import_keys(const TomlSection& s, MeshSourceConfig& mesh) {
+  const MeshFormat format = mesh_format(mesh.file);
+  const bool imported = is_imported(format);
+  if (format == MeshFormat::geo && s.has("scale")) {
+    s.fail_forbidden("scale", "a .geo script sets its own lengths; scale is for the other formats");
+  }
+  s.read_number("scale", mesh.scale, greater_than(0.0));
+  if (!is_cad(format) && s.has("curvature_elements")) {
+    s.fail_forbidden("curvature_elements", "curvature refinement is for a CAD mesh source");
+  }
+  s.read_integer("curvature_elements", mesh.curvature_elements,
+                 IntegerRange{.lo = 0, .hi = 1000, .unit = "elements per 2 pi of curvature"});
+  if (!imported && s.has("surfaces")) {
+    s.fail_forbidden("surfaces",
+                     "a surface list is for a CAD, STL, Nastran, UNV or VTK file; a .geo or .msh "
+                     "names its parts by physical groups");
+  }
+  std::vector<double> tags;
+  if (s.read_numbers("surfaces", tags, at_least(1.0, "surface tags"), 1, 100000)) {
+    for (const double t : tags) {
+      if (t != std::floor(t) || t > 2147483647.0) {
+        s.fail_value("surfaces", "whole surface tags (integers >= 1)");
+      }
+      mesh.surfaces.push_back(static_cast<int>(t));
+    }
+  }
+}
+
 void read_mesh_source(const TomlSection& s, const fs::path& folder, MeshSourceConfig& mesh) {
-  mesh.file = read_existing_file(s, "mesh", folder, {".geo", ".msh"});
+  mesh.file = read_existing_file(s, "mesh", folder,
+                                 {".geo", ".msh", ".step", ".stp", ".iges", ".igs", ".brep", ".stl",
+                                  ".bdf", ".nas", ".unv", ".vtk"});
   s.read_string("group", mesh.group);
   s.read_number("element_size", mesh.element_size, at_least(0.0, "mm"));
+  if (is_cad(mesh_format(mesh.file)) && !(mesh.element_size > 0.0)) {
+    s.fail_missing("element_size", "an element size > 0 (mm): a CAD file has no mesh sizes");
+  }
   read_geo_parameters(s, mesh, mesh.parameters);
+  read_import_keys(s, mesh);
 }
 
 void read_hardening(const TomlSection& s, const fs::path& folder, HardeningConfig& hardening) {
@@ -337,9 +378,9 @@ void read_blank(const TomlSection& top, const fs::path& folder, const CaseConfig
   using Rule = BlankConfig::IntegrationRule;
   using Form = BlankConfig::HourglassForm;
   using Formulation = BlankConfig::Formulation;
-  s.check_keys({"mesh", "group", "element_size", "parameters", "element", "thickness",
-                "integration_points", "integration_rule", "material", "formulation", "hourglass",
-                "hourglass_form", "rolling_direction"});
+  s.check_keys({"mesh", "group", "element_size", "parameters", "scale", "curvature_elements",
+                "surfaces", "element", "thickness", "integration_points", "integration_rule",
+                "material", "formulation", "hourglass", "hourglass_form", "rolling_direction"});
   read_mesh_source(s, folder, blank.mesh);
   s.read_choice<std::string>("element", blank.element,
                              {{"quad", "quad"}, {"as_meshed", "as_meshed"}});
@@ -424,7 +465,8 @@ void read_tools(const TomlSection& top, const fs::path& folder, std::vector<Tool
   const std::vector<TomlSection> sections = top.table_array("tools");
   for (std::size_t i = 0; i < sections.size(); ++i) {
     const TomlSection& s = sections[i];
-    s.check_keys({"name", "mesh", "group", "element_size", "parameters", "motion"});
+    s.check_keys({"name", "mesh", "group", "element_size", "parameters", "scale",
+                  "curvature_elements", "surfaces", "motion"});
     ToolConfig tool;
     s.read_name("name", tool.name, Presence::required);
     for (std::size_t j = 0; j < i; ++j) {

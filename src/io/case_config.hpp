@@ -96,14 +96,21 @@ struct MaterialConfig {
   std::vector<std::array<double, 2>> forming_limit_curve;
 };
 
-/// A mesh source: a .geo file meshed by gmsh, or a ready .msh file.
+/// A mesh source: a .geo file meshed by gmsh, a ready .msh file, a CAD file (STEP, IGES, BREP)
+/// meshed by gmsh, or an STL file's triangles (io/mesh_import.hpp).
 struct MeshSourceConfig {
   std::filesystem::path file;  ///< absolute (resolved against the case file's folder)
-  std::string group;           ///< physical group name holding the part's surface
-  double element_size = 0.0;   ///< mm; 0 = leave the .geo file's own sizes (ignored for .msh)
+  /// physical group name holding the part's surface; for a CAD or STL file (which has no groups)
+  /// the name its surfaces are given
+  std::string group;
+  /// mm; 0 = leave the .geo file's own sizes (ignored for .msh and STL; required > 0 for CAD)
+  double element_size = 0.0;
   /// .geo only: numbers set before gmsh parses the file, sorted by name; each must be declared by
   /// the file with DefineConstant[] (checked when the model is built: load_gmsh_model).
   std::vector<GeoParameter> parameters{};
+  double scale = 1.0;           ///< -, lengths of a CAD, STL or .msh file multiplied by it
+  int curvature_elements = 0;   ///< CAD only: elements per 2 pi of curvature; 0 = off
+  std::vector<int> surfaces{};  ///< CAD and STL: the surface tags of the part; empty = all
 };
 
 struct BlankConfig {

@@ -109,6 +109,16 @@ void write_mesh_source(TomlWriter& w, const MeshSourceConfig& mesh) {
     }
     w.raw("parameters", "{ " + table + " }");
   }
+  if (mesh.scale != 1.0) {
+    w.number("scale", mesh.scale, "lengths of the file multiplied by it");
+  }
+  if (mesh.curvature_elements > 0) {
+    w.integer("curvature_elements", mesh.curvature_elements, "elements per 2 pi of curvature");
+  }
+  if (!mesh.surfaces.empty()) {
+    std::vector<double> tags(mesh.surfaces.begin(), mesh.surfaces.end());
+    w.numbers("surfaces", tags, "the file's surface tags that form the part");
+  }
 }
 
 void write_blank(TomlWriter& w, const BlankConfig& blank) {

@@ -28,6 +28,7 @@
 #include "core/errors.hpp"
 #include "core/log.hpp"
 #include "io/geo_safety.hpp"
+#include "io/mesh_import.hpp"
 
 // The sanitizers' hook run before a sanitizer ends the process (libFuzzer sets it to save the
 // input as a finding). Weak: null in a build without sanitizers.
@@ -139,27 +140,30 @@ void run_gmsh_step(const std::filesystem::path& file, const std::string& step,
   throw InputError(message);
 }
 
-std::string lower_extension(const std::filesystem::path& file) {
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
 /// Checks what can be checked before gmsh starts: the file exists, its extension, the size.
-void check_mesh_source(const std::filesystem::path& file, double element_size) {
+void check_mesh_source(const std::filesystem::path& file, double element_size,
+                       const MeshImportOptions& import) {
   if (!std::filesystem::is_regular_file(file)) {  // gmsh::open does not report a missing file
     throw InputError(quoted(file) + ": mesh file not found");
   }
-  const std::string ext = lower_extension(file);
-  if (ext != ".geo" && ext != ".msh") {
-    throw InputError(quoted(file) + ": unknown mesh file extension '" + ext +
-                     "' (expected .geo or .msh)");
-  }
+  const MeshFormat format = mesh_format(file);
   if (!(element_size >= 0.0) || !std::isfinite(element_size)) {
     throw InputError(quoted(file) + ": element size must be >= 0 mm (0 = the file's own sizes)");
   }
-  if (ext == ".geo") {
+  if (is_cad(format) && !(element_size > 0.0)) {
+    throw InputError(quoted(file) +
+                     ": a CAD file has no mesh sizes of its own: give the part an element_size "
+                     "> 0 (mm)");
+  }
+  if (!(import.scale > 0.0) || !std::isfinite(import.scale)) {
+    throw InputError(quoted(file) + ": scale must be > 0");
+  }
+  if (format == MeshFormat::geo && import.scale != 1.0) {
+    throw InputError(quoted(file) +
+                     ": a .geo script sets its own lengths: scale is for the other "
+                     "formats");
+  }
+  if (format == MeshFormat::geo) {
     check_geo_runs_no_commands(file);  // before gmsh reads it
   }
 }
@@ -326,42 +330,59 @@ void check_mesh_size_estimate(const std::filesystem::path& file, double element_
   }
 }
 
-/// Opens (and for a .geo, meshes in 2-D) `file` in the current gmsh session.
+/// Opens `file` in the current gmsh session; meshes a .geo or CAD file in 2-D; forms the part's
+/// group of a CAD or STL file.
 void open_and_mesh(const std::filesystem::path& file, double element_size, bool recombine,
-                   std::span<const GeoParameter> parameters) {
-  const bool geo = lower_extension(file) == ".geo";
+                   std::span<const GeoParameter> parameters, const MeshImportOptions& import) {
+  const MeshFormat format = mesh_format(file);
+  const bool geo = format == MeshFormat::geo;
   if (!geo && !parameters.empty()) {
     throw InputError(quoted(file) +
                      ": parameters are set in a .geo file before gmsh parses it; a .msh file is "
-                     "read as it is");
+                     "read as it is, and so are the other formats");
   }
+  const bool meshed = is_meshed(format);
   const auto set_size = [&] {
-    if (geo && element_size > 0.0) {
+    if (meshed && element_size > 0.0) {
       gmsh::option::setNumber("Mesh.MeshSizeMax", element_size);
       gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
     }
+    if (is_cad(format) && import.curvature_elements > 0) {
+      gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", import.curvature_elements);
+    }
   };
-  run_gmsh_step(file, "setting options", set_size);
+  run_gmsh_step(file, "setting options", [&] {
+    set_size();
+    if (is_cad(format)) {
+      set_cad_read_options(format, import);
+    }
+  });
   const MeshTimeBudget budget(file, mesh_budget().seconds);
   if (parameters.empty()) {
     run_gmsh_step(file, "reading the file", [&] { gmsh::open(file.string()); });
   } else {
     open_with_parameters(file, parameters);
   }
-  if (geo && element_size > 0.0) {
+  if (meshed && element_size > 0.0) {
     run_gmsh_step(file, "estimating the mesh size",
                   [&] { check_mesh_size_estimate(file, element_size, recombine); });
   }
-  if (geo) {
+  if (meshed) {
     run_gmsh_step(file, "meshing in 2-D", [&] {
       set_size();
       if (recombine) {
         gmsh::option::setNumber("Mesh.RecombineAll", 1);
-        gmsh::option::setNumber("Mesh.Algorithm", 8);
+        // Frontal-Delaunay for quads; gmsh 4.8 crashes with it on a face read from a CAD file
+        // (backgroundMesh::getAngle, seen on a plane from STEP), so such faces are meshed with
+        // Frontal-Delaunay triangles and recombined.
+        gmsh::option::setNumber("Mesh.Algorithm", is_cad(format) ? 6 : 8);
       }
       gmsh::option::setNumber("Mesh.MaxNumThreads2D", 1);
       gmsh::model::mesh::generate(2);
     });
+  }
+  if (is_imported(format)) {
+    run_gmsh_step(file, "forming the part's group", [&] { group_imported_surfaces(file, import); });
   }
 }
 
@@ -456,7 +477,7 @@ std::string group_label(const GmshPhysicalGroup& g) {
 /// over shared edges, per connected piece, keeping the majority orientation. Returns for each
 /// element whether it must be reversed.
 std::vector<bool> orient_consistently(const std::vector<std::vector<int>>& elements,
-                                      const std::vector<std::size_t>& gmsh_tags,
+                                      const std::vector<std::size_t>& gmsh_tags, const Matrix3X& x,
                                       const std::string& where) {
   // Edge (low, high) -> uses: (element, +1 if the element runs low -> high, else -1).
   std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> edges;
@@ -469,8 +490,9 @@ std::vector<bool> orient_consistently(const std::vector<std::vector<int>>& eleme
     }
   }
   const auto edge_text = [&](const std::pair<int, int>& edge) {
-    return "edge between gmsh nodes " + std::to_string(gmsh_tags[edge.first]) + " and " +
-           std::to_string(gmsh_tags[edge.second]);
+    const Vec3 mid = 0.5 * (x.col(edge.first) + x.col(edge.second));
+    return fmt::format("edge between gmsh nodes {} and {} (mid-point at ({:.6g}, {:.6g}, {:.6g}))",
+                       gmsh_tags[edge.first], gmsh_tags[edge.second], mid(0), mid(1), mid(2));
   };
   struct Neighbour {
     int element;               ///< the other element
@@ -571,8 +593,9 @@ void forget_inherited_crash_handlers() {
 // therefore read by gmsh first in a child process (output silenced): a crash there is bad input,
 // named, and this process never meets the damage. Costs one more read of the file.
 void read_msh_in_child_first(const std::filesystem::path& file) {
-  if (lower_extension(file) != ".msh") {
-    return;
+  const MeshFormat format = mesh_format(file);
+  if (format == MeshFormat::geo || is_cad(format)) {
+    return;  // meshed here: a crash would be gmsh's meshing, not the file's syntax
   }
   std::fflush(nullptr);
   const pid_t child = ::fork();
@@ -611,19 +634,24 @@ void read_msh_in_child_first(const std::filesystem::path& file) {
 }
 
 GmshModel load_gmsh_model(const std::filesystem::path& file, double element_size, bool recombine,
-                          std::span<const GeoParameter> parameters) {
-  check_mesh_source(file, element_size);
+                          std::span<const GeoParameter> parameters,
+                          const MeshImportOptions& import) {
+  check_mesh_source(file, element_size, import);
   read_msh_in_child_first(file);
   GmshSession session;
-  open_and_mesh(file, element_size, recombine, parameters);
-  return read_current_model(file);
+  open_and_mesh(file, element_size, recombine, parameters, import);
+  GmshModel model = read_current_model(file);
+  if (!is_cad(mesh_format(file))) {
+    model.node_coords *= import.scale;  // CAD files are scaled by OpenCASCADE as they are read
+  }
+  return model;
 }
 
 void write_msh(const std::filesystem::path& geo_file, double element_size, bool recombine,
                const std::filesystem::path& msh_out, std::span<const GeoParameter> parameters) {
-  check_mesh_source(geo_file, element_size);
+  check_mesh_source(geo_file, element_size, MeshImportOptions{});
   GmshSession session;
-  open_and_mesh(geo_file, element_size, recombine, parameters);
+  open_and_mesh(geo_file, element_size, recombine, parameters, MeshImportOptions{});
   read_current_model(geo_file);  // the same checks as load_gmsh_model (empty mesh, no groups)
   run_gmsh_step(msh_out, "writing the mesh", [&] {
     gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
@@ -735,7 +763,8 @@ PartMesh extract_part_mesh(const GmshModel& model, const std::string& group,
     }
   }
 
-  const std::vector<bool> reverse = orient_consistently(elements, part.gmsh_node_tags, where);
+  const std::vector<bool> reverse =
+      orient_consistently(elements, part.gmsh_node_tags, part.nodes, where);
   // After the topology's checks (a Moebius band's closing element can be flat as well).
   for (std::size_t e = 0; e < elements.size(); ++e) {
     if (has_zero_area(part.nodes, elements[e])) {

@@ -1,6 +1,7 @@
 #pragma once
-// Meshes from gmsh: a .geo file meshed through the gmsh API (2-D), or a ready .msh file, read into
-// plain data (GmshModel), from which part meshes and node groups are taken by physical group name.
+// Meshes from gmsh: a .geo file meshed through the gmsh API (2-D), a ready .msh file, or a CAD
+// (STEP, IGES, BREP) or STL file (io/mesh_import.hpp), read into plain data (GmshModel), from
+// which part meshes and node groups are taken by physical group name.
 // gmsh is used only here, serially, before the time loop.
 #include <cstddef>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include "core/errors.hpp"
 #include "core/types.hpp"
 #include "io/geo_parameter.hpp"
+#include "io/mesh_import.hpp"
 #include "mesh/mesh_data.hpp"
 
 namespace sf {
@@ -95,8 +97,14 @@ struct MeshBudget {
 /// The budget of the meshing in this process (set from the case before its parts are meshed).
 MeshBudget& mesh_budget();
 
+/// CAD and STL files (io/mesh_import.hpp): a CAD file is read by OpenCASCADE (a STEP file's unit
+/// converted to mm, IGES faces sewn), scaled by import.scale and meshed like a .geo (element_size
+/// > 0 required; import.curvature_elements refines curved faces); an STL file's triangles are
+/// taken as they are. Either has no physical groups: its surfaces (import.surfaces, or all)
+/// become the group import.group. A .msh or STL file's coordinates are multiplied by import.scale.
 GmshModel load_gmsh_model(const std::filesystem::path& file, double element_size, bool recombine,
-                          std::span<const GeoParameter> parameters = {});
+                          std::span<const GeoParameter> parameters = {},
+                          const MeshImportOptions& import = {});
 
 /// The 2-D physical group `group` as a part mesh named `part_name`: compact local node numbering
 /// (ascending gmsh node tag), gmsh tags kept, quads and/or 3-node triangles; any other element type

@@ -128,7 +128,8 @@ GmshModel load_mesh_source(const CaseConfig& config, const MeshSourceConfig& mes
                            const std::string& key, bool recombine) {
   try {
     mesh_budget() = {config.limits.mesh_seconds, config.limits.max_elements};
-    return load_gmsh_model(mesh.file, mesh.element_size, recombine, mesh.parameters);
+    const MeshImportOptions import{mesh.scale, mesh.curvature_elements, mesh.surfaces, mesh.group};
+    return load_gmsh_model(mesh.file, mesh.element_size, recombine, mesh.parameters, import);
   } catch (const GeoParameterError& error) {
     const GeoParameter& p = mesh.parameters.at(error.index());
     throw InputError(fmt::format("{}: {}.parameters.{}: {}",

@@ -359,8 +359,8 @@ TEST_F(ReadCase, MeshFilesMustExist) {
   text = replaced(kFull, "\"die.msh\"", "\"die.geo\"");
   expect_error(text, line_of(text, "\"die.geo\""), {"tools[0].mesh", (dir_ / "die.geo").string()});
 
-  text = replaced(kMinimal, "\"blank.geo\"", "\"blank.stl\"");
-  expect_error(text, line_of(text, "mesh ="), {"blank.mesh", ".geo or .msh"});
+  text = replaced(kMinimal, "\"blank.geo\"", "\"blank.obj\"");
+  expect_error(text, line_of(text, "mesh ="), {"blank.mesh", ".geo, .msh, .step"});
 }
 
 TEST_F(ReadCase, DanglingNamesAreErrors) {
