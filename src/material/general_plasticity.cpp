@@ -200,6 +200,7 @@ GeneralPlasticityUpdate GeneralPlasticity::update(const GeneralPlasticityState& 
   up.plastic = true;
   up.iterations = iterations;
   up.flow_stress = it.static_flow;
+  up.d_eps_p = it.d_lambda;
   up.state.eps_p = old.eps_p + it.d_lambda;
   up.state.stress = it.eta;
   for (int i = 0; i < kinematic.count; ++i) {

@@ -71,7 +71,8 @@ struct GeneralPlasticityUpdate {
   bool plastic = false;          ///< true when the step was plastic
   /// Plastic work increment per unit volume, MPa: sigma_mid . d_eps^p (as PlaneStressUpdate).
   double d_plastic_work = 0.0;
-  int iterations = 0;  ///< Newton iterations of the return (0 when elastic)
+  double d_eps_p = 0.0;  ///< the equivalent plastic strain increment d_lambda, -
+  int iterations = 0;    ///< Newton iterations of the return (0 when elastic)
   /// MPa, the rate-free flow stress sigma_y(eps_p) at the new plastic strain (the store that
   /// flow_at_old reads back).
   double flow_stress = 0.0;

@@ -300,7 +300,9 @@ TEST(GeneralPlasticity, CowperSymondsLargeStepsEndOnTheScaledSurface) {
     if (up.plastic) {
       ++plastic;
       const Vec3 eta = up.state.stress - up.state.back[0] - up.state.back[1];
-      const double d_lambda = up.state.eps_p - s.eps_p;
+      // The return's own increment: eps_p_new - eps_p_old would lose most of its digits to
+      // cancellation on a step just past the yield surface.
+      const double d_lambda = up.d_eps_p;
       const double flow = kSwift.flow_stress(up.state.eps_p) *
                           (1.0 + std::pow(d_lambda / (6500.0 * dt), 1.0 / 4.0));
       EXPECT_NEAR(equivalent_stress_value(law.criterion, eta), flow, 1e-9 * flow);
