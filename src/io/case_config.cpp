@@ -5,9 +5,9 @@
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include "core/errors.hpp"
@@ -27,22 +27,15 @@ namespace fs = std::filesystem;
 namespace {
 
 /// Reads `key` as a path (relative to `folder`) to a file that must exist; returns it absolute.
+/// `accepts` says whether its extension is one of `accepted` (text for the message).
 fs::path read_existing_file(const TomlSection& s, std::string_view key, const fs::path& folder,
-                            std::initializer_list<std::string_view> extensions) {
+                            const std::function<bool(const fs::path&)>& accepts,
+                            std::string_view accepted) {
   std::string text;
   s.read_string(key, text, Presence::required);
   const toml::node& node = *s.find(key);
   const fs::path given(text);
-  std::string accepted;
-  std::string given_ext = given.extension().string();
-  std::transform(given_ext.begin(), given_ext.end(), given_ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  bool extension_ok = false;
-  for (const auto ext : extensions) {
-    accepted += fmt::format("{}{}", accepted.empty() ? "" : ", ", ext);
-    extension_ok = extension_ok || given_ext == ext;
-  }
-  if (!extension_ok) {
+  if (!accepts(given)) {
     s.fail_value(key, fmt::format("a {} file", accepted));
   }
   const fs::path file = (given.is_absolute() ? given : folder / given).lexically_normal();
@@ -134,9 +127,9 @@ void read_import_keys(const TomlSection& s, MeshSourceConfig& mesh) {
 }
 
 void read_mesh_source(const TomlSection& s, const fs::path& folder, MeshSourceConfig& mesh) {
-  mesh.file = read_existing_file(s, "mesh", folder,
-                                 {".geo", ".msh", ".step", ".stp", ".iges", ".igs", ".brep", ".stl",
-                                  ".bdf", ".nas", ".unv", ".vtk"});
+  mesh.file = read_existing_file(
+      s, "mesh", folder, [](const fs::path& p) { return find_mesh_format(p).has_value(); },
+      accepted_mesh_extensions());
   s.read_string("group", mesh.group);
   s.read_number("element_size", mesh.element_size, at_least(0.0, "mm"));
   if (is_cad(mesh_format(mesh.file)) && !(mesh.element_size > 0.0)) {
@@ -202,7 +195,8 @@ void read_hardening(const TomlSection& s, const fs::path& folder, HardeningConfi
       return;
     case Law::tabulated:
       s.check_keys({"law", "file"});
-      hardening.table_file = read_existing_file(s, "file", folder, {".csv"});
+      hardening.table_file = read_existing_file(
+          s, "file", folder, [](const fs::path& p) { return p.extension() == ".csv"; }, ".csv");
       return;
   }
 }

@@ -5,8 +5,10 @@
 
 #include <gmsh.h>
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <string>
+#include <string_view>
 
 #include "core/errors.hpp"
 
@@ -19,28 +21,42 @@ std::string lower(std::string text) {
   return text;
 }
 
+// Every accepted extension (lower case) and its format: the one table behind mesh_format,
+// accepted_mesh_extensions and the case reader's check of `mesh`.
+struct ExtensionFormat {
+  std::string_view extension;
+  MeshFormat format;
+};
+constexpr std::array<ExtensionFormat, 12> kFormats{{{".geo", MeshFormat::geo},
+                                                    {".msh", MeshFormat::msh},
+                                                    {".step", MeshFormat::step},
+                                                    {".stp", MeshFormat::step},
+                                                    {".iges", MeshFormat::iges},
+                                                    {".igs", MeshFormat::iges},
+                                                    {".brep", MeshFormat::brep},
+                                                    {".stl", MeshFormat::stl},
+                                                    {".bdf", MeshFormat::nastran},
+                                                    {".nas", MeshFormat::nastran},
+                                                    {".unv", MeshFormat::unv},
+                                                    {".vtk", MeshFormat::vtk}}};
+
 }  // namespace
 
-MeshFormat mesh_format(const std::filesystem::path& file) {
+std::optional<MeshFormat> find_mesh_format(const std::filesystem::path& file) {
   const std::string ext = lower(file.extension().string());
-  if (ext == ".geo")
-    return MeshFormat::geo;
-  if (ext == ".msh")
-    return MeshFormat::msh;
-  if (ext == ".step" || ext == ".stp")
-    return MeshFormat::step;
-  if (ext == ".iges" || ext == ".igs")
-    return MeshFormat::iges;
-  if (ext == ".brep")
-    return MeshFormat::brep;
-  if (ext == ".stl")
-    return MeshFormat::stl;
-  if (ext == ".bdf" || ext == ".nas")
-    return MeshFormat::nastran;
-  if (ext == ".unv")
-    return MeshFormat::unv;
-  if (ext == ".vtk")
-    return MeshFormat::vtk;
+  for (const auto& [extension, format] : kFormats) {
+    if (ext == extension) {
+      return format;
+    }
+  }
+  return std::nullopt;
+}
+
+MeshFormat mesh_format(const std::filesystem::path& file) {
+  if (const auto format = find_mesh_format(file)) {
+    return *format;
+  }
+  const std::string ext = lower(file.extension().string());
   if (ext == ".inp" || ext == ".vtu" || ext == ".med") {
     // gmsh 4.8 (Debian 12) has no reader for these (an .inp or .vtu would go to its .geo parser).
     throw InputError(fmt::format(
@@ -53,8 +69,13 @@ MeshFormat mesh_format(const std::filesystem::path& file) {
                                file.string(), ext, accepted_mesh_extensions()));
 }
 
-const char* accepted_mesh_extensions() {
-  return ".geo, .msh, .step, .stp, .iges, .igs, .brep, .stl, .bdf, .nas, .unv or .vtk";
+std::string accepted_mesh_extensions() {
+  std::string text;
+  for (std::size_t k = 0; k < kFormats.size(); ++k) {
+    text += (k == 0 ? "" : (k + 1 == kFormats.size() ? " or " : ", "));
+    text += kFormats[k].extension;
+  }
+  return text;
 }
 
 bool is_cad(MeshFormat format) {

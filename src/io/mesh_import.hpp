@@ -7,6 +7,7 @@
 // property ids, a UNV file's physical property numbers) made into one physical group named as
 // the case asks; a UNV file's named groups (dataset 2477) are kept.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,8 +29,11 @@ enum class MeshFormat {
 /// listing the accepted extensions for any other.
 MeshFormat mesh_format(const std::filesystem::path& file);
 
-/// The extensions mesh_format accepts, for messages: ".geo, .msh, .step, ...".
-const char* accepted_mesh_extensions();
+/// The format of `file` from its extension (case-insensitive), or nullopt for any other.
+std::optional<MeshFormat> find_mesh_format(const std::filesystem::path& file);
+
+/// The extensions mesh_format accepts, for messages: ".geo, .msh, .step, ... or .vtk".
+std::string accepted_mesh_extensions();
 
 /// True for the formats gmsh meshes (a .geo script and the CAD formats).
 bool is_meshed(MeshFormat format);
