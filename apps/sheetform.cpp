@@ -4,6 +4,7 @@
 //   sheetform run   CASE [-o DIR]   run a case, write results (HDF5 + XDMF for ParaView)
 //   sheetform check CASE            validate a case and print the model it builds
 //   sheetform mesh  CASE [-o DIR]   write only the meshes (HDF5 + XDMF, and .msh of each .geo)
+//   sheetform schema [--markdown]   print the case file's keys (the tables of docs/case-file.md)
 //
 // run takes --threads N (OpenMP; default OMP_NUM_THREADS, else every core): the results are the
 // same bits for any thread count (docs/parallel.md). Started by mpirun (mpirun -np N sheetform
@@ -36,6 +37,7 @@
 #include "core/errors.hpp"
 #include "core/log.hpp"
 #include "io/case_config.hpp"
+#include "io/case_fields.hpp"
 #include "io/geo_safety.hpp"
 #include "io/gmsh_reader.hpp"
 #include "model/build_model.hpp"
@@ -101,9 +103,11 @@ void apply_overrides(const Arguments& args, sf::CaseConfig& config) {
       throw sf::InputError(config.file.string() +
                            ": --search needs a [[contact]] (the case has none)");
     }
+    const sf::ContactSearchKind search =
+        *sf::find_choice<sf::ContactSearchKind>(sf::kContactSearchNames, args.search);
     for (sf::ContactConfig& contact : config.contacts) {
-      contact.search = args.search;
-      if (args.search != "cached") {
+      contact.search = search;
+      if (search != sf::ContactSearchKind::cached) {
         contact.search_margin = 0.0;  // a cached-search option only
       }
     }
@@ -323,7 +327,7 @@ int mesh(const Arguments& args, const sf::MpiSession& mpi) {
                     mesh.parameters);
     }
   };
-  write_msh_of("blank", c.blank.mesh, c.blank.element == "quad");
+  write_msh_of("blank", c.blank.mesh, c.blank.element == sf::BlankMeshing::quad);
   for (const sf::ToolConfig& t : c.tools) {
     write_msh_of(t.name, t.mesh, false);
   }
@@ -390,19 +394,27 @@ int main(int argc, char** argv) {
   run_cmd
       ->add_option("--search", args.search,
                    "override the search of every [[contact]]: standard, modified or cached")
-      ->check(CLI::IsMember(
-          {"standard", "modified", "cached", "standard_brute_force", "modified_brute_force"}));
+      ->check(CLI::IsMember(sf::choice_names<sf::ContactSearchKind>(sf::kContactSearchNames)));
   CLI::App* check_cmd = app.add_subcommand("check", "validate a case and print its model");
   add_common(check_cmd);
   CLI::App* mesh_cmd = app.add_subcommand("mesh", "write only the meshes (HDF5 + XDMF)");
   add_common(mesh_cmd);
   mesh_cmd->add_option("-o,--output", args.output_directory, "results folder");
+  CLI::App* schema_cmd =
+      app.add_subcommand("schema", "print the case file's keys, section by section");
+  bool markdown = false;
+  schema_cmd->add_flag("--markdown", markdown,
+                       "as the Markdown tables of docs/case-file.md, between their marker lines");
 
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? sf::exit_ok : sf::exit_input_error;
+  }
+  if (*schema_cmd) {
+    std::cout << (markdown ? sf::case_schema_markdown() : sf::case_schema_text());
+    return sf::exit_ok;
   }
   sf::geo_system_calls_allowed() = args.allow_geo_system_calls;
   if (mpi->rank() != 0) {  // one rank speaks

@@ -12,42 +12,16 @@
 
 namespace sf {
 
-namespace {
-
-struct NamedSearch {
-  ContactSearchKind kind;
-  std::string_view name;
-};
-
-constexpr std::array<NamedSearch, 5> kSearchNames{{
-    {ContactSearchKind::standard, "standard"},
-    {ContactSearchKind::standard_brute_force, "standard_brute_force"},
-    {ContactSearchKind::modified, "modified"},
-    {ContactSearchKind::modified_brute_force, "modified_brute_force"},
-    {ContactSearchKind::cached, "cached"},
-}};
-
-}  // namespace
-
 std::string_view contact_search_name(ContactSearchKind kind) {
-  for (const NamedSearch& s : kSearchNames) {
-    if (s.kind == kind) {
-      return s.name;
-    }
-  }
-  return "unknown";
+  return choice_name<ContactSearchKind>(kContactSearchNames, kind);
 }
 
 ContactSearchKind parse_contact_search(std::string_view name, std::string_view where) {
-  std::string accepted;
-  for (const NamedSearch& s : kSearchNames) {
-    if (s.name == name) {
-      return s.kind;
-    }
-    accepted += fmt::format("{}{}", accepted.empty() ? "" : ", ", s.name);
+  if (const auto kind = find_choice<ContactSearchKind>(kContactSearchNames, name)) {
+    return *kind;
   }
-  throw InputError(
-      fmt::format("{}: unknown contact search '{}' (accepted: {})", where, name, accepted));
+  throw InputError(fmt::format("{}: unknown contact search '{}' (accepted: {})", where, name,
+                               choice_list<ContactSearchKind>(kContactSearchNames, "")));
 }
 
 std::unique_ptr<ContactSearch> make_contact_search(std::string_view name,

@@ -4,6 +4,7 @@
 #include <memory>
 #include <string_view>
 
+#include "contact/contact_choices.hpp"
 #include "core/types.hpp"
 #include "mesh/triangle_surface.hpp"
 
@@ -85,15 +86,6 @@ class ContactSearch {
   }
   /// The name this search is chosen by (case file key).
   virtual std::string_view name() const = 0;
-};
-
-/// The contact searches, by the names a case file gives them (make_contact_search).
-enum class ContactSearchKind {
-  standard,
-  standard_brute_force,
-  modified,
-  modified_brute_force,
-  cached,
 };
 
 /// The search's name ("standard", ..., "cached"): the one name table, used both ways.

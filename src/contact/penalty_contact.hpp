@@ -5,6 +5,7 @@
 #include <memory>
 #include <span>
 
+#include "contact/contact_choices.hpp"
 #include "contact/contact_search.hpp"
 #include "contact/contact_state.hpp"
 #include "contact/coulomb_friction.hpp"
@@ -14,17 +15,6 @@
 #include "mesh/triangle_surface.hpp"
 
 namespace sf {
-
-/// How the gap and the normal of a node in contact are measured.
-enum class ContactProjection {
-  /// The search's closest point: gap = signed distance - h, normal = ClosestPoint::normal (the
-  /// gradient of the signed distance, so the force is -grad of 1/2 k g^2).
-  orthogonal,
-  /// Wawrzyk & Kowalczyk's interpolated projection (InterpolatedProjector) onto the search's
-  /// triangle: gap = D - h with D measured along the interpolated normal n(T), force along n(T).
-  /// Not a gradient field in general.
-  interpolated,
-};
 
 /// One tool against all blank nodes: what is fixed for the run (ContactState holds what changes).
 struct ContactPair {

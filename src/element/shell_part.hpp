@@ -5,15 +5,10 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "element/shell_choices.hpp"
 #include "material/plane_stress.hpp"
 
 namespace sf {
-
-/// Through-thickness quadrature family.
-enum class ThroughThicknessRule {
-  gauss,    ///< Gauss-Legendre, 1..9 points, exact to degree 2n - 1, interior points only
-  lobatto,  ///< Gauss-Lobatto, 2..9 points, exact to degree 2n - 3, includes both surfaces
-};
 
 /// Through-thickness integration rule: n_points points, ordered from the bottom (zeta = -1 side)
 /// to the top (zeta = +1 side, the side the normal e3 points to).
@@ -81,23 +76,6 @@ ShellState make_shell_state(int n_elements, int n_points, double thickness);
 /// Sizes the material's own per-point arrays of `state` (zero): the back stresses of a law with
 /// kinematic hardening; clears them for other laws.
 void size_shell_state_for_material(ShellState& state, const Material& material);
-
-/// Hourglass control form (Flanagan & Belytschko 1981).
-enum class HourglassForm {
-  viscous,    ///< forces proportional to the hourglass velocity (LS-DYNA type 1 style)
-  stiffness,  ///< forces from the accumulated hourglass displacement, stored per element
-};
-
-/// The quadrilateral's formulation (docs/element-and-material.md, "Formulations").
-enum class ShellFormulation {
-  /// Belytschko-Lin-Tsay: one point, Flanagan-Belytschko hourglass control of the form and
-  /// coefficient ShellPart::hourglass_form / hourglass_coefficient.
-  belytschko_tsay,
-  /// One point with physical stabilisation from assumed strains: the quintessential-bending
-  /// membrane (Belytschko & Bindeman 1993), fully integrated curvature and the MITC4 transverse
-  /// shear (Dvorkin & Bathe 1984), all at the material's elastic moduli; no user coefficient.
-  assumed_strain,
-};
 
 /// How the assumed strain's membrane and bending stabilisation unloads in an element that yields
 /// during the step (docs/element-and-material.md, section 3c).

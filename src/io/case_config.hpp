@@ -8,7 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "contact/contact_choices.hpp"
+#include "core/choice.hpp"
 #include "core/expression.hpp"
+#include "element/shell_choices.hpp"
 #include "io/geo_parameter.hpp"
 
 namespace sf {
@@ -50,6 +53,16 @@ struct HardeningConfig {
   /// (resolved against the case file's folder); read by build_model (read_hardening_csv).
   std::filesystem::path table_file;
 };
+
+inline constexpr std::array<Choice<HardeningConfig::Law>, 7> kHardeningLawNames{{
+    {HardeningConfig::Law::swift, "swift", "Swift"},
+    {HardeningConfig::Law::linear, "linear", ""},
+    {HardeningConfig::Law::voce, "voce", "Voce"},
+    {HardeningConfig::Law::ludwik, "ludwik", "Ludwik"},
+    {HardeningConfig::Law::tabulated, "tabulated", "a table, below"},
+    {HardeningConfig::Law::hockett_sherby, "hockett_sherby", "Hockett-Sherby"},
+    {HardeningConfig::Law::swift_voce, "swift_voce", "a weighted sum of Swift and Voce"},
+}};
 
 /// Nonlinear kinematic hardening (Armstrong-Frederick back stresses, Chaboche's sum): one C and
 /// one gamma per back stress, 1 to 4 of them; empty = isotropic hardening only.
@@ -96,6 +109,14 @@ struct MaterialConfig {
   std::vector<std::array<double, 2>> forming_limit_curve;
 };
 
+inline constexpr std::array<Choice<MaterialConfig::Type>, 5> kMaterialTypeNames{{
+    {MaterialConfig::Type::von_mises, "von_mises", "isotropic elastic-plastic"},
+    {MaterialConfig::Type::elastic, "elastic", ""},
+    {MaterialConfig::Type::hill48, "hill48", "Hill 1948 orthotropic elastic-plastic"},
+    {MaterialConfig::Type::yld2000, "yld2000", "Barlat et al. 2003 Yld2000-2d"},
+    {MaterialConfig::Type::yld89, "yld89", "Barlat & Lian 1989"},
+}};
+
 /// A mesh source: a .geo file meshed by gmsh, a ready .msh file, a CAD file (STEP, IGES, BREP)
 /// meshed by gmsh, or an STL file's triangles (io/mesh_import.hpp).
 struct MeshSourceConfig {
@@ -113,23 +134,31 @@ struct MeshSourceConfig {
   std::vector<int> surfaces{};  ///< CAD and STL: the surface tags of the part; empty = all
 };
 
+/// How a blank's .geo or CAD file is meshed.
+enum class BlankMeshing {
+  quad,       ///< every surface recombined into quadrilaterals wherever gmsh can make them
+  as_meshed,  ///< the .geo's own Recombine commands decide (triangles where it has none)
+};
+
+inline constexpr std::array<Choice<BlankMeshing>, 2> kBlankMeshingNames{{
+    {BlankMeshing::quad, "quad", "every surface recombined (quadrilaterals wherever gmsh can)"},
+    {BlankMeshing::as_meshed, "as_meshed",
+     "the file's own `Recombine` commands (triangles where it has none)"},
+}};
+
 struct BlankConfig {
-  enum class IntegrationRule { gauss, lobatto };
-  enum class HourglassForm { viscous, stiffness };
-  enum class Formulation { belytschko_tsay, assumed_strain };
   MeshSourceConfig mesh{.file = {}, .group = "blank"};  ///< group defaults to "blank"
-  /// "quad": a .geo is meshed with every surface recombined into quads (Belytschko-Lin-Tsay);
-  /// "as_meshed": the .geo's own Recombine commands decide. Triangles left in the mesh are C0
-  /// shell triangles either way; a .msh is read as it is.
-  std::string element = "quad";
+  /// How a .geo or CAD blank is meshed. Triangles left in the mesh are C0 shell triangles either
+  /// way; a .msh (or another code's mesh) is read as it is.
+  BlankMeshing element = BlankMeshing::quad;
   double thickness = 0.0;      ///< mm, initial
   int integration_points = 5;  ///< through the thickness: gauss 1..9, lobatto 2..9
-  IntegrationRule integration_rule = IntegrationRule::gauss;  ///< through-thickness rule
-  std::string material;                                       ///< name of a [materials.NAME] table
+  ThroughThicknessRule integration_rule = ThroughThicknessRule::gauss;
+  std::string material;  ///< name of a [materials.NAME] table
   /// The quadrilaterals' formulation: "assumed_strain" (the default: one point, directors, MITC4
   /// transverse shear, physical stabilisation: no hourglass keys) or "belytschko_tsay" (one point,
   /// Flanagan-Belytschko hourglass control, the two keys below). docs/element-and-material.md
-  Formulation formulation = Formulation::assumed_strain;
+  ShellFormulation formulation = ShellFormulation::assumed_strain;
   /// -, hourglass coefficient (Flanagan-Belytschko), (0, 0.5]; belytschko_tsay only
   double hourglass_coefficient = 0.1;
   HourglassForm hourglass_form = HourglassForm::viscous;  ///< belytschko_tsay only
@@ -163,15 +192,12 @@ struct ToolConfig {
 };
 
 struct ContactConfig {
-  enum class Projection { interpolated, orthogonal };
   std::string tool;  ///< name of a [[tools]] entry
-  /// "standard" (closest tool node, then its triangles), "modified" (closest triangle; exact),
-  /// "cached" (the modified answer from a per-node candidate cache), or for cost studies
-  /// "standard_brute_force" / "modified_brute_force" (docs/contact.md)
-  std::string search = "modified";
+  /// The search (contact/contact_choices.hpp; docs/contact.md).
+  ContactSearchKind search = ContactSearchKind::modified;
   /// After the search: project along the interpolated averaged nodal normal (the paper's
   /// "interpolated projection") or keep the orthogonal projection.
-  Projection projection = Projection::interpolated;
+  ContactProjection projection = ContactProjection::interpolated;
   double penalty_scale = 0.1;      ///< -, scales the blank's bulk stiffness per node (see docs)
   double penalty_stiffness = 0.0;  ///< N/mm per blank node, given; 0 = from penalty_scale
   double friction_static = 0.0;    ///< -, Coulomb coefficient at rest

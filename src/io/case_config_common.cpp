@@ -61,4 +61,27 @@ void read_vector(const TomlSection& s, std::string_view key, std::array<double, 
   }
 }
 
+std::filesystem::path read_existing_file(
+    const TomlSection& s, std::string_view key,
+    const std::function<bool(const std::filesystem::path&)>& accepts, std::string_view accepted) {
+  namespace fs = std::filesystem;
+  std::string text;
+  s.read_string(key, text, Presence::required);
+  const toml::node& node = *s.find(key);
+  const fs::path given(text);
+  if (!accepts(given)) {
+    s.fail_value(key, accepted);
+  }
+  const fs::path folder = fs::path(s.file()).parent_path();
+  const fs::path file = (given.is_absolute() ? given : folder / given).lexically_normal();
+  std::error_code error;
+  if (!fs::exists(file, error)) {
+    s.fail_at(node, s.key_path(key), fmt::format("file not found: {}", file.string()));
+  }
+  if (!fs::is_regular_file(file, error)) {
+    s.fail_at(node, s.key_path(key), fmt::format("not a regular file: {}", file.string()));
+  }
+  return file;
+}
+
 }  // namespace sf

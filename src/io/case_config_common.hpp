@@ -1,6 +1,8 @@
 #pragma once
 // Readers shared by the case-file sections (case_config*.cpp): not a public interface.
 #include <array>
+#include <filesystem>
+#include <functional>
 #include <string_view>
 
 #include "io/case_config.hpp"
@@ -15,5 +17,11 @@ void read_curve(const TomlSection& s, std::string_view key, CurveConfig& curve);
 /// Reads `key` as an array of 3 finite numbers (any values, unlike read_direction); absent leaves
 /// `value` as it is.
 void read_vector(const TomlSection& s, std::string_view key, std::array<double, 3>& value);
+
+/// Reads `key` as a path (relative to the case file's folder) to a file that must exist and whose
+/// name `accepts` (`accepted` says what for the message, e.g. "a .csv file"); returns it absolute.
+std::filesystem::path read_existing_file(
+    const TomlSection& s, std::string_view key,
+    const std::function<bool(const std::filesystem::path&)>& accepts, std::string_view accepted);
 
 }  // namespace sf

@@ -5,6 +5,7 @@
 #include <array>
 #include <string_view>
 
+#include "io/case_fields.hpp"
 #include "io/result_name.hpp"
 
 namespace sf {
@@ -31,19 +32,24 @@ bool usable_in_column_names(std::string_view name) {
   return is_plain_name(name) && name.front() != '-';
 }
 
-void read_quantities(const TomlSection& s, bool is_static, HistoryGroupConfig& h) {
-  const toml::node* node = s.find("quantities");
-  if (!node) {
-    h.velocity = !is_static;
-    return;
-  }
+std::string accepted_quantities() {
   std::string accepted;
   for (const auto name : kQuantities) {
     accepted += fmt::format("{}{}", accepted.empty() ? "" : ", ", quote_toml_string(name));
   }
+  return accepted;
+}
+
+// `quantities`: a non-empty list of distinct quantity names (a static analysis's refusal of
+// "velocity" is read_history_groups', which knows the analysis).
+void read_quantities(const TomlSection& s, HistoryGroupConfig& h) {
+  const toml::node* node = s.find("quantities");
+  if (!node) {
+    return;
+  }
   const toml::array* array = node->as_array();
   if (!array || array->empty()) {
-    s.fail_value("quantities", fmt::format("a non-empty array of {}", accepted));
+    s.fail_value("quantities", fmt::format("a non-empty array of {}", accepted_quantities()));
   }
   h.displacement = h.velocity = h.rotation = h.reaction = false;
   for (std::size_t i = 0; i < array->size(); ++i) {
@@ -55,32 +61,62 @@ void read_quantities(const TomlSection& s, bool is_static, HistoryGroupConfig& h
       found = text->get() == kQuantities[q] ? q : found;
     }
     if (found == kQuantities.size()) {
-      s.fail_at(item, path,
-                fmt::format("expected one of {}, got {}", accepted, describe_value(item)));
+      s.fail_at(
+          item, path,
+          fmt::format("expected one of {}, got {}", accepted_quantities(), describe_value(item)));
     }
     bool& flag = quantity_flag(h, found);
     if (flag) {
       s.fail_at(item, path, fmt::format("{} is listed twice", quote_toml_string(text->get())));
     }
-    if (found == 1 && is_static) {
-      s.fail_at(item, path,
-                "a static analysis has no velocities (analysis.type = \"static\"); expected "
-                "\"displacement\", \"rotation\" or \"reaction\"");
-    }
     flag = true;
   }
 }
 
+void write_quantities(TomlWriter& w, const HistoryGroupConfig& h) {
+  std::string quantities;
+  for (std::size_t q = 0; q < kQuantities.size(); ++q) {
+    if (const std::array on{h.displacement, h.velocity, h.rotation, h.reaction}; on[q]) {
+      quantities += fmt::format("{}\"{}\"", quantities.empty() ? "" : ", ", kQuantities[q]);
+    }
+  }
+  w.raw("quantities", "[" + quantities + "]");
+}
+
+FieldTable<HistoryGroupConfig> make_history_group_fields() {
+  using H = HistoryGroupConfig;
+  FieldTable<H> t;
+  t.push_back(string_field<H>("group", &H::group,
+                              "physical group of blank nodes (points, curves or surfaces); used "
+                              "once among the `[[history]]` tables; letters, digits, `_`, and "
+                              "`-` or `.` after the first character (it names the columns)")
+                  .required());
+  t.push_back(custom_field<H>(
+      {"quantities",
+       "array of strings",
+       "all (a static analysis: all but `\"velocity\"`)",
+       {},
+       "any of `\"displacement\"` (mm), `\"velocity\"` (mm/s; explicit runs only), "
+       "`\"rotation\"` (rad), `\"reaction\"` (N and N mm), each once"},
+      [](const TomlSection& s, H& h, Presence) { read_quantities(s, h); }, write_quantities));
+  return t;
+}
+
 }  // namespace
+
+const FieldTable<HistoryGroupConfig>& history_group_fields() {
+  static const FieldTable<HistoryGroupConfig> table = make_history_group_fields();
+  return table;
+}
 
 void read_history_groups(const TomlSection& top, CaseConfig& config) {
   const bool is_static = config.analysis.type == AnalysisConfig::Type::static_equilibrium;
   const std::vector<TomlSection> sections = top.table_array("history");
   for (std::size_t i = 0; i < sections.size(); ++i) {
     const TomlSection& s = sections[i];
-    s.check_keys({"group", "quantities"});
     HistoryGroupConfig h;
-    s.read_string("group", h.group, Presence::required);
+    h.velocity = !is_static;  // the default: every quantity the analysis has
+    read_table(s, history_group_fields(), h);
     if (!usable_in_column_names(h.group)) {
       s.fail_value("group",
                    "a group name that can name history columns (letters, digits, '_', and '-' "
@@ -93,7 +129,16 @@ void read_history_groups(const TomlSection& top, CaseConfig& config) {
                               quote_toml_string(h.group), j));
       }
     }
-    read_quantities(s, is_static, h);
+    if (is_static && s.has("quantities") && h.velocity) {
+      const toml::array& array = *s.find("quantities")->as_array();
+      for (std::size_t k = 0; k < array.size(); ++k) {
+        if (array.get(k)->value<std::string>() == "velocity") {
+          s.fail_at(*array.get(k), fmt::format("{}[{}]", s.key_path("quantities"), k),
+                    "a static analysis has no velocities (analysis.type = \"static\"); "
+                    "expected \"displacement\", \"rotation\" or \"reaction\"");
+        }
+      }
+    }
     config.history_groups.push_back(std::move(h));
   }
 }

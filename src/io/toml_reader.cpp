@@ -178,6 +178,10 @@ std::string TomlSection::key_path(std::string_view key) const {
 }
 
 void TomlSection::check_keys(std::initializer_list<std::string_view> accepted) const {
+  check_keys(std::span<const std::string_view>(accepted.begin(), accepted.size()));
+}
+
+void TomlSection::check_keys(std::span<const std::string_view> accepted) const {
   for (const auto& [key, node] : *table_) {
     bool known = false;
     for (const auto name : accepted) {

@@ -8,10 +8,13 @@
 #include <initializer_list>
 #include <limits>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
+
+#include "core/choice.hpp"
 
 namespace sf {
 
@@ -70,6 +73,7 @@ class TomlSection {
 
   /// Every key of this table must be one of `accepted`.
   void check_keys(std::initializer_list<std::string_view> accepted) const;
+  void check_keys(std::span<const std::string_view> accepted) const;
 
   // Scalar readers: an absent optional key leaves `value` as it is (the struct's default). Each
   // returns whether the key was present.
@@ -89,6 +93,10 @@ class TomlSection {
   bool read_choice(std::string_view key, T& value,
                    std::initializer_list<std::pair<std::string_view, T>> choices,
                    Presence presence = Presence::optional) const;
+  /// A string that must be the name of one of `table`'s choices; stores its value.
+  template <typename E>
+  bool read_choice_in(std::string_view key, E& value, std::span<const Choice<E>> table,
+                      Presence presence = Presence::optional) const;
   /// An array of min_count..max_count numbers, each in `range`.
   bool read_numbers(std::string_view key, std::vector<double>& values, const NumberRange& range,
                     std::size_t min_count, std::size_t max_count,
@@ -148,6 +156,25 @@ bool TomlSection::read_choice(std::string_view key, T& value,
     }
   }
   fail_choice(key, accepted);
+}
+
+template <typename E>
+bool TomlSection::read_choice_in(std::string_view key, E& value, std::span<const Choice<E>> table,
+                                 Presence presence) const {
+  const toml::node* node = find(key);
+  if (!node) {
+    if (presence == Presence::required) {
+      fail_missing(key, "one of " + choice_list(table));
+    }
+    return false;
+  }
+  if (const auto* text = node->as_string()) {
+    if (const std::optional<E> choice = find_choice(table, text->get())) {
+      value = *choice;
+      return true;
+    }
+  }
+  fail_choice(key, choice_list(table));
 }
 
 }  // namespace sf

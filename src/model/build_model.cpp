@@ -143,7 +143,8 @@ void read_blank(const CaseConfig& config, Model& model) {
   // "quad": a .geo is meshed with every surface recombined (quads wherever gmsh can make them);
   // "as_meshed": the .geo's own Recombine commands decide. Either way the blank takes quads,
   // triangles or both (a .msh is read as it is).
-  const GmshModel gmsh_model = load_mesh_source(config, bc.mesh, "blank", bc.element == "quad");
+  const GmshModel gmsh_model =
+      load_mesh_source(config, bc.mesh, "blank", bc.element == BlankMeshing::quad);
   Blank& blank = model.blank;
   blank.mesh = extract_part_mesh(gmsh_model, bc.mesh.group, "blank");
   if (blank.mesh.quads.cols() + blank.mesh.triangles.cols() == 0) {
@@ -231,19 +232,12 @@ void read_blank(const CaseConfig& config, Model& model) {
   blank.part.quads = blank.mesh.quads;
   blank.part.triangles = blank.mesh.triangles;
   blank.node_corners = build_node_corners(blank.part, static_cast<int>(blank.mesh.nodes.cols()));
-  blank.part.section = make_section(bc.integration_points,
-                                    bc.integration_rule == BlankConfig::IntegrationRule::lobatto
-                                        ? ThroughThicknessRule::lobatto
-                                        : ThroughThicknessRule::gauss);
+  blank.part.section = make_section(bc.integration_points, bc.integration_rule);
   blank.part.material = make_material(config, material);
   blank.part.density = material.density;
   blank.part.hourglass_coefficient = bc.hourglass_coefficient;
-  blank.part.hourglass_form = bc.hourglass_form == BlankConfig::HourglassForm::stiffness
-                                  ? HourglassForm::stiffness
-                                  : HourglassForm::viscous;
-  blank.part.formulation = bc.formulation == BlankConfig::Formulation::assumed_strain
-                               ? ShellFormulation::assumed_strain
-                               : ShellFormulation::belytschko_tsay;
+  blank.part.hourglass_form = bc.hourglass_form;
+  blank.part.formulation = bc.formulation;
   const bool material_axes =
       std::visit([](const auto& law) { return kUsesMaterialAxes<std::decay_t<decltype(law)>>; },
                  blank.part.material);
@@ -378,8 +372,7 @@ void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& s
   const MaterialConfig& material = config.blank_material();
   for (const ContactConfig& cc : config.contacts) {
     ContactInterface contact;
-    contact.search = parse_contact_search(
-        cc.search, fmt::format("{}: contact with tool '{}'", config.file.string(), cc.tool));
+    contact.search = cc.search;
     contact.audit = cc.audit;
     const auto found = std::find_if(model.tools.begin(), model.tools.end(),
                                     [&](const Tool& t) { return t.name == cc.tool; });
@@ -418,9 +411,7 @@ void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& s
           model.blank.mass, material.young, material.poisson, cc.penalty_scale,
           model.time.time_step, contact_cap_factor);
     }
-    contact.pair.projection = cc.projection == ContactConfig::Projection::interpolated
-                                  ? ContactProjection::interpolated
-                                  : ContactProjection::orthogonal;
+    contact.pair.projection = cc.projection;
     if (contact.pair.projection == ContactProjection::interpolated) {
       contact.pair.projector = std::make_unique<InterpolatedProjector>(tool.surface);
     }

@@ -288,8 +288,9 @@ void print_contacts(const CaseConfig& config, const Model& model, const UnitSyst
     log_info(
         "Contact     blank nodes vs '{}': search '{}', {} projection, penalty {} {:.4g} to "
         "{:.4g} {}, {}\n",
-        model.tools[static_cast<std::size_t>(c.tool)].name, cc.search,
-        cc.projection == ContactConfig::Projection::interpolated ? "interpolated" : "orthogonal",
+        model.tools[static_cast<std::size_t>(c.tool)].name,
+        choice_name<ContactSearchKind>(kContactSearchNames, cc.search),
+        choice_name<ContactProjection>(kContactProjectionNames, cc.projection),
         cc.penalty_stiffness > 0.0 ? std::string("stiffness")
                                    : fmt::format("scale {}, stiffness", cc.penalty_scale),
         c.pair.stiffness.minCoeff(), c.pair.stiffness.maxCoeff(), units.stiffness(),

@@ -26,14 +26,14 @@ TEST_F(ReadCase, MinimalCaseGetsEveryDocumentedDefault) {
   EXPECT_EQ(c.blank.mesh.file, dir_ / "blank.geo");
   EXPECT_EQ(c.blank.mesh.group, "blank");
   EXPECT_EQ(c.blank.mesh.element_size, 0.0);
-  EXPECT_EQ(c.blank.element, "quad");
+  EXPECT_EQ(c.blank.element, sf::BlankMeshing::quad);
   EXPECT_EQ(c.blank.thickness, 0.81);
   EXPECT_EQ(c.blank.integration_points, 5);
-  EXPECT_EQ(c.blank.integration_rule, sf::BlankConfig::IntegrationRule::gauss);
+  EXPECT_EQ(c.blank.integration_rule, sf::ThroughThicknessRule::gauss);
   EXPECT_EQ(c.blank.material, "steel");
-  EXPECT_EQ(c.blank.formulation, sf::BlankConfig::Formulation::assumed_strain);
+  EXPECT_EQ(c.blank.formulation, sf::ShellFormulation::assumed_strain);
   EXPECT_EQ(c.blank.hourglass_coefficient, 0.1);
-  EXPECT_EQ(c.blank.hourglass_form, sf::BlankConfig::HourglassForm::viscous);
+  EXPECT_EQ(c.blank.hourglass_form, sf::HourglassForm::viscous);
   EXPECT_EQ(c.blank.rolling_direction, (std::array<double, 3>{1.0, 0.0, 0.0}));
 
   ASSERT_EQ(c.materials.size(), 1u);
@@ -83,10 +83,10 @@ TEST_F(ReadCase, FullCaseReadsEveryValue) {
   EXPECT_EQ(c.blank.mesh.element_size, 2.5);
   EXPECT_EQ(c.blank.thickness, 0.81);
   EXPECT_EQ(c.blank.integration_points, 7);
-  EXPECT_EQ(c.blank.integration_rule, sf::BlankConfig::IntegrationRule::lobatto);
+  EXPECT_EQ(c.blank.integration_rule, sf::ThroughThicknessRule::lobatto);
   EXPECT_EQ(c.blank.material, "aluminium");
   EXPECT_EQ(c.blank.hourglass_coefficient, 0.05);
-  EXPECT_EQ(c.blank.hourglass_form, sf::BlankConfig::HourglassForm::stiffness);
+  EXPECT_EQ(c.blank.hourglass_form, sf::HourglassForm::stiffness);
   // [1, 1, 0] normalised: 1/sqrt(2) to round-off (1e-15).
   EXPECT_NEAR(c.blank.rolling_direction[0], std::sqrt(0.5), 1e-15);
   EXPECT_NEAR(c.blank.rolling_direction[1], std::sqrt(0.5), 1e-15);
@@ -166,17 +166,17 @@ TEST_F(ReadCase, FullCaseReadsEveryValue) {
 
   ASSERT_EQ(c.contacts.size(), 2u);
   EXPECT_EQ(c.contacts[0].tool, "punch");
-  EXPECT_EQ(c.contacts[0].search, "modified");
+  EXPECT_EQ(c.contacts[0].search, sf::ContactSearchKind::modified);
   EXPECT_EQ(c.contacts[0].penalty_scale, 0.2);
-  EXPECT_EQ(c.contacts[0].projection, sf::ContactConfig::Projection::interpolated);
+  EXPECT_EQ(c.contacts[0].projection, sf::ContactProjection::interpolated);
   EXPECT_EQ(c.contacts[0].friction_static, 0.125);  // `friction` sets both coefficients
   EXPECT_EQ(c.contacts[0].friction_dynamic, 0.125);
   EXPECT_EQ(c.contacts[0].friction_decay, 0.0);
   EXPECT_EQ(c.contacts[0].penalty_stiffness, 0.0);
   EXPECT_FALSE(c.contacts[0].audit);
   EXPECT_EQ(c.contacts[1].tool, "die");
-  EXPECT_EQ(c.contacts[1].search, "standard");
-  EXPECT_EQ(c.contacts[1].projection, sf::ContactConfig::Projection::orthogonal);
+  EXPECT_EQ(c.contacts[1].search, sf::ContactSearchKind::standard);
+  EXPECT_EQ(c.contacts[1].projection, sf::ContactProjection::orthogonal);
   EXPECT_EQ(c.contacts[1].penalty_scale, 0.1);
   EXPECT_EQ(c.contacts[1].penalty_stiffness, 500.0);
   EXPECT_EQ(c.contacts[1].friction_static, 0.2);
@@ -569,12 +569,12 @@ TEST_F(ReadCase, ResolvedCaseReadsBackToTheSameCase) {
     EXPECT_EQ(resolved.rfind("# ", 0), 0u);  // starts with the comment header...
     expect_contains(resolved.substr(0, resolved.find('\n')), original.units);  // ...with units
     expect_contains(resolved,
-                    fmt::format("\nintegration_points = {} ", original.blank.integration_points));
+                    fmt::format("\nintegration_points = {}", original.blank.integration_points));
     expect_contains(resolved,
                     fmt::format("\noutput_frames = {}\n", original.control.output_frames));
     expect_contains(resolved, "\nintegration_rule = \"");  // the new keys are written too
     expect_contains(resolved, "\nformulation = \"");
-    if (original.blank.formulation == sf::BlankConfig::Formulation::belytschko_tsay) {
+    if (original.blank.formulation == sf::ShellFormulation::belytschko_tsay) {
       expect_contains(resolved, "\nhourglass_form = \"");  // its keys only with its element
     } else {
       EXPECT_EQ(resolved.find("hourglass"), std::string::npos);

@@ -154,9 +154,9 @@ TEST_F(ReadCase, SectionHourglassAndRollingDirectionValues) {
                                     "hourglass_form = \"stiffness\"\n"
                                     "rolling_direction = [0, 2, 0]\n");
   const sf::BlankConfig b = sf::read_case(write_case(text)).blank;
-  EXPECT_EQ(b.integration_rule, sf::BlankConfig::IntegrationRule::lobatto);
+  EXPECT_EQ(b.integration_rule, sf::ThroughThicknessRule::lobatto);
   EXPECT_EQ(b.integration_points, 2);
-  EXPECT_EQ(b.hourglass_form, sf::BlankConfig::HourglassForm::stiffness);
+  EXPECT_EQ(b.hourglass_form, sf::HourglassForm::stiffness);
   EXPECT_EQ(b.hourglass_coefficient, 0.1);                                 // default kept
   EXPECT_EQ(b.rolling_direction, (std::array<double, 3>{0.0, 1.0, 0.0}));  // normalised, exact
 }

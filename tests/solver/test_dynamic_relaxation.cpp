@@ -280,7 +280,7 @@ TEST(DynamicRelaxation, ReleasedLoadsAreTheFormedStatesStaticInternalForces) {
   // strip's twist under the two-node press: with the undamped assumed-strain element the strip
   // still rings at the end of the press (contact 17.4 N, internal 12.8 N at the tip), and the
   // inertia would dominate the comparison below.
-  formed.blank.formulation = sf::BlankConfig::Formulation::belytschko_tsay;
+  formed.blank.formulation = sf::ShellFormulation::belytschko_tsay;
   p.model = sf::build_model(formed);
   const fs::path out = fs::path(SF_BINARY_DIR) / "test_output" / name / "results";
   std::unique_ptr<sf::FrameOutput> output;

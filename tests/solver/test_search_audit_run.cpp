@@ -97,7 +97,7 @@ TEST(SearchAuditRun, ShortDemoWritesFieldsHistoryAndSummary) {
   config.control.stroke = 0.5;
   config.control.output_frames = 2;
   for (ContactConfig& c : config.contacts) {
-    c.search = "standard";
+    c.search = ContactSearchKind::standard;
     c.audit = true;
   }
   Model model = build_model(config);

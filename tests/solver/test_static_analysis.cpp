@@ -329,7 +329,7 @@ namespace {
 
 // The summary of the bundled thick twisted beam (in-plane tip load, 4 x 24 warped quads; linear
 // static) with the given element.
-sf::RunSummary twisted_beam_summary(sf::BlankConfig::Formulation formulation) {
+sf::RunSummary twisted_beam_summary(sf::ShellFormulation formulation) {
   sf::CaseConfig config = sf::read_case(fs::path(SF_SOURCE_DIR) / "cases" /
                                         "shell_twisted_beam_thick_in_plane" / "case.toml");
   config.blank.formulation = formulation;
@@ -348,10 +348,10 @@ TEST(StaticAnalysis, EnergyBalanceClosesOnWarpedQuadsWithEveryWorkCounted) {
   // beam both are large: before they were counted the balance was -0.70 with Belytschko-Tsay. The
   // linear analysis's trapezoidal rule is exact for its linear forces; the bound 1e-6 is the
   // solver's residual (measured 2.5e-8 and 2.0e-8).
-  const sf::RunSummary bt = twisted_beam_summary(sf::BlankConfig::Formulation::belytschko_tsay);
+  const sf::RunSummary bt = twisted_beam_summary(sf::ShellFormulation::belytschko_tsay);
   EXPECT_GT(bt.energies.hourglass, 0.01 * bt.energies.external_work);
   EXPECT_LT(std::abs(bt.energies.balance_error()), 1e-6);
-  const sf::RunSummary as = twisted_beam_summary(sf::BlankConfig::Formulation::assumed_strain);
+  const sf::RunSummary as = twisted_beam_summary(sf::ShellFormulation::assumed_strain);
   // Its physical stabilisation stores energy (>= 0), reported as hourglass energy as in explicit
   // runs: 0.2 % of the work here.
   EXPECT_GE(as.energies.hourglass, 0.0);
