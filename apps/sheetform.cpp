@@ -53,6 +53,7 @@
 #include "solver/run_estimate.hpp"
 #include "solver/static_driver.hpp"
 #include "solver/stop_request.hpp"
+#include "solver/tool_mesh_report.hpp"
 
 namespace fs = std::filesystem;
 
@@ -268,6 +269,7 @@ int run(const Arguments& args, const sf::MpiSession& mpi) {
   options.domain = make_domain(mpi, model, loaded.config.file.string());
   sf::print_model(loaded.config, model);
   sf::print_run_estimate(loaded.estimate, model);
+  sf::report_tool_meshes(loaded.config, model);
   // 3. Prepare the results folder and keep the resolved case beside the results.
   const fs::path out = output_directory(args, loaded.config);
   if (!args.restart.empty() && model.analysis.is_static()) {
@@ -299,6 +301,7 @@ int check(const Arguments& args) {
   const LoadedCase loaded = load(args);
   sf::print_model(loaded.config, loaded.model);
   sf::print_run_estimate(loaded.estimate, loaded.model);
+  sf::report_tool_meshes(loaded.config, loaded.model);
   sf::log_info("Case is valid.\n");
   return sf::exit_ok;
 }

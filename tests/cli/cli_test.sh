@@ -217,6 +217,17 @@ expect "initial penetration refused" 2 "tool 'punch' penetrates the blank at the
   "$sheetform" check "$demo" --set blank.thickness=2 --set limits.max_initial_penetration=0.2
 expect "memory limit" 2 "the run needs about .* GB of memory, more than limits.max_memory_gb = 0.01" -- \
   "$sheetform" check "$demo" --set limits.max_memory_gb=0.01
+# Tool meshes are diagnosed at check and at the start of a run (docs/tool-diagnosis.md): the demo's
+# tools are clean; a lid whose two faces are 0.05 mm apart has its gap named, and its clearance.
+expect "clean tool said" 0 "Tool mesh +'die': [0-9]+ triangles: no gaps, overlaps, near-zero-area triangles or folds" -- \
+  "$sheetform" check "$demo"
+lid="$src/tests/data/cracked_tool/case.toml"
+expect "gap between faces named" 0 "warning: tool 'lid': 8 free edges run beside another free edge .*widest gap 0.05 mm at \(0.5, [0-9.]+, 0.6\), narrowest 0.05 mm" -- \
+  "$sheetform" check "$lid"
+expect "clearance said" 0 "Clearance +'lid' clears the blank by 0.5 mm at \([0-9.-]+, [0-9.-]+, 0.6\) on the tool" -- \
+  "$sheetform" check "$lid"
+expect "run logs the tool diagnosis" 0 "warning: tool 'lid': 8 free edges run beside" -- \
+  "$sheetform" run "$lid" -o "$work/lid"
 
 # A full disk (issue 18: "internal error", then a segmentation fault, exit 139): exit 6, said,
 # and what was written before stays readable. A 6 MB tmpfs holds a few frames; where
