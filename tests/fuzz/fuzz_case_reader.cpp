@@ -1,8 +1,8 @@
 // Fuzz target: the case reader (case.toml -> CaseConfig: src/io/case_config*.cpp, toml_reader,
 // case_overrides, unit_system). Each input is written as case.toml into a work folder that also
 // holds an empty file under every mesh and table name the bundled cases use (blank.geo, die.msh,
-// ...), so that inputs mutated from a real case get past the file checks into the rest of the
-// reader (read_case checks that the files exist; it does not read them).
+// punch.step, ...), so that inputs mutated from a real case get past the file checks into the
+// rest of the reader (read_case checks that the files exist; it does not read them).
 // Checks: read_case returns or throws sf::InputError, nothing else; a case it accepts formats
 // (format_resolved_case) to a resolved case that reads back, and formats again to the same text
 // (but for the line naming the file it was read from).
@@ -33,7 +33,7 @@ std::string without_source_line(const std::string& text) {
   return out;
 }
 
-// Empty stand-ins for the files the bundled cases name (cases/*/: .geo, .msh, .csv).
+// Empty stand-ins for the files the bundled cases name (cases/*/: .geo, .msh, .step, .csv).
 void make_stand_in_files() {
   namespace fs = std::filesystem;
   std::error_code error;
@@ -43,7 +43,8 @@ void make_stand_in_files() {
     }
     for (const auto& entry : fs::directory_iterator(folder.path(), error)) {
       const auto ext = entry.path().extension();
-      if (entry.is_regular_file() && (ext == ".geo" || ext == ".msh" || ext == ".csv")) {
+      if (entry.is_regular_file() &&
+          (ext == ".geo" || ext == ".msh" || ext == ".step" || ext == ".csv")) {
         std::ofstream(sf::fuzz::work_folder() / entry.path().filename());
       }
     }
