@@ -75,44 +75,13 @@ struct Arguments {
   bool verbose = false;
 };
 
-// Command-line overrides of the case's end condition (used for short versions of long runs).
-void apply_overrides(const Arguments& args, sf::CaseConfig& config) {
-  if (args.stroke && args.end_time) {
-    throw sf::InputError("give --stroke or --end-time, not both");
-  }
-  auto check_positive = [](const char* option, double value, const char* unit) {
-    if (!(std::isfinite(value) && value > 0.0)) {
-      throw sf::InputError(
-          fmt::format("{} {}: expected a finite value > 0 ({})", option, value, unit));
-    }
-  };
-  if (args.stroke) {
-    check_positive("--stroke", *args.stroke, "mm of the moving tool's travel");
-    if (config.control.stroke_tool.empty()) {
-      throw sf::InputError(config.file.string() + ": --stroke needs a moving tool (none moves)");
-    }
-    config.control.stroke = *args.stroke;
-    config.control.end_time = 0.0;
-  }
-  if (args.end_time) {
-    check_positive("--end-time", *args.end_time, "s");
-    config.control.end_time = *args.end_time;
-    config.control.stroke = 0.0;
-  }
+// The command-line options that change the case, applied before it is read (read_case).
+sf::CaseOptions case_options(const Arguments& args) {
+  sf::CaseOptions options{.set = args.set, .stroke = args.stroke, .end_time = args.end_time};
   if (!args.search.empty()) {
-    if (config.contacts.empty()) {
-      throw sf::InputError(config.file.string() +
-                           ": --search needs a [[contact]] (the case has none)");
-    }
-    const sf::ContactSearchKind search =
-        *sf::find_choice<sf::ContactSearchKind>(sf::kContactSearchNames, args.search);
-    for (sf::ContactConfig& contact : config.contacts) {
-      contact.search = search;
-      if (search != sf::ContactSearchKind::cached) {
-        contact.search_margin = 0.0;  // a cached-search option only
-      }
-    }
+    options.search = sf::find_choice<sf::ContactSearchKind>(sf::kContactSearchNames, args.search);
   }
+  return options;
 }
 
 fs::path output_directory(const Arguments& args, const sf::CaseConfig& config) {
@@ -131,8 +100,7 @@ struct LoadedCase {
 
 LoadedCase load(const Arguments& args) {
   // 1. Read and validate the case file.
-  sf::CaseConfig config = sf::read_case(args.case_file, args.set);
-  apply_overrides(args, config);
+  sf::CaseConfig config = sf::read_case(args.case_file, case_options(args));
   // 2. Mesh every part and build the model.
   sf::Model model = sf::build_model(config);
   // 3. What it will cost, and what it asks for beyond the case's limits (refused here).

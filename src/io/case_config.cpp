@@ -274,11 +274,16 @@ const ToolConfig* CaseConfig::find_tool(const std::string& name) const {
 }
 
 CaseConfig read_case(const fs::path& case_file, const std::vector<std::string>& overrides) {
+  return read_case(case_file, CaseOptions{.set = overrides});
+}
+
+CaseConfig read_case(const fs::path& case_file, const CaseOptions& options) {
   CaseConfig config;
   config.file = fs::absolute(case_file).lexically_normal();
   const std::string file = config.file.string();
   toml::table root = parse_toml(read_text_file(config.file), file);
-  apply_case_overrides(root, overrides);
+  apply_case_overrides(root, options.set);
+  apply_run_options(root, options, file);
   const fs::path folder = config.file.parent_path();
 
   const TomlSection top(root, "", file);

@@ -440,12 +440,26 @@ struct CaseConfig {
   const ToolConfig* find_tool(const std::string& name) const;
 };
 
+/// The command-line options that change a case: `--set KEY=VALUE` overrides, then run's end
+/// condition and contact search. They are applied to the case file's keys before the case is
+/// read, so that they are checked like the file's own keys (a stroke without a moving tool, a
+/// search without a contact) and land in the resolved case.
+struct CaseOptions {
+  std::vector<std::string> set;             ///< "KEY=VALUE", in order (apply_case_overrides)
+  std::optional<double> stroke;             ///< mm: control.stroke; control.end_time removed
+  std::optional<double> end_time;           ///< s: control.end_time; control.stroke removed
+  std::optional<ContactSearchKind> search;  ///< every [[contact]]'s search (a search_margin is
+                                            ///< dropped unless the search is "cached")
+};
+
 /// Reads and validates a case file. Throws InputError naming the file, line and key for an unknown
 /// key, a wrong type, an out-of-range value, a missing file or a dangling name. `overrides`
 /// ("KEY=VALUE", e.g. "blank.parameters.n=32") replace or add keys before the case is read
 /// (apply_case_overrides); errors in their values name the override.
 CaseConfig read_case(const std::filesystem::path& case_file,
                      const std::vector<std::string>& overrides = {});
+/// The same with the command-line options of `run` as well.
+CaseConfig read_case(const std::filesystem::path& case_file, const CaseOptions& options);
 
 /// The fully resolved case (every default filled) as TOML text, written beside the results.
 std::string format_resolved_case(const CaseConfig& config);

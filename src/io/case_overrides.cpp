@@ -3,10 +3,12 @@
 #include <fmt/core.h>
 
 #include <charconv>
+#include <cmath>
 #include <memory>
 #include <string_view>
 
 #include "core/errors.hpp"
+#include "io/toml_reader.hpp"
 
 namespace sf {
 namespace {
@@ -103,7 +105,55 @@ toml::table& parent_table(toml::table& root, const std::vector<KeyPart>& parts,
   return *table;
 }
 
+/// Sets a run option's value as an override, its source the option (for messages).
+void set_option(toml::table& root, std::string_view option, std::string_view key,
+                std::string_view value) {
+  const std::string text = fmt::format("{}={}", key, value);
+  toml::table parsed =
+      toml::parse(fmt::format("value = {}", value),
+                  std::string_view(fmt::format("command line ({} {})", option, value)));
+  toml::table& parent = parent_table(root, split_key_path(key, text), text);
+  const std::string last(key.substr(key.rfind('.') + 1));
+  parsed.get("value")->visit([&](auto&& v) { parent.insert_or_assign(last, std::move(v)); });
+}
+
+void check_positive(std::string_view option, double value, std::string_view unit) {
+  if (!(std::isfinite(value) && value > 0.0)) {
+    throw InputError(fmt::format("{} {}: expected a finite value > 0 ({})", option, value, unit));
+  }
+}
+
 }  // namespace
+
+void apply_run_options(toml::table& root, const CaseOptions& options, const std::string& file) {
+  if (options.stroke && options.end_time) {
+    throw InputError("give --stroke or --end-time, not both");
+  }
+  if (options.stroke) {
+    check_positive("--stroke", *options.stroke, "mm of the moving tool's travel");
+    set_option(root, "--stroke", "control.stroke", format_toml_number(*options.stroke));
+    root["control"].as_table()->erase("end_time");
+  }
+  if (options.end_time) {
+    check_positive("--end-time", *options.end_time, "s");
+    set_option(root, "--end-time", "control.end_time", format_toml_number(*options.end_time));
+    root["control"].as_table()->erase("stroke");
+  }
+  if (options.search) {
+    toml::array* contacts = root["contact"].as_array();
+    if (!contacts || contacts->empty()) {
+      throw InputError(file + ": --search needs a [[contact]] (the case has none)");
+    }
+    const std::string_view name =
+        choice_name<ContactSearchKind>(kContactSearchNames, *options.search);
+    for (std::size_t i = 0; i < contacts->size(); ++i) {
+      set_option(root, "--search", fmt::format("contact[{}].search", i), quote_toml_string(name));
+      if (*options.search != ContactSearchKind::cached) {
+        contacts->get(i)->as_table()->erase("search_margin");  // a cached-search option only
+      }
+    }
+  }
+}
 
 void apply_case_overrides(toml::table& root, const std::vector<std::string>& overrides) {
   for (const std::string& text : overrides) {

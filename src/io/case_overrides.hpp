@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "io/case_config.hpp"
+
 namespace sf {
 
 /// Applies every override "KEY=VALUE", in order, to `root`. KEY is a dotted path of bare keys,
@@ -17,5 +19,11 @@ namespace sf {
 /// (--set ...)") instead of a line of the case file. Throws InputError naming the override for a
 /// malformed one.
 void apply_case_overrides(toml::table& root, const std::vector<std::string>& overrides);
+
+/// Applies run's --stroke, --end-time and --search (CaseOptions) to `root` as overrides of
+/// control.stroke/end_time and of every [[contact]]'s search. Throws InputError for both end
+/// conditions at once, a value that is not finite and > 0, or --search without a [[contact]]
+/// (`file` names the case).
+void apply_run_options(toml::table& root, const CaseOptions& options, const std::string& file);
 
 }  // namespace sf
