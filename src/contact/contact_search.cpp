@@ -2,7 +2,6 @@
 
 #include <fmt/core.h>
 
-#include <array>
 #include <string>
 
 #include "contact/cached_search.hpp"

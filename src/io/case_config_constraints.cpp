@@ -196,7 +196,7 @@ FieldTable<BoundaryConfig> make_boundary_fields() {
                       .shown_default("`\"fixed\"`, or `\"hold\"` when `hold` is given");
   type.read = [](const TomlSection& s, B& b, Presence) {
     b.type = s.has("hold") ? Type::hold : Type::fixed;
-    s.read_choice_in<Type>("type", b.type, kTypes);
+    s.read_choice<Type>("type", b.type, kTypes);
   };
   t.push_back(std::move(type));
   t.push_back(custom_field<B>(
@@ -257,7 +257,7 @@ FieldTable<BoundaryConfig> make_boundary_fields() {
             if (!s.has("axis")) {
               s.fail_missing("axis", R"(one of "x", "y", "z" (or a `normal` vector))");
             }
-            s.read_choice_in<int>("axis", b.axis, kAxisNames);
+            s.read_choice<int>("axis", b.axis, kAxisNames);
           },
           [](TomlWriter& w, const B& b) { w.string("axis", choice_name<int>(kAxisNames, b.axis)); })
           .when(plane_by_axis, "`\"symmetry\"` and `\"diaphragm\"` without `normal`",

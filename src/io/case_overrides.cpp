@@ -105,6 +105,13 @@ toml::table& parent_table(toml::table& root, const std::vector<KeyPart>& parts,
   return *table;
 }
 
+/// Moves `node` (a parsed value, keeping its source for messages) to the key `parts` names.
+void insert_value(toml::table& root, const std::vector<KeyPart>& parts, const std::string& text,
+                  toml::node& node) {
+  toml::table& parent = parent_table(root, parts, text);
+  node.visit([&](auto&& v) { parent.insert_or_assign(parts.back().key, std::move(v)); });
+}
+
 /// Sets a run option's value as an override, its source the option (for messages).
 void set_option(toml::table& root, std::string_view option, std::string_view key,
                 std::string_view value) {
@@ -112,9 +119,7 @@ void set_option(toml::table& root, std::string_view option, std::string_view key
   toml::table parsed =
       toml::parse(fmt::format("value = {}", value),
                   std::string_view(fmt::format("command line ({} {})", option, value)));
-  toml::table& parent = parent_table(root, split_key_path(key, text), text);
-  const std::string last(key.substr(key.rfind('.') + 1));
-  parsed.get("value")->visit([&](auto&& v) { parent.insert_or_assign(last, std::move(v)); });
+  insert_value(root, split_key_path(key, text), text, *parsed.get("value"));
 }
 
 void check_positive(std::string_view option, double value, std::string_view unit) {
@@ -179,9 +184,7 @@ void apply_case_overrides(toml::table& root, const std::vector<std::string>& ove
     if (!node || parsed.size() != 1) {
       throw InputError(fmt::format("--set {}: expected one TOML value after '='", text));
     }
-    toml::table& parent = parent_table(root, parts, text);
-    // Moved, not copied: a moved node keeps its source (the override) for messages.
-    node->visit([&](auto&& v) { parent.insert_or_assign(parts.back().key, std::move(v)); });
+    insert_value(root, parts, text, *node);
   }
 }
 

@@ -293,7 +293,7 @@ Field<S> choice_field(std::string key, E S::*m, std::span<const Choice<E>> table
            {},
            choices_text(table, doc)};
   f.read = [key = f.doc.key, m, table](const TomlSection& s, S& v, Presence p) {
-    s.read_choice_in(key, v.*m, table, p);
+    s.read_choice(key, v.*m, table, p);
   };
   f.write = [key = f.doc.key, m, table](TomlWriter& w, const S& v) {
     w.string(key, choice_name(table, v.*m));

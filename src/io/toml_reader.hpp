@@ -88,15 +88,10 @@ class TomlSection {
   /// A string that names results (io/result_name.hpp): plain letters, digits, '_', '-', '.'.
   bool read_name(std::string_view key, std::string& value,
                  Presence presence = Presence::optional) const;
-  /// A string that must be one of the names in `choices`; stores the matching value.
-  template <typename T>
-  bool read_choice(std::string_view key, T& value,
-                   std::initializer_list<std::pair<std::string_view, T>> choices,
-                   Presence presence = Presence::optional) const;
   /// A string that must be the name of one of `table`'s choices; stores its value.
   template <typename E>
-  bool read_choice_in(std::string_view key, E& value, std::span<const Choice<E>> table,
-                      Presence presence = Presence::optional) const;
+  bool read_choice(std::string_view key, E& value, std::span<const Choice<E>> table,
+                   Presence presence = Presence::optional) const;
   /// An array of min_count..max_count numbers, each in `range`.
   bool read_numbers(std::string_view key, std::vector<double>& values, const NumberRange& range,
                     std::size_t min_count, std::size_t max_count,
@@ -131,36 +126,9 @@ class TomlSection {
 /// command-line override) is named by that source instead.
 std::string format_location(const std::string& file, const toml::source_region& region);
 
-template <typename T>
-bool TomlSection::read_choice(std::string_view key, T& value,
-                              std::initializer_list<std::pair<std::string_view, T>> choices,
-                              Presence presence) const {
-  std::string accepted;
-  for (const auto& [name, unused] : choices) {
-    accepted += accepted.empty() ? "" : ", ";
-    accepted += quote_toml_string(name);
-  }
-  const toml::node* node = find(key);
-  if (!node) {
-    if (presence == Presence::required) {
-      fail_missing(key, "one of " + accepted);
-    }
-    return false;
-  }
-  if (const auto* text = node->as_string()) {
-    for (const auto& [name, choice] : choices) {
-      if (text->get() == name) {
-        value = choice;
-        return true;
-      }
-    }
-  }
-  fail_choice(key, accepted);
-}
-
 template <typename E>
-bool TomlSection::read_choice_in(std::string_view key, E& value, std::span<const Choice<E>> table,
-                                 Presence presence) const {
+bool TomlSection::read_choice(std::string_view key, E& value, std::span<const Choice<E>> table,
+                              Presence presence) const {
   const toml::node* node = find(key);
   if (!node) {
     if (presence == Presence::required) {
