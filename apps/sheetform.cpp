@@ -33,13 +33,13 @@
 #include <iostream>
 #include <optional>
 
+#include "casefile/case_config.hpp"
+#include "casefile/case_fields.hpp"
 #include "core/build_info.hpp"
 #include "core/errors.hpp"
 #include "core/log.hpp"
-#include "io/case_config.hpp"
-#include "io/case_fields.hpp"
-#include "io/geo_safety.hpp"
-#include "io/gmsh_reader.hpp"
+#include "meshing/geo_safety.hpp"
+#include "meshing/gmsh_reader.hpp"
 #include "model/build_model.hpp"
 #include "model/constraint_assembly.hpp"
 #include "parallel/mpi_domain.hpp"

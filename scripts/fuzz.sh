@@ -19,7 +19,7 @@
 # cases/ up to the target's max_len and .msh files gmsh makes from tests/data/*.geo, in MSH 4.1
 # and 2.2; every .geo in cases/ and tests/data. Plus every saved finding in
 # tests/fuzz/regressions/<name>. The case reader gets a dictionary of the case file's keys taken
-# from src/io (build-fuzz/case_reader.dict), the others small dictionaries in tests/fuzz.
+# from src/casefile (build-fuzz/case_reader.dict), the others small dictionaries in tests/fuzz.
 # The corpus grows in build-fuzz/corpus/<name> and is kept between runs in the same build folder.
 # Findings go to build-fuzz/findings/<name>/ (crash-*, leak-*, timeout-*, oom-*): reproduce one
 # with build-fuzz/tests/fuzz/fuzz_<name> FILE; once fixed, copy it to
@@ -94,10 +94,10 @@ for g in tests/data/*.geo; do  # the project's own test geometries: no commands 
 done
 find "$seeds/mesh_reader" -size +"${max_len[mesh_reader]}"c -delete
 
-# The case reader's dictionary: the quoted key names of src/io's case reader, and TOML syntax.
+# The case reader's dictionary: the quoted key names of src/casefile's case reader, and TOML syntax.
 dict="$build/case_reader.dict"
 {
-  grep -ohE '"[a-z_][a-z0-9_]*"' src/io/case_config*.cpp src/io/case_overrides.cpp | sort -u
+  grep -ohE '"[a-z_][a-z0-9_]*"' src/casefile/*.cpp | sort -u
   cat tests/fuzz/toml.dict
 } >"$dict"
 

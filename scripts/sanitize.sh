@@ -14,7 +14,7 @@
 # at -O0 the contact tests run 100 times slower than in Release, at -O1 about 10 times. Built: every test_* executable (GoogleTest, one per
 # tests/<module>/test_*.cpp, and the fuzz targets' replays; not sheetform, the MPI programs, the
 # benchmarks, and without --all not tests/solver's). Run: ctest's test preset `sanitize`, i.e. the
-# module labels (core mesh material element contact io model implicit parallel threads) less
+# module labels (core mesh material element contact meshing casefile results model implicit parallel threads) less
 # slow/cli/case/regression/post and the MPI runs; with --all the preset `sanitize-all`, which
 # adds the label solver.
 # Reports: ASan (heap/stack/global overflows, use after free or return, double free, leaks via

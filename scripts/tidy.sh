@@ -4,7 +4,7 @@
 # takes about as long as a build (docs/tooling.md has the last measured time and counts).
 #
 #   scripts/tidy.sh                 every .cpp of src/ and apps/
-#   scripts/tidy.sh src/io/*.cpp    these files
+#   scripts/tidy.sh src/casefile/*.cpp    these files
 #   SF_TIDY_JOBS=1 scripts/tidy.sh  parallel jobs (default: nproc)
 #   SF_TIDY_CHECKS='-*,bugprone-*' scripts/tidy.sh    other checks than .clang-tidy's
 #

@@ -6,7 +6,7 @@
 // Source: NUMISHEET'93 benchmark specification, values as listed in ../../docs/references.md:
 // punch 70 x 70 mm, plan corner radius 10 mm, profile radius 8 mm (grade C); t = 0.81 mm (grade A).
 // Mesh normals point out of the tool, towards the blank (gmsh 4.8 meshes OCC solid faces with
-// outward normals; tests/io/test_gmsh_reader.cpp checks it).
+// outward normals; tests/meshing/test_gmsh_reader.cpp checks it).
 // Mesh: 3-node triangles. Element size: Mesh.MeshSizeMax when the caller sets it (sheetform's
 // element_size, or `gmsh -2 -clmax 1 punch.geo`), else 2 mm; refined on the profile radius by
 // Mesh.MeshSizeFromCurvature (elements per 2 pi of curvature: 32, i.e. 8 per quarter arc).

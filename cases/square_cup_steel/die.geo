@@ -7,7 +7,7 @@
 // die opening 74 x 74 mm, plan corner radius 12 mm, profile radius 8 mm (grade C);
 // t = 0.78 mm (grade A). The 90 mm outer extent is our choice (beyond the 75 mm blank).
 // Mesh normals point out of the tool, towards the blank (gmsh 4.8 meshes OCC solid faces with
-// outward normals; tests/io/test_gmsh_reader.cpp checks it).
+// outward normals; tests/meshing/test_gmsh_reader.cpp checks it).
 // Mesh: 3-node triangles. Element size: Mesh.MeshSizeMax when the caller sets it (sheetform's
 // element_size, or `gmsh -2 -clmax 1 die.geo`), else 2 mm; refined on the profile radius by
 // Mesh.MeshSizeFromCurvature (elements per 2 pi of curvature: 32, i.e. 8 per quarter arc).

@@ -14,7 +14,7 @@
 // The 180 mm outer extent (the strip ends at 175 and only draws in), the 20 mm extent across
 // the width (strip: 17.5) and the 80 mm depth are our choices.
 // Mesh normals point out of the tool, towards the blank (gmsh 4.8 meshes OCC solid faces with
-// outward normals; tests/io/test_gmsh_reader.cpp checks it).
+// outward normals; tests/meshing/test_gmsh_reader.cpp checks it).
 // Mesh: 3-node triangles. Element size: Mesh.MeshSizeMax when the caller sets it (sheetform's
 // element_size, or `gmsh -2 -clmax 1 die.geo`), else 2 mm; refined on the profile radius by
 // Mesh.MeshSizeFromCurvature (elements per 2 pi of curvature: 64, i.e. 16 per quarter arc).

@@ -9,7 +9,7 @@
 // width 70 mm, profile radius 5 mm (grade C); t = 0.74 mm (grade C). The 20 mm extent across
 // the width (the strip's half width is 17.5 mm) and the 90 mm height are our choices.
 // Mesh normals point out of the tool, towards the blank (gmsh 4.8 meshes OCC solid faces with
-// outward normals; tests/io/test_gmsh_reader.cpp checks it).
+// outward normals; tests/meshing/test_gmsh_reader.cpp checks it).
 // Mesh: 3-node triangles. Element size: Mesh.MeshSizeMax when the caller sets it (sheetform's
 // element_size, or `gmsh -2 -clmax 1 punch.geo`), else 2 mm; refined on the profile radius by
 // Mesh.MeshSizeFromCurvature (elements per 2 pi of curvature: 64, i.e. 16 per quarter arc,

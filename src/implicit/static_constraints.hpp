@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "casefile/case_config.hpp"
 #include "core/types.hpp"
 #include "implicit/dof_map.hpp"
-#include "io/case_config.hpp"
 
 namespace sf {
 

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "casefile/case_config.hpp"
 #include "implicit/dof_map.hpp"
 #include "implicit/static_shell_body.hpp"
 #include "implicit/stiffness_solver.hpp"
-#include "io/case_config.hpp"
 
 namespace sf {
 

@@ -5,9 +5,9 @@
 #include <memory>
 #include <span>
 
+#include "casefile/case_config.hpp"
 #include "implicit/csc_matrix.hpp"
 #include "implicit/sparse_factorization.hpp"
-#include "io/case_config.hpp"
 
 namespace sf {
 

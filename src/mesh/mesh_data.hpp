@@ -15,6 +15,9 @@ struct PartMesh {
   std::vector<std::size_t> gmsh_node_tags;  ///< gmsh tag of each local node
   QuadConn quads;     ///< local node indices, counter-clockwise seen from +normal
   TriConn triangles;  ///< local node indices
+  /// Elements reversed when read, to agree with their neighbours' orientation (the minority of
+  /// each connected piece: extract_part_mesh).
+  int reoriented = 0;
 };
 
 /// A named set of nodes of a part (boundary curves, points), from a gmsh physical group.

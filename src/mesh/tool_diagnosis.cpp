@@ -20,6 +20,7 @@ ToolDiagnosis diagnose_tool(const TriangleSurface& surface, double blank_thickne
   d.overlaps = find_face_overlaps(surface);
   find_slivers(surface, d);
   d.folds = find_folds(surface);
+  d.boundary = surface_boundary(surface);
   sort_by_value(d.gaps, true);
   sort_by_value(d.flipped, true);
   sort_by_value(d.slivers, false);

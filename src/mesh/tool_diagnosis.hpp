@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "mesh/surface_boundary.hpp"
 #include "mesh/triangle_surface.hpp"
 
 namespace sf {
@@ -64,6 +65,7 @@ struct ToolDiagnosis {
   /// angle (degrees), position = the edge's mid-point. Largest first.
   std::vector<ToolFinding> folds;
   double median_area = 0.0;  ///< mm^2, of the tool's triangles
+  SurfaceBoundary boundary;  ///< closed or open, and its free edges (a statement, not a warning)
 
   bool clean() const {
     return gaps.empty() && flipped.empty() && overlaps.empty() && slivers.empty() && folds.empty();

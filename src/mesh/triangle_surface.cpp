@@ -154,9 +154,31 @@ std::pair<double, bool> closest_on_triangle(const Vec3& p, const Vec3& a, const 
   return {best, false};
 }
 
+/// InputError naming the tool, how many edges more than two triangles share, and the end points
+/// of the first few (mm). `edges` holds (node, node, triangles) per edge.
+[[noreturn]] void throw_non_manifold(const TriangleSurface& surface,
+                                     const std::vector<std::array<int, 3>>& edges) {
+  constexpr std::size_t kListed = 3;
+  const Matrix3X& x = surface.nodes();
+  const auto point = [&x](int node) {
+    return fmt::format("({:.4g}, {:.4g}, {:.4g})", x(0, node), x(1, node), x(2, node));
+  };
+  std::string list;
+  for (std::size_t k = 0; k < std::min(kListed, edges.size()); ++k) {
+    list += fmt::format("{}{} triangles on the edge {} - {}", k == 0 ? "" : ", ", edges[k][2],
+                        point(edges[k][0]), point(edges[k][1]));
+  }
+  throw InputError(fmt::format(
+      "tool '{}': the surface is non-manifold: {} {} shared by more than two triangles ({}{}, "
+      "mm): a face meshed twice, or faces meeting in a T; contact needs each edge between at "
+      "most two triangles: remove the duplicate faces or give the branches as separate tools",
+      surface.name(), edges.size(), edges.size() == 1 ? "edge is" : "edges are", list,
+      edges.size() > kListed ? ", ..." : ""));
+}
+
 }  // namespace
 
-void orient_surface(TriangleSurface& surface, const Matrix3X& blank_nodes) {
+SurfaceOrientation orient_surface(TriangleSurface& surface, const Matrix3X& blank_nodes) {
   const int nt = surface.num_triangles();
   const TriConn& tri = surface.triangles();
 
@@ -177,16 +199,15 @@ void orient_surface(TriangleSurface& surface, const Matrix3X& blank_nodes) {
   });
   // Neighbour lists (CSR): for each triangle, (neighbour, same_direction) over shared edges.
   std::vector<int> count(nt + 1, 0);
-  std::vector<std::array<int, 4>> links;  // t, neighbour, same direction (1/0), unused
+  std::vector<std::array<int, 4>> links;         // t, neighbour, same direction (1/0), unused
+  std::vector<std::array<int, 3>> non_manifold;  // lo, hi, triangles
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;
     while (j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi) {
       ++j;
     }
     if (j - i > 2) {
-      throw InputError(
-          fmt::format("tool '{}': edge ({}, {}) is shared by {} triangles (non-manifold surface)",
-                      surface.name(), uses[i].lo, uses[i].hi, j - i));
+      non_manifold.push_back({uses[i].lo, uses[i].hi, static_cast<int>(j - i)});
     }
     if (j - i == 2) {
       const int same = uses[i].dir == uses[i + 1].dir ? 1 : 0;
@@ -194,6 +215,9 @@ void orient_surface(TriangleSurface& surface, const Matrix3X& blank_nodes) {
       links.push_back({uses[i + 1].t, uses[i].t, same, 0});
     }
     i = j;
+  }
+  if (!non_manifold.empty()) {
+    throw_non_manifold(surface, non_manifold);
   }
   std::sort(links.begin(), links.end());
   for (const auto& l : links) {
@@ -228,20 +252,26 @@ void orient_surface(TriangleSurface& surface, const Matrix3X& blank_nodes) {
           flip[u] = want;
           queue.push_back(u);
         } else if (flip[u] != want) {
+          const Matrix3X& x = surface.nodes();
+          const Vec3 at = (x.col(tri(0, u)) + x.col(tri(1, u)) + x.col(tri(2, u))) / 3.0;
           throw InputError(fmt::format(
-              "tool '{}': the surface is not orientable (triangles {} and {} cannot be given a "
-              "consistent orientation; a Moebius-like strip?)",
-              surface.name(), t, u));
+              "tool '{}': the surface is not orientable (a Moebius-like strip): going round it, "
+              "the orientation comes back reversed at ({:.4g}, {:.4g}, {:.4g}) mm, triangles {} "
+              "and {}; split the surface there or remove the twisted faces",
+              surface.name(), at.x(), at.y(), at.z(), t, u));
         }
       }
     }
   }
+  SurfaceOrientation result;
+  result.components = num_components;
+  result.made_consistent = static_cast<int>(std::count(flip.begin(), flip.end(), 1));
   surface.flip_triangles(flip);
 
   // Side votes per component: face hits (weighted 1/distance) and, as a fall-back, all hits.
   const int nb = static_cast<int>(blank_nodes.cols());
   if (nb == 0 || nt == 0) {
-    return;
+    return result;
   }
   const int stride = std::max(1, (nb + 1999) / 2000);
   std::vector<double> face_vote(num_components, 0.0), any_vote(num_components, 0.0);
@@ -291,6 +321,8 @@ void orient_surface(TriangleSurface& surface, const Matrix3X& blank_nodes) {
   if (any_flip) {
     surface.flip_triangles(side_flip);
   }
+  result.turned_to_blank = static_cast<int>(std::count(side_flip.begin(), side_flip.end(), 1));
+  return result;
 }
 
 }  // namespace sf

@@ -66,6 +66,13 @@ class TriangleSurface {
   TriConn triangle_neighbours_;
 };
 
+/// What orient_surface found and did (for the tool's report).
+struct SurfaceOrientation {
+  int components = 0;       ///< connected components (triangles joined across shared edges)
+  int made_consistent = 0;  ///< triangles turned over to agree with their component's orientation
+  int turned_to_blank = 0;  ///< triangles turned over with their component to face the blank
+};
+
 /// Orients a tool surface for contact with a blank:
 ///  1. makes the orientation consistent across every shared edge, connected component by
 ///     connected component (breadth-first propagation);
@@ -73,9 +80,10 @@ class TriangleSurface {
 ///     sample of at most 2000) votes for the side it lies on, counted only when its closest point
 ///     on that component lies inside a triangle (a face hit), with weight 1 / distance; a
 ///     component with no face hit at all falls back to the votes of all closest points.
-/// Throws InputError naming the tool when a component is not orientable (a Moebius-like strip)
-/// or an edge is shared by more than two triangles. A component without votes (no blank nodes)
-/// is left as it is.
-void orient_surface(TriangleSurface& surface, const Matrix3X& blank_nodes);
+/// Throws InputError naming the tool when a component is not orientable (a Moebius-like strip:
+/// the position where the orientation meets itself reversed) or an edge is shared by more than
+/// two triangles (how many such edges, and the end points of the first few, mm). A component
+/// without votes (no blank nodes) is left as it is.
+SurfaceOrientation orient_surface(TriangleSurface& surface, const Matrix3X& blank_nodes);
 
 }  // namespace sf

@@ -12,9 +12,10 @@
 #include "contact/contact_search.hpp"
 #include "core/errors.hpp"
 #include "core/log.hpp"
-#include "io/gmsh_reader.hpp"
 #include "material/anisotropy_fit.hpp"
+#include "meshing/gmsh_reader.hpp"
 #include "model/constraint_assembly.hpp"
+#include "model/node_selection.hpp"
 
 namespace sf {
 namespace {
@@ -128,7 +129,11 @@ GmshModel load_mesh_source(const CaseConfig& config, const MeshSourceConfig& mes
                            const std::string& key, bool recombine) {
   try {
     mesh_budget() = {config.limits.mesh_seconds, config.limits.max_elements};
-    const MeshImportOptions import{mesh.scale, mesh.curvature_elements, mesh.surfaces, mesh.group};
+    const MeshImportOptions import{.scale = mesh.scale,
+                                   .curvature_elements = mesh.curvature_elements,
+                                   .chord_error = mesh.chord_error,
+                                   .surfaces = mesh.surfaces,
+                                   .group = mesh.group};
     return load_gmsh_model(mesh.file, mesh.element_size, recombine, mesh.parameters, import);
   } catch (const GeoParameterError& error) {
     const GeoParameter& p = mesh.parameters.at(error.index());
@@ -158,6 +163,18 @@ void read_blank(const CaseConfig& config, Model& model) {
   const auto at_line = [&file](int line) {
     return line > 0 ? fmt::format("{}:{}", file, line) : file;
   };
+  // The case's own groups ([[node_group]], chosen by position) first: a group the case names is
+  // one of them or a physical group of the blank's mesh, never both.
+  for (std::size_t i = 0; i < config.node_groups.size(); ++i) {
+    const NodeGroupConfig& g = config.node_groups[i];
+    const std::string where = fmt::format("{}: node_group[{}]", at_line(g.line), i);
+    if (gmsh_model.find_group(g.name) != nullptr) {
+      throw InputError(fmt::format(
+          "{}.name: '{}' is also a physical group of '{}'; give the node group another name", where,
+          g.name, bc.mesh.file.string()));
+    }
+    blank.groups.push_back(select_nodes(g, blank.mesh, where));
+  }
   for (std::size_t i = 0; i < config.boundaries.size(); ++i) {
     names.emplace_back(
         config.boundaries[i].group,
@@ -261,7 +278,7 @@ void read_tools(const CaseConfig& config, Model& model) {
                       tc.mesh.file.string(), tc.name, tc.mesh.group));
     }
     tool.surface = TriangleSurface(tc.name, tool.mesh.nodes, tool.mesh.triangles);
-    orient_surface(tool.surface, model.blank.mesh.nodes);
+    tool.orientation = orient_surface(tool.surface, model.blank.mesh.nodes);
     // A force-controlled tool keeps a fixed RigidToolMotion; its ForceControlledTool is set up
     // once the blank's mass and the contact springs are known (set_up_force_controlled_tools).
     if (tc.motion.type != MotionConfig::Type::force) {

@@ -1,5 +1,5 @@
 #pragma once
-#include "io/case_config.hpp"
+#include "casefile/case_config.hpp"
 #include "model/model.hpp"
 
 namespace sf {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "io/case_config.hpp"
+#include "casefile/case_config.hpp"
 #include "model/boundary_conditions.hpp"
 #include "model/model.hpp"
 

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "casefile/case_config.hpp"
 #include "contact/penalty_contact.hpp"
 #include "element/shell_bt.hpp"
-#include "io/case_config.hpp"
 #include "mesh/mesh_data.hpp"
 #include "mesh/triangle_surface.hpp"
 #include "model/boundary_conditions.hpp"
@@ -90,6 +90,7 @@ struct Tool {
   std::string name;
   PartMesh mesh;  ///< as read (for output)
   TriangleSurface surface;
+  SurfaceOrientation orientation;  ///< what orient_surface did to the mesh as read
   RigidToolMotion motion;
   std::optional<ForceControlledTool> force_control;
 

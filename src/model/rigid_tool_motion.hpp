@@ -2,8 +2,8 @@
 // The prescribed rigid motion of a tool: a translation along a fixed direction, given as a
 // velocity or a displacement curve over time. (A force-controlled tool is a ForceControlledTool;
 // its RigidToolMotion is fixed.)
+#include "casefile/case_config.hpp"
 #include "core/types.hpp"
-#include "io/case_config.hpp"
 #include "model/load_curve.hpp"
 
 namespace sf {

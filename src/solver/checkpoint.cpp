@@ -7,7 +7,7 @@
 
 #include "core/build_info.hpp"
 #include "core/errors.hpp"
-#include "io/hdf5_file.hpp"
+#include "results/hdf5_file.hpp"
 #include "solver/checkpoint_fields.hpp"
 
 namespace sf {

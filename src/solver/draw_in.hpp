@@ -1,8 +1,8 @@
 #pragma once
 // Draw-in: how far the blank's edge has been pulled in, measured at the nodes of a [[draw_in]]
 // group along its direction (NUMISHEET's DX, DY, DD). Used by the run summary and the history.
+#include "casefile/case_config.hpp"
 #include "core/types.hpp"
-#include "io/case_config.hpp"
 #include "model/model.hpp"
 
 namespace sf {

@@ -2,7 +2,7 @@
 // The explicit springback route: the tool forces at the end of forming are released slowly (the
 // tools withdrawn without touching the part again), then dynamic relaxation brings the blank to
 // rest. The comparison route for the implicit springback step; docs/static-analysis.md.
-#include "io/case_config.hpp"
+#include "casefile/case_config.hpp"
 #include "model/model.hpp"
 #include "solver/frame_output.hpp"
 #include "solver/solution_state.hpp"

@@ -2,8 +2,8 @@
 
 #include <fmt/core.h>
 
+#include "casefile/unit_system.hpp"
 #include "core/build_info.hpp"
-#include "io/unit_system.hpp"
 #include "solver/draw_in.hpp"
 #include "solver/reactions.hpp"
 

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <memory>
 
-#include "io/results_writer.hpp"
 #include "model/model.hpp"
+#include "results/results_writer.hpp"
 #include "solver/group_history.hpp"
 #include "solver/search_audit_recorder.hpp"
 #include "solver/solution_state.hpp"

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "io/unit_system.hpp"
+#include "casefile/unit_system.hpp"
 #include "model/model.hpp"
 #include "solver/solution_state.hpp"
 

@@ -141,6 +141,19 @@ void print_mass(const Model& model, const UnitSystem& units) {
   }
 }
 
+/// The groups the case chose by position ([[node_group]]): how many nodes each holds, and where
+/// the first one is (a single node's position is what a point group is for).
+void print_node_groups(const CaseConfig& config, const Model& model, const UnitSystem& units) {
+  for (const NodeGroupConfig& g : config.node_groups) {
+    const NodeGroup& group = model.blank.group(g.name);
+    const Vec3 first = model.blank.mesh.nodes.col(group.nodes.front());
+    log_info("Node group  '{}': {} {}, {} at ({:.6g}, {:.6g}, {:.6g}) {}\n", g.name,
+             group.nodes.size(), group.nodes.size() == 1 ? "node" : "nodes",
+             group.nodes.size() == 1 ? "the node" : "the first", first.x(), first.y(), first.z(),
+             units.length);
+  }
+}
+
 void print_boundaries(const CaseConfig& config, const Model& model, const UnitSystem& units) {
   for (const BoundaryConfig& b : config.boundaries) {
     log_info("Boundary    '{}': {} nodes, {}\n", b.group, model.blank.group(b.group).nodes.size(),
@@ -404,6 +417,7 @@ void print_model(const CaseConfig& config, const Model& model) {
   if (!is_static(config)) {
     print_mass(model, units);
   }
+  print_node_groups(config, model, units);
   print_boundaries(config, model, units);
   print_loads(config, model, units);
   print_tools(model, units);

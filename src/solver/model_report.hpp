@@ -4,8 +4,8 @@
 // the direction each pressure pushes), the tools and contacts, and the time control that applies.
 #include <string>
 
+#include "casefile/unit_system.hpp"
 #include "element/shell_part.hpp"
-#include "io/unit_system.hpp"
 #include "model/model.hpp"
 
 namespace sf {

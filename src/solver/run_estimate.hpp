@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "io/case_config.hpp"
+#include "casefile/case_config.hpp"
 #include "model/model.hpp"
 
 namespace sf {

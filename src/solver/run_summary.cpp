@@ -9,9 +9,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "casefile/unit_system.hpp"
 #include "core/build_info.hpp"
 #include "core/errors.hpp"
-#include "io/unit_system.hpp"
 #include "solver/draw_in.hpp"
 #include "solver/implicit_summary.hpp"
 

@@ -99,6 +99,30 @@ std::string summary(const ToolMeshReport& r) {
       d.folds.size());
 }
 
+/// "Surface     'die': open: 2 boundaries, 96 free edges (412.3 mm); 1 component; orientation
+/// as read" (or the triangles orient_surface turned over).
+std::string surface_line(const ToolMeshReport& r, const std::string& unit) {
+  const SurfaceBoundary& b = r.diagnosis.boundary;
+  const std::string shape =
+      b.closed()
+          ? "closed (no free edges)"
+          : fmt::format("open: {}, {} ({:.4g} {} in all)",
+                        plural(static_cast<std::size_t>(b.boundaries), "boundary", "boundaries"),
+                        plural(static_cast<std::size_t>(b.free_edges), "free edge", "free edges"),
+                        b.length, unit);
+  const SurfaceOrientation& o = r.orientation;
+  const std::string turned =
+      o.made_consistent == 0 && o.turned_to_blank == 0
+          ? "orientation as read"
+          : fmt::format(
+                "triangles turned over: {} to agree with their neighbours, {} with their "
+                "component to face the blank",
+                o.made_consistent, o.turned_to_blank);
+  return fmt::format("Surface     '{}': {}; {}; {}\n", r.tool, shape,
+                     plural(static_cast<std::size_t>(o.components), "component", "components"),
+                     turned);
+}
+
 std::string clearance_line(const ToolMeshReport& r, double thickness, const std::string& unit) {
   // Below a millionth of the thickness is the round-off of a tool resting on the blank (as for
   // the penetration the run estimate reports).
@@ -133,6 +157,9 @@ std::vector<ToolMeshReport> diagnose_tool_meshes(const Model& model) {
     r.tool = tool.name;
     r.triangles = tool.surface.num_triangles();
     r.diagnosis = diagnose_tool(tool.surface, thickness);
+    r.orientation = tool.orientation;
+    // Reading the mesh made its orientation consistent already (PartMesh::reoriented).
+    r.orientation.made_consistent += tool.mesh.reoriented;
     r.check_seconds = seconds_since(start);
     start = Clock::now();
     r.approach = closest_approach(tool.surface, tool.motion.displacement(0.0), blank.nodes,
@@ -149,6 +176,7 @@ ToolMeshLines describe_tool_mesh(const ToolMeshReport& r, double thickness,
   ToolMeshLines lines;
   lines.info.push_back(summary(r));
   if (r.triangles > 0) {
+    lines.info.push_back(surface_line(r, unit));
     lines.info.push_back(clearance_line(r, thickness, unit));
   }
   const ToolDiagnosis& d = r.diagnosis;

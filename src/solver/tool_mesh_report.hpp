@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "io/case_config.hpp"
-#include "io/unit_system.hpp"
+#include "casefile/case_config.hpp"
+#include "casefile/unit_system.hpp"
 #include "mesh/surface_approach.hpp"
 #include "mesh/tool_diagnosis.hpp"
 #include "model/model.hpp"
@@ -20,6 +20,9 @@ struct ToolMeshReport {
   std::string tool;
   int triangles = 0;
   ToolDiagnosis diagnosis;
+  /// What orient_surface did (Tool::orientation), with the elements the mesh reader reversed
+  /// (PartMesh::reoriented) counted in made_consistent.
+  SurfaceOrientation orientation;
   SurfaceApproach approach;        ///< to the blank's mid-surface, the tool where it is at time 0
   double clearance = 0.0;          ///< length: approach.distance less half the blank's thickness
   double check_seconds = 0.0;      ///< wall time of the mesh checks

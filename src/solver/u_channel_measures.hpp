@@ -3,8 +3,8 @@
 // line of blank nodes along the channel. Definitions: docs/static-analysis.md.
 #include <vector>
 
+#include "casefile/case_config.hpp"
 #include "core/types.hpp"
-#include "io/case_config.hpp"
 
 namespace sf {
 

@@ -228,6 +228,20 @@ expect "clearance said" 0 "Clearance +'lid' clears the blank by 0.5 mm at \([0-9
   "$sheetform" check "$lid"
 expect "run logs the tool diagnosis" 0 "warning: tool 'lid': 8 free edges run beside" -- \
   "$sheetform" run "$lid" -o "$work/lid"
+# The lid's two STL faces: an open surface of two boundaries, as read (normals -z, to the blank).
+expect "surface said" 0 "Surface +'lid': open: 2 boundaries, 24 free edges \(11.9 mm in all\); 2 components; orientation as read" -- \
+  "$sheetform" check "$lid"
+
+# A blank from a planar STEP face has no physical groups: its supports and measurement point are
+# node groups chosen by position ([[node_group]]), printed with their node counts, used by a
+# boundary, a prescribed velocity and a history group, and written to the resolved case.
+cad_blank="$src/tests/data/cad_blank/case.toml"
+expect "node group by plane" 0 "Boundary +'clamped': 11 nodes, fixed" -- "$sheetform" check "$cad_blank"
+expect "node group by point" 0 "Node group  'corner': 1 node, the node at \(60, 40, 0\) mm" -- \
+  "$sheetform" check "$cad_blank"
+expect "node groups run" 0 "reaction prescribed_velocity\[0\] 'tip_edge'" -- \
+  "$sheetform" run "$cad_blank" -o "$work/cad_blank"
+expect "node groups in the resolved case" 0 "^\\[\\[node_group\\]\\]" -- cat "$work/cad_blank/case.resolved.toml"
 
 # A full disk (issue 18: "internal error", then a segmentation fault, exit 139): exit 6, said,
 # and what was written before stays readable. A 6 MB tmpfs holds a few frames; where

@@ -1,9 +1,9 @@
-// Fuzz target: the case reader (case.toml -> CaseConfig: src/io/case_config*.cpp, toml_reader,
-// case_overrides, unit_system). Each input is written as case.toml into a work folder that also
-// holds an empty file under every mesh and table name the bundled cases use (blank.geo, die.msh,
-// punch.step, ...), so that inputs mutated from a real case get past the file checks into the
-// rest of the reader (read_case checks that the files exist; it does not read them).
-// Checks: read_case returns or throws sf::InputError, nothing else; a case it accepts formats
+// Fuzz target: the case reader (case.toml -> CaseConfig: src/casefile/case_config*.cpp,
+// toml_reader, case_overrides, unit_system). Each input is written as case.toml into a work folder
+// that also holds an empty file under every mesh and table name the bundled cases use (blank.geo,
+// die.msh, punch.step, ...), so that inputs mutated from a real case get past the file checks into
+// the rest of the reader (read_case checks that the files exist; it does not read them). Checks:
+// read_case returns or throws sf::InputError, nothing else; a case it accepts formats
 // (format_resolved_case) to a resolved case that reads back, and formats again to the same text
 // (but for the line naming the file it was read from).
 #include <cstddef>
@@ -12,9 +12,9 @@
 #include <fstream>
 #include <string>
 
+#include "casefile/case_config.hpp"
 #include "core/errors.hpp"
 #include "fuzz_support.hpp"
-#include "io/case_config.hpp"
 
 namespace {
 

@@ -1,5 +1,5 @@
 // Fuzz target: the .geo scanner that refuses commands before gmsh reads a file
-// (src/io/geo_safety.cpp: comments, strings, Include/Merge chains). Each input is written as
+// (src/meshing/geo_safety.cpp: comments, strings, Include/Merge chains). Each input is written as
 // case.geo into a work folder; it is scanned only, never given to gmsh.
 // Checks: check_geo_runs_no_commands returns or throws sf::InputError, nothing else.
 #include <cstddef>
@@ -7,7 +7,7 @@
 
 #include "core/errors.hpp"
 #include "fuzz_support.hpp"
-#include "io/geo_safety.hpp"
+#include "meshing/geo_safety.hpp"
 
 extern "C" int LLVMFuzzerInitialize(int* /*argc*/, char*** /*argv*/) {
   sf::fuzz::quiet();

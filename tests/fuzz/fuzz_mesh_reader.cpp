@@ -1,6 +1,6 @@
-// Fuzz target: the mesh reader for .msh files (src/io/gmsh_reader.cpp): gmsh's MSH parser through
-// the gmsh API (a process-global session; load_gmsh_model opens and closes one per call), then
-// sheetform's own code on what gmsh returns: physical groups, part meshes (element types,
+// Fuzz target: the mesh reader for .msh files (src/meshing/gmsh_reader.cpp): gmsh's MSH parser
+// through the gmsh API (a process-global session; load_gmsh_model opens and closes one per call),
+// then sheetform's own code on what gmsh returns: physical groups, part meshes (element types,
 // orientation propagation, degenerate elements) and node groups. Each input is written as
 // mesh.msh into a work folder. Only .msh files: a .geo could run commands (SystemCall) through
 // gmsh, so .geo text goes only to the geo scanner (fuzz_geo_safety.cpp).
@@ -12,7 +12,7 @@
 
 #include "core/errors.hpp"
 #include "fuzz_support.hpp"
-#include "io/gmsh_reader.hpp"
+#include "meshing/gmsh_reader.hpp"
 
 namespace {
 

@@ -208,8 +208,19 @@ TEST(OrientSurface, RandomlyFlippedMeshBecomesConsistentAndFacesTheBlank) {
         blank.col(j * 11 + i) = Vec3(i, j, side * 1.5);
       }
     }
-    orient_surface(s, blank);
+    // What was turned over: the seed triangle's component kept its orientation first, the
+    // others were turned to agree with it (made_consistent); then the whole component was turned
+    // to face the blank if the seed did not (turned_to_blank = all of them).
+    const int facing = count_facing(s, side), away = s.num_triangles() - facing;
+    const SurfaceOrientation o = orient_surface(s, blank);
     EXPECT_EQ(count_facing(s, side), s.num_triangles()) << "blank on side " << side;
+    EXPECT_EQ(o.components, 1);
+    if (o.turned_to_blank == 0) {
+      EXPECT_EQ(o.made_consistent, away) << "blank on side " << side;
+    } else {
+      EXPECT_EQ(o.turned_to_blank, s.num_triangles()) << "blank on side " << side;
+      EXPECT_EQ(o.made_consistent, facing) << "blank on side " << side;
+    }
   }
 }
 
@@ -228,7 +239,7 @@ TEST(OrientSurface, EachComponentFacesTheBlank) {
       blank.col(j * 7 + i) = Vec3(i, j, 0.1);
     }
   }
-  orient_surface(s, blank);
+  EXPECT_EQ(orient_surface(s, blank).components, 2);
   for (int k = 0; k < s.num_triangles(); ++k) {
     const double expected = k < punch.num_triangles() ? -1 : 1;
     EXPECT_GT(s.triangle_normals()(2, k) * expected, 0.5) << "triangle " << k;
@@ -266,6 +277,34 @@ TEST(OrientSurface, MoebiusStripThrowsNamingTheTool) {
     const std::string msg = e.what();
     EXPECT_NE(msg.find("moebius_punch"), std::string::npos) << msg;
     EXPECT_NE(msg.find("orientable"), std::string::npos) << msg;
+    // Where the strip meets itself reversed: the centroid of a triangle of the twisted quad,
+    // on the unit circle's last segment (between angles 330 and 360 degrees).
+    EXPECT_NE(msg.find("comes back reversed at ("), std::string::npos) << msg;
+  }
+}
+
+TEST(OrientSurface, NonManifoldEdgesAreNamedByTheirEndPoints) {
+  // Three triangles on the edge (0, 0, 0) - (1, 0, 0): a fin standing on a flat pair.
+  Matrix3X x(3, 5);
+  x << 0, 1, 0.5, 0.5, 0.5,  //
+      0, 0, 1, -1, 0,        //
+      0, 0, 0, 0, 1;
+  TriConn t(3, 3);
+  t << 0, 1, 0,  //
+      1, 0, 1,   //
+      2, 3, 4;
+  TriangleSurface s("finned_die", x, t);
+  Matrix3X blank(3, 1);
+  blank.col(0) = Vec3(0.5, 0.5, 2);
+  try {
+    orient_surface(s, blank);
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("tool 'finned_die': the surface is non-manifold: 1 edge is shared by more "
+                       "than two triangles (3 triangles on the edge (0, 0, 0) - (1, 0, 0), mm)"),
+              std::string::npos)
+        << msg;
   }
 }
 

@@ -12,7 +12,7 @@
 #include <fstream>
 #include <numbers>
 
-#include "io/case_config.hpp"
+#include "casefile/case_config.hpp"
 #include "model/build_model.hpp"
 #include "solver/explicit_driver.hpp"
 

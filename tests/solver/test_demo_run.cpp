@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "io/case_config.hpp"
+#include "casefile/case_config.hpp"
 #include "model/build_model.hpp"
 #include "solver/explicit_driver.hpp"
 

@@ -23,7 +23,7 @@
 
 #include "case_fixture.hpp"
 #include "core/errors.hpp"
-#include "io/hdf5_file.hpp"
+#include "results/hdf5_file.hpp"
 #include "solver/dynamic_relaxation.hpp"
 #include "solver/frame_output.hpp"
 

@@ -11,9 +11,9 @@
 #include <numbers>
 #include <string>
 
+#include "casefile/case_config.hpp"
 #include "core/errors.hpp"
 #include "element/shell_geometry.hpp"
-#include "io/case_config.hpp"
 #include "model/build_model.hpp"
 #include "solver/explicit_driver.hpp"
 

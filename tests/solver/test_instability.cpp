@@ -8,8 +8,8 @@
 #include <functional>
 #include <string>
 
+#include "casefile/case_config.hpp"
 #include "core/errors.hpp"
-#include "io/case_config.hpp"
 #include "model/build_model.hpp"
 #include "solver/explicit_driver.hpp"
 

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <string>
 
-#include "io/case_config.hpp"
+#include "casefile/case_config.hpp"
 #include "model/build_model.hpp"
 #include "model/external_loads.hpp"
 #include "solver/model_report.hpp"

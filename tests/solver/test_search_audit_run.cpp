@@ -7,11 +7,11 @@
 #include <filesystem>
 #include <limits>
 
+#include "casefile/case_config.hpp"
 #include "contact/brute_force_oracle.hpp"
 #include "contact/test_meshes.hpp"
-#include "io/case_config.hpp"
-#include "io/hdf5_file.hpp"
 #include "model/build_model.hpp"
+#include "results/hdf5_file.hpp"
 #include "solver/explicit_driver.hpp"
 #include "solver/search_audit_recorder.hpp"
 

@@ -12,8 +12,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "io/hdf5_file.hpp"
 #include "model/build_model.hpp"
+#include "results/hdf5_file.hpp"
 #include "solver/explicit_driver.hpp"
 
 namespace {

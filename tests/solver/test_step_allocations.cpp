@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "io/case_config.hpp"
+#include "casefile/case_config.hpp"
 #include "model/build_model.hpp"
 #include "solver/explicit_driver.hpp"
 

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "io/case_config.hpp"
+#include "casefile/case_config.hpp"
 #include "model/build_model.hpp"
 #include "solver/tool_mesh_report.hpp"
 #include "support/surface_builder.hpp"
@@ -64,14 +64,22 @@ TEST(ToolMeshReport, GapIsNamedWithItsWidthsAndPositions) {
   test::SurfaceBuilder b;
   b.add_patch(4, 4, test::rectangle(0, 4, 0, 4, 0));
   b.add_patch(4, 4, test::rectangle(4.05, 8.05, 0, 4, 0));
-  const ToolMeshLines lines = describe_tool_mesh(report_of(b.build(), 1.0, 1.7), 1.0, "mm");
-  ASSERT_EQ(lines.info.size(), 2u);
+  TriangleSurface surface = b.build();
+  const SurfaceOrientation orientation = orient_surface(surface, Matrix3X(Vec3(4, 2, 1.7)));
+  ToolMeshReport report = report_of(surface, 1.0, 1.7);
+  report.orientation = orientation;
+  const ToolMeshLines lines = describe_tool_mesh(report, 1.0, "mm");
+  ASSERT_EQ(lines.info.size(), 3u);
   EXPECT_EQ(
       lines.info[0],
       "Tool mesh   'lid': 64 triangles: 8 gap edges (0 between faces oriented opposite ways), "
       "0 overlapping triangles, 0 of near-zero area, 0 folds (warnings)\n");
-  EXPECT_EQ(lines.info[1],
+  EXPECT_EQ(lines.info[2],
             "Clearance   'lid' clears the blank by 1.2 mm at (1, 2, 3) on the tool\n");
+  // Two 4 x 4 mm patches of 16 free edges each, normals (+z) already towards the blank.
+  EXPECT_EQ(lines.info[1],
+            "Surface     'lid': open: 2 boundaries, 32 free edges (32 mm in all); 2 components; "
+            "orientation as read\n");
   ASSERT_EQ(lines.warnings.size(), 1u);
   const std::string& w = lines.warnings[0];
   EXPECT_TRUE(contains(w, "tool 'lid': 8 free edges run beside another free edge")) << w;
@@ -102,21 +110,28 @@ TEST(ToolMeshReport, EachKindOfFindingHasItsWarningAndAtMostThreePositions) {
       << lines.warnings[3];
   EXPECT_TRUE(contains(lines.warnings[3], "0.0005 mm^2 at (30.5, 0.0003333, 0)"))
       << lines.warnings[3];
-  EXPECT_EQ(lines.info[1], "Clearance   'lid' touches the blank (0 mm) at (1, 2, 3) on the tool\n");
+  EXPECT_EQ(lines.info[2], "Clearance   'lid' touches the blank (0 mm) at (1, 2, 3) on the tool\n");
 }
 
 TEST(ToolMeshReport, ClearanceInsideTheThicknessAndAToolFacingAway) {
   test::SurfaceBuilder b;
-  b.add_patch(2, 2, test::rectangle(0, 2, 0, 2, 0));
-  ToolMeshReport r = report_of(b.build(), 1.0, 0.3);
+  b.add_patch(2, 2, test::rectangle(0, 2, 0, 2, 0), true);  // normals -z, the blank above
+  TriangleSurface surface = b.build();
+  const SurfaceOrientation orientation = orient_surface(surface, Matrix3X(Vec3(1, 1, 0.3)));
+  ToolMeshReport r = report_of(surface, 1.0, 0.3);
+  r.orientation = orientation;
   r.approach.facing = -0.8;
   const ToolMeshLines lines = describe_tool_mesh(r, 1.0, "mm");
   EXPECT_EQ(lines.info[0],
             "Tool mesh   'lid': 8 triangles: no gaps, overlaps, near-zero-area triangles or "
             "folds\n");
-  EXPECT_EQ(lines.info[1],
+  EXPECT_EQ(lines.info[2],
             "Clearance   'lid' is inside the blank's thickness at (1, 2, 3) on the tool: 0.3 mm "
             "from the mid-surface, less than half the thickness\n");
+  EXPECT_EQ(lines.info[1],
+            "Surface     'lid': open: 1 boundary, 8 free edges (8 mm in all); 1 component; "
+            "triangles turned over: 0 to agree with their neighbours, 8 with their component to "
+            "face the blank\n");
   ASSERT_EQ(lines.warnings.size(), 1u);
   EXPECT_TRUE(contains(lines.warnings[0],
                        "tool 'lid' faces away from the blank where it comes "

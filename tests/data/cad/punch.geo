@@ -1,4 +1,4 @@
-// The CAD fixtures of tests/io/test_mesh_import.cpp: a punch, a cylinder of radius 25 mm and
+// The CAD fixtures of tests/meshing/test_mesh_import.cpp: a punch, a cylinder of radius 25 mm and
 // height 40 mm whose bottom (working) edge is rounded by a fillet of radius 5 mm. Its surfaces:
 // 1 the side (cylinder, 35 mm high), 2 the fillet (a quarter torus), 3 the top disk (radius 25),
 // 4 the bottom disk (radius 20); exact area 2 pi 25 35 + 2 pi 5 (20 pi / 2 + 5) + pi 25^2 +

@@ -1,0 +1,87 @@
+#include "casefile/case_config_common.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+
+namespace sf {
+
+void read_curve(const TomlSection& s, std::string_view key, CurveConfig& curve) {
+  const std::string path = s.key_path(key);
+  const toml::node* node = s.find(key);
+  if (!node) {
+    s.fail_missing(key, "an array of [time, value] points");
+  }
+  const auto* points = node->as_array();
+  if (!points || points->empty()) {
+    s.fail_value(key, "a non-empty array of [time, value] points");
+  }
+  for (std::size_t i = 0; i < points->size(); ++i) {
+    const toml::node& point_node = *points->get(i);
+    const std::string point_path = fmt::format("{}[{}]", path, i);
+    const auto* point = point_node.as_array();
+    std::optional<double> t, v;
+    if (point && point->size() == 2) {
+      t = number_of(*point->get(0));
+      v = number_of(*point->get(1));
+    }
+    if (!t || !v || !std::isfinite(*t) || !std::isfinite(*v)) {
+      s.fail_at(point_node, point_path,
+                fmt::format("expected a point [time (s), value] of 2 numbers, got {}",
+                            describe_value(point_node)));
+    }
+    if (*t < 0.0) {
+      s.fail_at(point_node, point_path, fmt::format("expected a time >= 0 (s), got {}", *t));
+    }
+    if (!curve.times.empty() && !(*t > curve.times.back())) {
+      s.fail_at(point_node, point_path,
+                fmt::format("expected times strictly increasing, got {} after {}",
+                            format_toml_number(*t), format_toml_number(curve.times.back())));
+    }
+    curve.times.push_back(*t);
+    curve.values.push_back(*v);
+  }
+}
+
+void read_vector(const TomlSection& s, std::string_view key, std::array<double, 3>& value) {
+  const toml::node* node = s.find(key);
+  if (!node) {
+    return;
+  }
+  const toml::array* array = node->as_array();
+  if (!array || array->size() != 3) {
+    s.fail_value(key, "an array of 3 numbers");
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::optional<double> v = number_of(*array->get(i));
+    if (!v || !std::isfinite(*v)) {
+      s.fail_value(key, "an array of 3 finite numbers");
+    }
+    value[i] = *v;
+  }
+}
+
+std::filesystem::path read_existing_file(
+    const TomlSection& s, std::string_view key,
+    const std::function<bool(const std::filesystem::path&)>& accepts, std::string_view accepted) {
+  namespace fs = std::filesystem;
+  std::string text;
+  s.read_string(key, text, Presence::required);
+  const toml::node& node = *s.find(key);
+  const fs::path given(text);
+  if (!accepts(given)) {
+    s.fail_value(key, accepted);
+  }
+  const fs::path folder = fs::path(s.file()).parent_path();
+  const fs::path file = (given.is_absolute() ? given : folder / given).lexically_normal();
+  std::error_code error;
+  if (!fs::exists(file, error)) {
+    s.fail_at(node, s.key_path(key), fmt::format("file not found: {}", file.string()));
+  }
+  if (!fs::is_regular_file(file, error)) {
+    s.fail_at(node, s.key_path(key), fmt::format("not a regular file: {}", file.string()));
+  }
+  return file;
+}
+
+}  // namespace sf

@@ -1,0 +1,27 @@
+#pragma once
+// Readers shared by the case-file sections (case_config*.cpp): not a public interface.
+#include <array>
+#include <filesystem>
+#include <functional>
+#include <string_view>
+
+#include "casefile/case_config.hpp"
+#include "casefile/toml_reader.hpp"
+
+namespace sf {
+
+/// Reads `key` (required) as a non-empty array of [time (s), value] points with finite numbers,
+/// times >= 0 and strictly increasing, into `curve`.
+void read_curve(const TomlSection& s, std::string_view key, CurveConfig& curve);
+
+/// Reads `key` as an array of 3 finite numbers (any values, unlike read_direction); absent leaves
+/// `value` as it is.
+void read_vector(const TomlSection& s, std::string_view key, std::array<double, 3>& value);
+
+/// Reads `key` as a path (relative to the case file's folder) to a file that must exist and whose
+/// name `accepts` (`accepted` says what for the message, e.g. "a .csv file"); returns it absolute.
+std::filesystem::path read_existing_file(
+    const TomlSection& s, std::string_view key,
+    const std::function<bool(const std::filesystem::path&)>& accepts, std::string_view accepted);
+
+}  // namespace sf

@@ -1,0 +1,553 @@
+#include "results/results_writer.hpp"
+
+#include <fmt/core.h>
+
+#include <sys/resource.h>
+#include <sys/statvfs.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <set>
+#include <stdexcept>
+#include <system_error>
+
+#include "core/errors.hpp"
+#include "core/log.hpp"
+#include "core/result_name.hpp"
+#include "results/hdf5_file.hpp"
+
+namespace sf {
+namespace {
+
+constexpr const char* results_file_name = "results.h5";
+constexpr int format_version = 1;
+constexpr hsize_t history_chunk_rows = 1024;
+
+void check_name(const std::string& name, const std::string& what) {
+  if (!is_plain_name(name)) {
+    throw std::invalid_argument(what + " '" + name + "' is not a valid name (" +
+                                std::string(kPlainNameRule) + ")");
+  }
+}
+
+std::string part_path(const std::string& part) {
+  return "/parts/" + part;
+}
+
+std::string frame_path(const std::string& part, int index) {
+  return part_path(part) + "/frames/" + frame_group_name(index);
+}
+
+hsize_t to_hsize(Eigen::Index n) {
+  return static_cast<hsize_t>(n);
+}
+
+// Runs a write to the results; a failure of the system (a full disk, a folder gone) becomes an
+// OutputError, which the command reports with its own exit code.
+template <class Write>
+void writing(const std::filesystem::path& directory, Write write) {
+  try {
+    write();
+  } catch (const InputError&) {
+    throw;
+  } catch (const OutputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    if (what.find("No space left on device") != std::string::npos ||
+        what.find("errno = 28") != std::string::npos) {
+      throw OutputError(
+          "cannot write the results in " + directory.string() +
+          ": the disk is full (No space left on device); free some space, then run again or go "
+          "on from the last checkpoint with --restart");
+    }
+    throw OutputError("cannot write the results: " + what);
+  }
+}
+
+// Bytes the process may still add to `file` in `directory`: the file system's free space for
+// unprivileged users and the file-size limit (ulimit -f), whichever is less.
+double room_for(const std::filesystem::path& directory, const std::filesystem::path& file) {
+  double room = std::numeric_limits<double>::infinity();
+  struct statvfs disk {};
+  if (statvfs(directory.c_str(), &disk) == 0) {
+    room = static_cast<double>(disk.f_bavail) * static_cast<double>(disk.f_frsize);
+  }
+  struct rlimit limit {};
+  if (getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+    std::error_code error;
+    const auto size = std::filesystem::file_size(file, error);
+    room = std::min(room, static_cast<double>(limit.rlim_cur) - (error ? 0.0 : double(size)));
+  }
+  return room;
+}
+
+// A frame's fields in order, "name/node" or "name/cell" joined by commas (the frame group's
+// attribute `fields`): what a restart needs to list the frame again in the .xdmf.
+std::string field_list(const std::vector<FieldView>& fields) {
+  std::string list;
+  for (const FieldView& field : fields) {
+    list += (list.empty() ? "" : ",") + field.name +
+            (field.center == FieldCenter::cell ? "/cell" : "/node");
+  }
+  return list;
+}
+
+std::vector<std::string> split_list(const std::string& list) {
+  std::vector<std::string> items;
+  std::size_t begin = 0;
+  while (begin < list.size()) {
+    const std::size_t comma = std::min(list.find(',', begin), list.size());
+    items.push_back(list.substr(begin, comma - begin));
+    begin = comma + 1;
+  }
+  return items;
+}
+
+// A name for this run that another run will not have: the clock and the process.
+std::string new_run_id() {
+  const auto now = std::chrono::system_clock::now().time_since_epoch();
+  return std::to_string(std::chrono::duration_cast<std::chrono::nanoseconds>(now).count()) + "-" +
+         std::to_string(static_cast<long>(getpid()));
+}
+
+}  // namespace
+
+std::string frame_group_name(int index) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%06d", index);
+  return buffer;
+}
+
+void ResultsWriter::check_layout(const std::vector<PartTopology>& parts,
+                                 const std::vector<std::string>& history_columns) {
+  std::set<std::string> seen;
+  for (const PartTopology& part : parts) {
+    check_name(part.name, "part name");
+    if (!seen.insert(part.name).second) {
+      throw std::invalid_argument("part '" + part.name + "' is given twice");
+    }
+    if (part.nodes_per_cell != 3 && part.nodes_per_cell != 4) {
+      throw std::invalid_argument("part '" + part.name + "': nodes per cell must be 3 or 4, not " +
+                                  std::to_string(part.nodes_per_cell));
+    }
+    if (part.cells.rows() != part.nodes_per_cell) {
+      throw std::invalid_argument("part '" + part.name + "': connectivity has " +
+                                  std::to_string(part.cells.rows()) + " rows, expected " +
+                                  std::to_string(part.nodes_per_cell));
+    }
+    if (part.triangles.cols() > 0 && part.nodes_per_cell != 4) {
+      throw std::invalid_argument("part '" + part.name +
+                                  "': extra triangles are allowed only after quadrilaterals");
+    }
+    const Eigen::Index node_count = part.reference_nodes.cols();
+    if ((part.cells.size() > 0 &&
+         (part.cells.minCoeff() < 0 || part.cells.maxCoeff() >= node_count)) ||
+        (part.triangles.size() > 0 &&
+         (part.triangles.minCoeff() < 0 || part.triangles.maxCoeff() >= node_count))) {
+      throw std::invalid_argument("part '" + part.name +
+                                  "': connectivity refers to a node outside 0.." +
+                                  std::to_string(node_count - 1));
+    }
+  }
+  seen.clear();
+  for (const std::string& column : history_columns) {
+    check_name(column, "history column");
+    if (!seen.insert(column).second) {
+      throw std::invalid_argument("history column '" + column + "' is given twice");
+    }
+  }
+}
+
+ResultsWriter::PartRecord ResultsWriter::describe_part(const PartTopology& part) {
+  const std::string path = part_path(part.name);
+  const auto cells = static_cast<std::size_t>(part.cells.cols());
+  const auto triangles = static_cast<std::size_t>(part.triangles.cols());
+  PartRecord record;
+  record.grid.name = part.name;
+  record.grid.nodes_per_cell = part.nodes_per_cell;
+  record.grid.node_count = static_cast<std::size_t>(part.reference_nodes.cols());
+  record.grid.cell_count = cells + triangles;
+  record.grid.connectivity_dataset = path + "/connectivity";
+  if (triangles > 0) {
+    // Mixed: the flat XDMF "Mixed" array (type code, then the nodes, per cell).
+    record.grid.connectivity_dataset = path + "/mixed_connectivity";
+    record.grid.mixed_connectivity_size = 5 * cells + 4 * triangles;
+  }
+  return record;
+}
+
+void ResultsWriter::set_directory(const std::filesystem::path& directory) {
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error) {
+    throw InputError("cannot create results directory '" + directory.string() +
+                     "': " + error.message());
+  }
+  directory_ = std::filesystem::absolute(directory).lexically_normal();
+}
+
+ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
+                             std::vector<PartTopology> parts,
+                             std::vector<std::string> history_columns,
+                             std::vector<std::string> history_units)
+    : history_columns_(std::move(history_columns)) {
+  if (!history_units.empty() && history_units.size() != history_columns_.size()) {
+    throw std::invalid_argument(std::to_string(history_units.size()) + " history unit(s) for " +
+                                std::to_string(history_columns_.size()) + " column(s)");
+  }
+  // Check everything before touching the disk.
+  check_layout(parts, history_columns_);
+  set_directory(directory);
+  run_id_ = new_run_id();
+
+  try {
+    h5::File file(results_file(), h5::FileMode::truncate);
+    file.write_attribute("/", "format", std::string("sheetform results"));
+    file.write_attribute("/", "format_version", format_version);
+    file.create_group("/parts");
+    for (const PartTopology& part : parts) {
+      const std::string path = part_path(part.name);
+      const hsize_t cells = to_hsize(part.cells.cols());
+      const hsize_t nodes = to_hsize(part.reference_nodes.cols());
+      file.write(
+          path + "/connectivity",
+          std::span<const int>(part.cells.data(), static_cast<std::size_t>(part.cells.size())),
+          {cells, static_cast<hsize_t>(part.nodes_per_cell)});
+      file.write(path + "/reference_coordinates",
+                 std::span<const double>(part.reference_nodes.data(),
+                                         static_cast<std::size_t>(part.reference_nodes.size())),
+                 {nodes, 3});
+      const hsize_t triangles = to_hsize(part.triangles.cols());
+      if (triangles > 0) {
+        file.write(path + "/triangle_connectivity",
+                   std::span<const int>(part.triangles.data(),
+                                        static_cast<std::size_t>(part.triangles.size())),
+                   {triangles, 3});
+        std::vector<int> mixed;
+        mixed.reserve(static_cast<std::size_t>(5 * cells + 4 * triangles));
+        for (Eigen::Index e = 0; e < part.cells.cols(); ++e) {
+          mixed.push_back(kXdmfQuadrilateral);
+          for (int a = 0; a < 4; ++a) {
+            mixed.push_back(part.cells(a, e));
+          }
+        }
+        for (Eigen::Index k = 0; k < part.triangles.cols(); ++k) {
+          mixed.push_back(kXdmfTriangle);
+          for (int a = 0; a < 3; ++a) {
+            mixed.push_back(part.triangles(a, k));
+          }
+        }
+        file.write(path + "/mixed_connectivity", std::span<const int>(mixed), {mixed.size()});
+      }
+      // 4 quadrilaterals, 3 triangles, 0 mixed (quadrilaterals, then triangles).
+      file.write_attribute(path, "nodes_per_cell", triangles > 0 ? 0 : part.nodes_per_cell);
+      file.create_group(path + "/frames");
+      parts_.push_back(describe_part(part));
+    }
+    file.create_group("/history");
+    std::string column_list;
+    for (std::size_t c = 0; c < history_columns_.size(); ++c) {
+      const std::string& column = history_columns_[c];
+      file.create_extendible("/history/" + column, history_chunk_rows);
+      if (!history_units.empty()) {
+        file.write_attribute("/history/" + column, "unit", history_units[c]);
+      }
+      column_list += (column_list.empty() ? "" : ",") + column;
+    }
+    file.write_attribute("/history", "columns", column_list);
+    file.create_group("/run");
+    file.write_attribute("/run", "run_id", run_id_);
+    file.close();
+  } catch (const h5::Error& e) {
+    throw InputError("cannot write results in '" + directory_.string() + "': " + e.what());
+  }
+  write_xdmf_files();
+}
+
+ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
+                             std::vector<PartTopology> parts,
+                             std::vector<std::string> history_columns, const Resume& resume)
+    : history_columns_(std::move(history_columns)) {
+  check_layout(parts, history_columns_);
+  directory_ = std::filesystem::absolute(directory).lexically_normal();
+  for (const PartTopology& part : parts) {
+    parts_.push_back(describe_part(part));
+  }
+  const std::string where = results_file().string();
+  if (!std::filesystem::exists(results_file())) {
+    throw InputError(where +
+                     ": missing; a restart goes on writing the results of the run its "
+                     "checkpoint comes from (give that run's results folder with -o)");
+  }
+  try {
+    h5::File file(results_file(), h5::FileMode::read_write);
+    run_id_ = file.exists("/run") ? file.read_attribute_string("/run", "run_id") : "";
+    if (run_id_ != resume.run_id) {
+      throw InputError(where + ": holds the results of another run (run " + run_id_ +
+                       ") than the checkpoint's (run " + resume.run_id +
+                       "); give the checkpoint's own results folder with -o");
+    }
+    take_up(file, resume);
+    file.close();
+  } catch (const h5::Error& e) {
+    throw InputError(where + ": cannot take up the results for the restart: " + e.what());
+  }
+  write_xdmf_files();
+}
+
+void ResultsWriter::take_up(h5::File& file, const Resume& resume) {
+  const std::string where = results_file().string();
+  for (PartRecord& record : parts_) {
+    const std::string frames = part_path(record.grid.name) + "/frames";
+    if (!file.exists(frames)) {
+      throw InputError(where + ": has no part '" + record.grid.name + "' (another case's results)");
+    }
+    // Frames the run wrote after its checkpoint: the restart writes them again.
+    for (const std::string& name : file.list(frames)) {
+      if (std::stoi(name) >= resume.frames) {
+        file.remove(frames + "/" + name);
+      }
+    }
+    for (int index = 0; index < resume.frames; ++index) {
+      const std::string group = frame_path(record.grid.name, index);
+      if (!file.exists(group)) {
+        throw InputError(where + ": frame " + std::to_string(index) + " of part '" +
+                         record.grid.name + "' is missing; the checkpoint expects " +
+                         std::to_string(resume.frames) + " frames");
+      }
+      XdmfFrame frame;
+      frame.time = file.read_attribute_double(group, "time");
+      frame.cycle = file.read_attribute_int(group, "cycle");
+      frame.coordinates_dataset = group + "/coordinates";
+      for (const std::string& entry : split_list(file.read_attribute_string(group, "fields"))) {
+        const std::size_t slash = entry.rfind('/');
+        XdmfAttribute attribute;
+        attribute.name = entry.substr(0, slash);
+        attribute.center =
+            entry.substr(slash + 1) == "cell" ? FieldCenter::cell : FieldCenter::node;
+        attribute.dataset = group + "/" + attribute.name;
+        const std::vector<hsize_t> shape = file.shape(attribute.dataset);
+        attribute.components = shape.size() == 2 ? static_cast<int>(shape[1]) : 1;
+        frame.attributes.push_back(std::move(attribute));
+      }
+      last_time_ = frame.time;
+      record.frames.push_back(std::move(frame));
+    }
+  }
+  frame_count_ = resume.frames;
+  for (const std::string& column : history_columns_) {
+    const std::string path = "/history/" + column;
+    if (!file.exists(path) || file.shape(path).at(0) < resume.history_rows) {
+      throw InputError(where + ": history column '" + column + "' is missing or holds fewer than " +
+                       std::to_string(resume.history_rows) + " rows (another case's results)");
+    }
+    file.write_rows(path, resume.history_rows, {});  // drops the rows after the checkpoint
+  }
+  history_rows_written_ = resume.history_rows;
+}
+
+ResultsWriter::~ResultsWriter() {
+  try {
+    flush_history();
+  } catch (const std::exception& e) {
+    log_warning("history rows not written: {}\n", e.what());
+  }
+}
+
+std::filesystem::path ResultsWriter::xdmf_file(const std::string& part) const {
+  return directory_ / (part + ".xdmf");
+}
+
+const ResultsWriter::PartRecord& ResultsWriter::find_part(const std::string& name) const {
+  for (const PartRecord& record : parts_) {
+    if (record.grid.name == name) {
+      return record;
+    }
+  }
+  throw std::invalid_argument("results: unknown part '" + name + "'");
+}
+
+void ResultsWriter::check_frame(double time, const std::vector<PartFrameView>& parts) const {
+  const std::string frame = "results frame " + std::to_string(frame_count_);
+  if (!std::isfinite(time) || (frame_count_ > 0 && !(time > last_time_))) {
+    throw std::invalid_argument(frame + ": time " + std::to_string(time) +
+                                " must be finite and greater than the previous frame's " +
+                                std::to_string(last_time_));
+  }
+  if (parts.size() != parts_.size()) {
+    throw std::invalid_argument(frame + ": " + std::to_string(parts.size()) +
+                                " part(s) given, expected every one of the " +
+                                std::to_string(parts_.size()) + " parts once");
+  }
+  std::set<std::string> seen_parts;
+  for (const PartFrameView& view : parts) {
+    const PartRecord& record = find_part(view.part);
+    if (!seen_parts.insert(view.part).second) {
+      throw std::invalid_argument(frame + ": part '" + view.part + "' given twice");
+    }
+    if (static_cast<std::size_t>(view.coordinates.cols()) != record.grid.node_count) {
+      throw std::invalid_argument(
+          frame + ", part '" + view.part + "': " + std::to_string(view.coordinates.cols()) +
+          " node coordinates, expected " + std::to_string(record.grid.node_count));
+    }
+    std::set<std::string> seen_fields;
+    for (const FieldView& field : view.fields) {
+      const std::string where = frame + ", part '" + view.part + "', field '" + field.name + "'";
+      check_name(field.name, frame + ", part '" + view.part + "': field");
+      if (field.name == "coordinates" || !seen_fields.insert(field.name).second) {
+        throw std::invalid_argument(where + ": name reserved or given twice");
+      }
+      if (field.components != 1 && field.components != 3 && field.components != 6) {
+        throw std::invalid_argument(where + ": " + std::to_string(field.components) +
+                                    " components; expected 1, 3 or 6");
+      }
+      if (field.data == nullptr) {
+        throw std::invalid_argument(where + ": no data");
+      }
+    }
+  }
+}
+
+void ResultsWriter::write_frame(double time, int cycle, const std::vector<PartFrameView>& parts) {
+  check_frame(time, parts);
+  check_room(parts);
+  writing(directory_, [&] { write_checked_frame(time, cycle, parts); });
+}
+
+void ResultsWriter::check_room(const std::vector<PartFrameView>& parts) const {
+  // HDF5 cannot open a file it grew for a write that then failed (a full disk), so a frame is
+  // written only when twice its size and 1 MB fit; a disk filling up stops the run readable.
+  double bytes = 8.0 * static_cast<double>(history_buffer_.size()) + 1e6;
+  for (const PartFrameView& view : parts) {
+    const XdmfPart& grid = find_part(view.part).grid;
+    bytes += 24.0 * static_cast<double>(grid.node_count);
+    for (const FieldView& field : view.fields) {
+      const std::size_t rows =
+          field.center == FieldCenter::node ? grid.node_count : grid.cell_count;
+      bytes += 8.0 * static_cast<double>(rows) * field.components;
+    }
+  }
+  const double room = room_for(directory_, results_file());
+  if (room < 2.0 * bytes) {
+    throw OutputError(fmt::format(
+        "cannot write the results in {}: the disk is full ({:.1f} MB left, a frame needs about "
+        "{:.1f} MB); free some space, then run again or go on from the last checkpoint with "
+        "--restart",
+        directory_.string(), std::max(room, 0.0) / 1e6, bytes / 1e6));
+  }
+}
+
+void ResultsWriter::write_checked_frame(double time, int cycle,
+                                        const std::vector<PartFrameView>& parts) {
+  const int index = frame_count_;
+  std::vector<XdmfFrame> new_frames(parts_.size());
+  h5::File file(results_file(), h5::FileMode::read_write);
+  for (const PartFrameView& view : parts) {
+    const auto record_index = static_cast<std::size_t>(&find_part(view.part) - parts_.data());
+    const XdmfPart& grid = parts_[record_index].grid;
+    const std::string group = frame_path(view.part, index);
+    if (file.exists(group)) {
+      file.remove(group);  // left by an earlier attempt that failed half-way
+    }
+    XdmfFrame& frame = new_frames[record_index];
+    frame.time = time;
+    frame.cycle = cycle;
+    frame.coordinates_dataset = group + "/coordinates";
+    file.write(frame.coordinates_dataset,
+               std::span<const double>(view.coordinates.data(), grid.node_count * 3),
+               {grid.node_count, 3});
+    for (const FieldView& field : view.fields) {
+      const std::size_t rows =
+          field.center == FieldCenter::node ? grid.node_count : grid.cell_count;
+      const std::size_t columns = static_cast<std::size_t>(field.components);
+      XdmfAttribute attribute{field.name, field.center, field.components, group + "/" + field.name};
+      file.write(attribute.dataset, std::span<const double>(field.data, rows * columns),
+                 {rows, columns});
+      frame.attributes.push_back(std::move(attribute));
+    }
+    file.write_attribute(group, "time", time);
+    file.write_attribute(group, "cycle", cycle);
+    file.write_attribute(group, "fields", field_list(view.fields));
+  }
+  const std::size_t history_rows = write_history_rows(file);
+  file.close();
+  commit_history(history_rows);
+
+  // The frame is on disk: only now may the .xdmf files list it.
+  for (std::size_t i = 0; i < parts_.size(); ++i) {
+    parts_[i].frames.push_back(std::move(new_frames[i]));
+  }
+  frame_count_ = index + 1;
+  last_time_ = time;
+  write_xdmf_files();
+}
+
+void ResultsWriter::append_history(std::span<const double> row) {
+  if (row.size() != history_columns_.size()) {
+    throw std::invalid_argument("history row with " + std::to_string(row.size()) +
+                                " value(s), expected " + std::to_string(history_columns_.size()) +
+                                " (one per history column)");
+  }
+  history_buffer_.insert(history_buffer_.end(), row.begin(), row.end());
+}
+
+void ResultsWriter::flush_history() {
+  if (history_buffer_.empty()) {
+    return;
+  }
+  writing(directory_, [&] {
+    h5::File file(results_file(), h5::FileMode::read_write);
+    const std::size_t rows = write_history_rows(file);
+    file.close();
+    commit_history(rows);
+  });
+}
+
+std::size_t ResultsWriter::write_history_rows(h5::File& file) const {
+  const std::size_t columns = history_columns_.size();
+  if (columns == 0 || history_buffer_.empty()) {
+    return 0;
+  }
+  const std::size_t rows = history_buffer_.size() / columns;
+  std::vector<double> column_values(rows);
+  for (std::size_t c = 0; c < columns; ++c) {
+    for (std::size_t r = 0; r < rows; ++r) {
+      column_values[r] = history_buffer_[r * columns + c];
+    }
+    // Written at a fixed offset, so a retry after a failure does not duplicate rows.
+    file.write_rows("/history/" + history_columns_[c], history_rows_written_, column_values);
+  }
+  return rows;
+}
+
+void ResultsWriter::commit_history(std::size_t rows) {
+  history_rows_written_ += rows;
+  history_buffer_.clear();
+}
+
+void ResultsWriter::write_run_info(const std::string& key, const std::string& text) {
+  check_name(key, "run information key");
+  writing(directory_, [&] {
+    h5::File file(results_file(), h5::FileMode::read_write);
+    const std::string path = "/run/" + key;
+    if (file.exists(path)) {
+      file.remove(path);
+    }
+    file.write_string(path, text);
+    file.close();
+  });
+}
+
+void ResultsWriter::write_xdmf_files() const {
+  for (const PartRecord& record : parts_) {
+    write_file_atomically(xdmf_file(record.grid.name),
+                          make_xdmf(record.grid, record.frames, results_file_name));
+  }
+}
+
+}  // namespace sf
