@@ -78,7 +78,7 @@ def load_reference(case_dir):
         doc = tomlkit.parse(path.read_text())
     except Exception as error:  # tomlkit raises several types
         raise ReferenceFileError(f"{path}: {error}") from error
-    allowed = {"searches", *LENGTHS}
+    allowed = {"searches", "ci_searches", *LENGTHS}
     for key in doc:
         if key not in allowed:
             raise ReferenceFileError(f"{path}: unknown key '{key}' (expected {sorted(allowed)})")
@@ -86,6 +86,11 @@ def load_reference(case_dir):
     for s in searches:
         if s not in ("standard", "modified", "cached"):
             raise ReferenceFileError(f"{path}: searches: unknown search '{s}'")
+    # ci_searches: the searches whose short run is in CI (tests/CMakeLists.txt labels the other
+    # short runs slow); default all of them.
+    for s in doc.get("ci_searches", []):
+        if s not in searches:
+            raise ReferenceFileError(f"{path}: ci_searches: '{s}' is not one of searches {searches}")
     if "short" not in doc:
         raise ReferenceFileError(f"{path}: missing table [short] (the CI version)")
     for length in LENGTHS:

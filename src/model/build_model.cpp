@@ -219,7 +219,12 @@ void read_blank(const CaseConfig& config, Model& model) {
       try {
         blank.groups.push_back(extract_node_group(gmsh_model, blank.mesh, name));
       } catch (const InputError& error) {
-        throw InputError(fmt::format("{}: {}", key, error.what()));
+        std::string own;  // the case's [[node_group]] names, which a typo may have meant
+        for (const NodeGroupConfig& g : config.node_groups) {
+          own += (own.empty() ? "" : ", ") + g.name;
+        }
+        throw InputError(fmt::format("{}: {}{}", key, error.what(),
+                                     own.empty() ? "" : "; node groups of the case: " + own));
       }
       blank.groups.back().name = name;
     }

@@ -239,6 +239,10 @@ cad_blank="$src/tests/data/cad_blank/case.toml"
 expect "node group by plane" 0 "Boundary +'clamped': 11 nodes, fixed" -- "$sheetform" check "$cad_blank"
 expect "node group by point" 0 "Node group  'corner': 1 node, the node at \(60, 40, 0\) mm" -- \
   "$sheetform" check "$cad_blank"
+expect "misspelt node group" 2 "boundary\[0\].group: .*no physical group 'clampd'.*; node groups of the case: clamped, tip_edge, corner" -- \
+  "$sheetform" check "$cad_blank" --set 'boundary[0].group="clampd"'
+expect "empty node group" 2 "node_group\[1\]: node group 'tip_edge' chooses no blank node \(inside the box" -- \
+  "$sheetform" check "$cad_blank" --set 'node_group[1].box=[70.0, -1.0, -1.0, 71.0, 41.0, 1.0]'
 expect "node groups run" 0 "reaction prescribed_velocity\[0\] 'tip_edge'" -- \
   "$sheetform" run "$cad_blank" -o "$work/cad_blank"
 expect "node groups in the resolved case" 0 "^\\[\\[node_group\\]\\]" -- cat "$work/cad_blank/case.resolved.toml"

@@ -111,6 +111,18 @@ class ReferenceFile(unittest.TestCase):
             with self.assertRaisesRegex(regress.ReferenceFileError, message):
                 regress.load_reference(case)
 
+    def test_ci_searches_must_be_among_the_searches(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            case = pathlib.Path(tmp)
+            metric = '[short.metrics.m]\nfrom = "summary:x"\nvalue = 1.0\nrel = 0.01\nsource = "s"\n'
+            (case / "reference.toml").write_text(
+                'searches = ["modified", "standard"]\nci_searches = ["cached"]\n[short]\n' + metric)
+            with self.assertRaisesRegex(regress.ReferenceFileError, "ci_searches: 'cached' is not one of searches"):
+                regress.load_reference(case)
+            (case / "reference.toml").write_text(
+                'searches = ["modified", "standard"]\nci_searches = ["modified"]\n[short]\n' + metric)
+            self.assertEqual(regress.load_reference(case)[2], ["modified", "standard"])
+
     def test_bounds(self):
         base = {"from": "summary:x", "source": "s"}
         self.check({**base, "kind": "published", "min": 0.5}, None)
