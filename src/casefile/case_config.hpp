@@ -118,7 +118,7 @@ inline constexpr std::array<Choice<MaterialConfig::Type>, 5> kMaterialTypeNames{
 }};
 
 /// A mesh source: a .geo file meshed by gmsh, a ready .msh file, a CAD file (STEP, IGES, BREP)
-/// meshed by gmsh, or an STL file's triangles (io/mesh_import.hpp).
+/// meshed by gmsh, or an STL file's triangles (meshing/mesh_import.hpp).
 struct MeshSourceConfig {
   std::filesystem::path file;  ///< absolute (resolved against the case file's folder)
   /// physical group name holding the part's surface; for a CAD or STL file (which has no groups)

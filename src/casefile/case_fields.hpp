@@ -1,6 +1,6 @@
 #pragma once
-// The case file's field tables (io/case_schema.hpp), one per section: read_case reads by them,
-// format_resolved_case writes by them and `sheetform schema --markdown` prints them for
+// The case file's field tables (casefile/case_schema.hpp), one per section: read_case reads by
+// them, format_resolved_case writes by them and `sheetform schema --markdown` prints them for
 // docs/case-file.md. Not a public interface.
 #include <string>
 #include <vector>

@@ -274,7 +274,7 @@ Field<S> string_field(std::string key, std::string S::*m, std::string doc,
   return f;
 }
 
-/// A string that names results (io/result_name.hpp).
+/// A string that names results (core/result_name.hpp).
 template <typename S>
 Field<S> name_field(std::string key, std::string S::*m, std::string doc) {
   Field<S> f = string_field<S>(std::move(key), m, std::move(doc));

@@ -85,7 +85,7 @@ class TomlSection {
   /// A string; unless `allow_empty`, it must not be empty.
   bool read_string(std::string_view key, std::string& value, Presence presence = Presence::optional,
                    bool allow_empty = false) const;
-  /// A string that names results (io/result_name.hpp): plain letters, digits, '_', '-', '.'.
+  /// A string that names results (core/result_name.hpp): plain letters, digits, '_', '-', '.'.
   bool read_name(std::string_view key, std::string& value,
                  Presence presence = Presence::optional) const;
   /// A string that must be the name of one of `table`'s choices; stores its value.

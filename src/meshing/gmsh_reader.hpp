@@ -1,6 +1,6 @@
 #pragma once
 // Meshes from gmsh: a .geo file meshed through the gmsh API (2-D), a ready .msh file, or a CAD
-// (STEP, IGES, BREP) or STL file (io/mesh_import.hpp), read into plain data (GmshModel), from
+// (STEP, IGES, BREP) or STL file (meshing/mesh_import.hpp), read into plain data (GmshModel), from
 // which part meshes and node groups are taken by physical group name.
 // gmsh is used only here, serially, before the time loop.
 #include <cstddef>

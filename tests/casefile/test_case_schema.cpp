@@ -1,7 +1,7 @@
-// The case schema (io/case_schema.hpp, io/case_fields.hpp): every bundled case reads back to the
-// same case from its resolved form (the writer derived from the same tables as the reader), every
-// field is documented, the choice tables are one-to-one, and the reader's unknown-key and
-// not-applicable checks come from the tables.
+// The case schema (casefile/case_schema.hpp, casefile/case_fields.hpp): every bundled case reads
+// back to the same case from its resolved form (the writer derived from the same tables as the
+// reader), every field is documented, the choice tables are one-to-one, and the reader's
+// unknown-key and not-applicable checks come from the tables.
 #include <gtest/gtest.h>
 
 #include <filesystem>

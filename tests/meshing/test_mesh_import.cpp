@@ -1,5 +1,5 @@
-// Imported mesh sources (io/mesh_import.hpp through load_gmsh_model): STEP, IGES and BREP files
-// of one punch (tests/data/cad/punch.geo: exact surface areas) meshed as triangles, the STEP
+// Imported mesh sources (meshing/mesh_import.hpp through load_gmsh_model): STEP, IGES and BREP
+// files of one punch (tests/data/cad/punch.geo: exact surface areas) meshed as triangles, the STEP
 // file's unit conversion, scale, curvature refinement and surface selection; STL triangles taken
 // as they are (an open hat-shaped die of known area, a binary box), their orientation made
 // consistent and a non-manifold edge refused; a planar CAD face meshed as quadrilaterals for a
