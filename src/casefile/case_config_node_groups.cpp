@@ -2,7 +2,7 @@
 
 #include <fmt/core.h>
 
-#include <cmath>
+#include <array>
 
 #include "casefile/case_fields.hpp"
 
@@ -21,9 +21,16 @@ FieldTable<NodeGroupConfig> make_node_group_fields() {
   t.push_back(numbers_field<G>("point", &G::point, any_mm, 3, 3,
                                "with `normal`: a point of the plane (default the origin); alone: "
                                "the group is the one blank node nearest to it"));
-  t.push_back(numbers_field<G>("normal", &G::normal, NumberRange{}, 3, 3,
-                               "the nodes within `tolerance` of the plane through `point` with "
-                               "this normal; not all zero, normalised on reading"));
+  Field<G> normal = numbers_field<G>("normal", &G::normal, NumberRange{}, 3, 3,
+                                     "the nodes within `tolerance` of the plane through `point` "
+                                     "with this normal; not all zero, normalised on reading");
+  normal.read = [](const TomlSection& s, G& g, Presence) {
+    std::array<double, 3> n{};
+    if (s.read_direction("normal", n)) {  // refuses a zero vector; a unit one is kept bit for bit
+      g.normal.assign(n.begin(), n.end());
+    }
+  };
+  t.push_back(std::move(normal));
   t.push_back(numbers_field<G>("box", &G::box, any_mm, 6, 6,
                                "`[x_min, y_min, z_min, x_max, y_max, z_max]`: the nodes inside "
                                "the box (its faces moved out by `tolerance`)"));
@@ -36,22 +43,13 @@ FieldTable<NodeGroupConfig> make_node_group_fields() {
   return t;
 }
 
-/// The checks across keys: at least one criterion, a usable normal, an ordered box, a point
-/// either alone or with a normal.
-void check_node_group(const TomlSection& s, NodeGroupConfig& g) {
+/// The checks across keys: at least one criterion, an ordered box, a point either alone or with a
+/// normal.
+void check_node_group(const TomlSection& s, const NodeGroupConfig& g) {
   if (g.point.empty() && g.normal.empty() && g.box.empty() && !g.outline) {
     s.fail_missing("normal",
                    "at least one of point, normal, box, outline = true (a node group "
                    "chooses blank nodes by position)");
-  }
-  if (!g.normal.empty()) {
-    const double length = std::hypot(g.normal[0], g.normal[1], g.normal[2]);
-    if (!(length > 0.0) || !std::isfinite(length)) {
-      s.fail_value("normal", "a vector not all zero (the plane's normal)");
-    }
-    for (double& c : g.normal) {
-      c /= length;
-    }
   }
   for (std::size_t k = 0; k < 3 && !g.box.empty(); ++k) {
     if (g.box[k] > g.box[k + 3]) {

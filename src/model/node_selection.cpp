@@ -108,13 +108,14 @@ NodeGroup select_nodes(const NodeGroupConfig& config, const PartMesh& blank,
   const double tolerance =
       config.tolerance > 0.0 ? config.tolerance : default_node_tolerance(blank);
   const Vec3 origin = config.point.empty() ? Vec3::Zero() : vec(config.point);
+  const Vec3 normal = config.normal.empty() ? Vec3::Zero() : vec(config.normal);
   const std::vector<char> outline =
       config.outline ? outline_nodes(blank) : std::vector<char>(static_cast<std::size_t>(n), 1);
   for (Eigen::Index i = 0; i < n; ++i) {
     const Vec3 x = blank.nodes.col(i);
     bool chosen = outline[static_cast<std::size_t>(i)] != 0;
     if (chosen && !config.normal.empty()) {
-      chosen = std::abs((x - origin).dot(vec(config.normal))) <= tolerance;
+      chosen = std::abs((x - origin).dot(normal)) <= tolerance;
     }
     for (int k = 0; chosen && k < 3 && !config.box.empty(); ++k) {
       const auto kk = static_cast<std::size_t>(k);
