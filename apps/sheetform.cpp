@@ -40,6 +40,7 @@
 #include "core/log.hpp"
 #include "meshing/geo_safety.hpp"
 #include "meshing/gmsh_reader.hpp"
+#include "meshing/sandbox.hpp"
 #include "model/build_model.hpp"
 #include "model/constraint_assembly.hpp"
 #include "parallel/mpi_domain.hpp"
@@ -270,6 +271,14 @@ int check(const Arguments& args) {
   sf::print_model(loaded.config, loaded.model);
   sf::print_run_estimate(loaded.estimate, loaded.model);
   sf::report_tool_meshes(loaded.config, loaded.model);
+  if (sf::geo_system_calls_allowed()) {
+    sf::log_info(
+        "Sandbox     off (--allow-geo-system-calls): gmsh read the mesh files "
+        "unconfined, under its limits only\n");
+  } else {
+    sf::log_info("Sandbox     gmsh reads the mesh files in a sandbox: {}\n",
+                 sf::sandbox_support().describe());
+  }
   sf::log_info("Case is valid.\n");
   return sf::exit_ok;
 }
@@ -291,11 +300,11 @@ int mesh(const Arguments& args, const sf::MpiSession& mpi) {
   // Each part meshed from a .geo is also written as the .msh it made (gmsh ASCII 4.1), so a case
   // folder can keep its meshes beside their .geo files (scripts/update_case_meshes.sh).
   const sf::CaseConfig& c = loaded.config;
-  auto write_msh_of = [&out](const std::string& part, const sf::MeshSourceConfig& mesh,
-                             bool recombine) {
+  auto write_msh_of = [&out, &c](const std::string& part, const sf::MeshSourceConfig& mesh,
+                                 bool recombine) {
     if (mesh.file.extension() == ".geo") {
-      sf::write_msh(mesh.file, mesh.element_size, recombine, out / (part + ".msh"),
-                    mesh.parameters);
+      sf::write_msh(mesh.file, mesh.element_size, recombine, out / (part + ".msh"), mesh.parameters,
+                    sf::mesh_limits(c.limits));
     }
   };
   write_msh_of("blank", c.blank.mesh, c.blank.element == sf::BlankMeshing::quad);

@@ -12,7 +12,7 @@ cd "$(dirname "$0")/.."
 packages=(g++ cmake ninja-build pkg-config git libeigen3-dev libsuitesparse-dev libhdf5-dev hdf5-tools
           gmsh libgmsh-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libfmt-dev
           libgtest-dev python3-h5py python3-numpy python3-matplotlib python3-tomlkit
-          libopenmpi-dev openmpi-bin libmetis-dev)
+          libopenmpi-dev openmpi-bin libmetis-dev libseccomp-dev)
 if [ "${SF_WITH_PARAVIEW:-0}" = 1 ]; then
   packages+=(paraview python3-paraview xvfb xauth)
 fi

@@ -13,6 +13,7 @@
 #include "core/expression.hpp"
 #include "element/shell_choices.hpp"
 #include "meshing/geo_parameter.hpp"
+#include "meshing/mesh_limits.hpp"
 
 namespace sf {
 
@@ -353,10 +354,16 @@ struct LimitsConfig {
   int max_frames = 10000;        ///< control.output_frames
   double max_output_gb = 100.0;  ///< GB, estimated size of results.h5
   double max_memory_gb = 0.0;    ///< GB, estimated memory; 0 = this machine's memory
-  double mesh_seconds = 600.0;   ///< s of wall time gmsh may take to read and mesh one part
+  double mesh_seconds = 0.0;     ///< s of wall time gmsh may take for one part; 0 = scaled
+  double mesh_memory_gb = 0.0;   ///< GB gmsh may allocate for one part; 0 = this machine's memory
   /// deepest initial penetration of a tool into the blank, as a fraction of the blank thickness
   double max_initial_penetration = 0.5;
 };
+
+/// What gmsh may spend on one part of a case with these limits.
+inline MeshLimits mesh_limits(const LimitsConfig& limits) {
+  return {limits.mesh_seconds, limits.max_elements, limits.mesh_memory_gb};
+}
 
 struct OutputConfig {
   std::string directory = "results";  ///< relative to the case folder unless given with -o

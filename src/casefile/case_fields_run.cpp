@@ -130,10 +130,15 @@ FieldTable<LimitsConfig> make_limits_fields() {
       "the estimated memory (100 MB + 6 kB per blank element + 0.5 kB per tool triangle, from "
       "the measured peaks of the square cups, 900 to 22,500 quads); 0 = this machine's memory"));
   t.push_back(number_field<L>(
-      "mesh_seconds", &L::mesh_seconds, greater_than(0.0, "s"),
-      "the wall time gmsh may take to read and mesh one part. gmsh cannot be interrupted: past "
-      "it the process ends with exit code 2 and a message naming the file (a `.geo` loop "
-      "without end, a far too fine mesh)"));
+      "mesh_seconds", &L::mesh_seconds, at_least(0.0, "s"),
+      "the wall time gmsh may take to read and mesh one part; past it gmsh is stopped and the "
+      "run ends with exit code 2 and a message naming the file (a `.geo` loop without end, a "
+      "far too fine mesh). 0 = scaled with the job: 60 s + 4 s per MB of the file to read it, "
+      "then 60 s + 2 ms per element estimated to mesh it (docs/security.md)"));
+  t.push_back(number_field<L>(
+      "mesh_memory_gb", &L::mesh_memory_gb, at_least(0.0, "GB"),
+      "the memory gmsh may allocate reading and meshing one part, in its sandboxed process "
+      "(docs/security.md); 0 = this machine's memory"));
   t.push_back(number_field<L>(
       "max_initial_penetration", &L::max_initial_penetration, at_least(0.0),
       "the deepest penetration of a tool into the blank at the start (half the thickness less "

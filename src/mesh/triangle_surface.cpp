@@ -6,9 +6,11 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <utility>
 
 #include "core/errors.hpp"
+#include "mesh/consistent_orientation.hpp"
 
 namespace sf {
 
@@ -182,87 +184,33 @@ SurfaceOrientation orient_surface(TriangleSurface& surface, const Matrix3X& blan
   const int nt = surface.num_triangles();
   const TriConn& tri = surface.triangles();
 
-  // Edges: (lower node, higher node, triangle, +1 if the triangle runs lower -> higher).
-  struct EdgeUse {
-    int lo, hi, t, dir;
-  };
-  std::vector<EdgeUse> uses;
-  uses.reserve(3 * nt);
-  for (int t = 0; t < nt; ++t) {
-    for (int a = 0; a < 3; ++a) {
-      const int u = tri(a, t), v = tri((a + 1) % 3, t);
-      uses.push_back({std::min(u, v), std::max(u, v), t, u < v ? 1 : -1});
-    }
+  // One orientation per connected piece (mesh/consistent_orientation.hpp).
+  std::vector<int> offsets(nt + 1);
+  for (int t = 0; t <= nt; ++t) {
+    offsets[t] = 3 * t;
   }
-  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
-    return x.lo != y.lo ? x.lo < y.lo : (x.hi != y.hi ? x.hi < y.hi : x.t < y.t);
-  });
-  // Neighbour lists (CSR): for each triangle, (neighbour, same_direction) over shared edges.
-  std::vector<int> count(nt + 1, 0);
-  std::vector<std::array<int, 4>> links;         // t, neighbour, same direction (1/0), unused
-  std::vector<std::array<int, 3>> non_manifold;  // lo, hi, triangles
-  for (std::size_t i = 0; i < uses.size();) {
-    std::size_t j = i;
-    while (j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi) {
-      ++j;
+  const ConsistentOrientation consistent = orient_consistently(
+      offsets, std::span<const int>(tri.data(), 3 * static_cast<std::size_t>(nt)));
+  if (!consistent.non_manifold.empty()) {
+    std::vector<std::array<int, 3>> edges;
+    for (const NonManifoldEdge& e : consistent.non_manifold) {
+      edges.push_back({e.lo, e.hi, e.elements});
     }
-    if (j - i > 2) {
-      non_manifold.push_back({uses[i].lo, uses[i].hi, static_cast<int>(j - i)});
-    }
-    if (j - i == 2) {
-      const int same = uses[i].dir == uses[i + 1].dir ? 1 : 0;
-      links.push_back({uses[i].t, uses[i + 1].t, same, 0});
-      links.push_back({uses[i + 1].t, uses[i].t, same, 0});
-    }
-    i = j;
+    throw_non_manifold(surface, edges);
   }
-  if (!non_manifold.empty()) {
-    throw_non_manifold(surface, non_manifold);
+  if (consistent.conflict) {
+    const int t = consistent.conflict->element_a, u = consistent.conflict->element_b;
+    const Matrix3X& x = surface.nodes();
+    const Vec3 at = (x.col(tri(0, u)) + x.col(tri(1, u)) + x.col(tri(2, u))) / 3.0;
+    throw InputError(fmt::format(
+        "tool '{}': the surface is not orientable (a Moebius-like strip): going round it, "
+        "the orientation comes back reversed at ({:.4g}, {:.4g}, {:.4g}) mm, triangles {} "
+        "and {}; split the surface there or remove the twisted faces",
+        surface.name(), at.x(), at.y(), at.z(), t, u));
   }
-  std::sort(links.begin(), links.end());
-  for (const auto& l : links) {
-    ++count[l[0] + 1];
-  }
-  for (int t = 0; t < nt; ++t) {
-    count[t + 1] += count[t];
-  }
-
-  // Breadth-first propagation of a consistent orientation, component by component.
-  std::vector<int> component(nt, -1);
-  std::vector<char> flip(nt, 0);
-  std::vector<int> queue;
-  queue.reserve(nt);
-  int num_components = 0;
-  for (int seed = 0; seed < nt; ++seed) {
-    if (component[seed] >= 0) {
-      continue;
-    }
-    const int c = num_components++;
-    component[seed] = c;
-    queue.clear();
-    queue.push_back(seed);
-    for (std::size_t head = 0; head < queue.size(); ++head) {
-      const int t = queue[head];
-      for (int k = count[t]; k < count[t + 1]; ++k) {
-        const int u = links[k][1];
-        // Consistent neighbours run a shared edge in opposite directions.
-        const char want = static_cast<char>(flip[t] ^ links[k][2]);
-        if (component[u] < 0) {
-          component[u] = c;
-          flip[u] = want;
-          queue.push_back(u);
-        } else if (flip[u] != want) {
-          const Matrix3X& x = surface.nodes();
-          const Vec3 at = (x.col(tri(0, u)) + x.col(tri(1, u)) + x.col(tri(2, u))) / 3.0;
-          throw InputError(fmt::format(
-              "tool '{}': the surface is not orientable (a Moebius-like strip): going round it, "
-              "the orientation comes back reversed at ({:.4g}, {:.4g}, {:.4g}) mm, triangles {} "
-              "and {}; split the surface there or remove the twisted faces",
-              surface.name(), at.x(), at.y(), at.z(), t, u));
-        }
-      }
-    }
-  }
+  const std::vector<int>& component = consistent.piece;
+  const std::vector<char>& flip = consistent.flip;
+  const int num_components = consistent.num_pieces;
   SurfaceOrientation result;
   result.components = num_components;
   result.made_consistent = static_cast<int>(std::count(flip.begin(), flip.end(), 1));

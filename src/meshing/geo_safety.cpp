@@ -4,12 +4,14 @@
 
 #include <cctype>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "core/errors.hpp"
+#include "meshing/mesh_import.hpp"
 
 namespace sf {
 
@@ -111,12 +113,14 @@ void check_file(const std::filesystem::path& file, int depth) {
             file.string(), t.line, t.word));
       }
       const std::filesystem::path included = file.parent_path() / words[k + 1].word;
-      const std::string ext = included.extension().string();
+      // gmsh parses an Include as a script whatever its name, and a Merge of a file that is not
+      // a mesh or CAD format as a script too: those are followed.
+      const std::optional<MeshFormat> format = find_mesh_format(included);
+      const bool script = t.word == "Include" || !format || *format == MeshFormat::geo;
       // A name the system cannot look up (longer than NAME_MAX: found by fuzzing) is not
       // followed, like a missing file: gmsh cannot read it either, and says so.
       std::error_code unreadable;
-      if ((ext == ".geo" || ext.empty()) &&
-          std::filesystem::is_regular_file(included, unreadable)) {
+      if (script && std::filesystem::is_regular_file(included, unreadable)) {
         check_file(included, depth + 1);
       }
     }
@@ -130,8 +134,13 @@ bool& geo_system_calls_allowed() {
   return allowed;
 }
 
+bool& geo_scan_enabled() {
+  static bool enabled = true;
+  return enabled;
+}
+
 void check_geo_runs_no_commands(const std::filesystem::path& geo_file) {
-  if (!geo_system_calls_allowed()) {
+  if (!geo_system_calls_allowed() && geo_scan_enabled()) {
     check_file(geo_file, 0);
   }
 }

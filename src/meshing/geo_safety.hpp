@@ -7,8 +7,14 @@
 
 namespace sf {
 
-/// Whether .geo files may run commands (set once by the command line; false by default).
+/// Whether .geo files may run commands (set once by the command line; false by default): the
+/// scan below is skipped, and gmsh runs unconfined (meshing/sandbox.hpp; its limits still apply).
 bool& geo_system_calls_allowed();
+
+/// Whether the scan below runs (true by default). It is the friendly first message; the sandbox is
+/// what keeps a file from running commands, and tests switch the scan off to show that it holds
+/// alone.
+bool& geo_scan_enabled();
 
 /// Throws InputError naming the file, the line and the statement when `geo_file`, or a .geo it
 /// includes or merges (Include "..."; Merge "..."; relative to the including file), calls

@@ -128,13 +128,13 @@ std::vector<double> make_material_angles(const CaseConfig& config, const PartMes
 GmshModel load_mesh_source(const CaseConfig& config, const MeshSourceConfig& mesh,
                            const std::string& key, bool recombine) {
   try {
-    mesh_budget() = {config.limits.mesh_seconds, config.limits.max_elements};
     const MeshImportOptions import{.scale = mesh.scale,
                                    .curvature_elements = mesh.curvature_elements,
                                    .chord_error = mesh.chord_error,
                                    .surfaces = mesh.surfaces,
                                    .group = mesh.group};
-    return load_gmsh_model(mesh.file, mesh.element_size, recombine, mesh.parameters, import);
+    return load_gmsh_model(mesh.file, mesh.element_size, recombine, mesh.parameters, import,
+                           mesh_limits(config.limits));
   } catch (const GeoParameterError& error) {
     const GeoParameter& p = mesh.parameters.at(error.index());
     throw InputError(fmt::format("{}: {}.parameters.{}: {}",

@@ -1,9 +1,9 @@
-// Fuzz target: the mesh reader for .msh files (src/meshing/gmsh_reader.cpp): gmsh's MSH parser
-// through the gmsh API (a process-global session; load_gmsh_model opens and closes one per call),
-// then sheetform's own code on what gmsh returns: physical groups, part meshes (element types,
-// orientation propagation, degenerate elements) and node groups. Each input is written as
-// mesh.msh into a work folder. Only .msh files: a .geo could run commands (SystemCall) through
-// gmsh, so .geo text goes only to the geo scanner (fuzz_geo_safety.cpp).
+// Fuzz target: the mesh reader for .msh files (src/meshing/gmsh_reader.cpp): gmsh's MSH parser in
+// its sandboxed child (one per input: a crash there is an InputError here), the MSH 4.1 file it
+// hands back read by sheetform's parser, then sheetform's own code on the model: physical groups,
+// part meshes (element types, orientation propagation, degenerate elements) and node groups. Each
+// input is written as mesh.msh into a work folder. Only .msh files: .geo text goes to the geo
+// scanner (fuzz_geo_safety.cpp).
 // Checks: every reader call returns or throws sf::InputError, nothing else; a part mesh it returns
 // has in-range connectivity and one gmsh tag per node.
 #include <cstddef>
