@@ -50,6 +50,19 @@ std::string dims_text(const std::vector<hsize_t>& dims) {
   return text + "]";
 }
 
+/// Writes over attribute `name` of `object` in place when it has type `file_type`: the write then
+/// changes one block of the file (the results' frame count, their commit record, relies on it).
+/// False (nothing written) when its type differs.
+bool overwrite_attribute(hid_t object, const std::string& name, hid_t file_type, hid_t mem_type,
+                         const void* value) {
+  Handle attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT));
+  Handle type(attribute.valid() ? H5Aget_type(attribute.get()) : H5I_INVALID_HID);
+  if (!type.valid() || H5Tequal(type.get(), file_type) <= 0) {
+    return false;
+  }
+  return H5Awrite(attribute.get(), mem_type, value) >= 0;
+}
+
 /// A fixed-length UTF-8 string type of `size` bytes (at least 1), null-padded.
 Handle make_string_type(std::size_t size) {
   Handle type(H5Tcopy(H5T_C_S1));
@@ -141,6 +154,13 @@ void File::close() {
   }
   if (H5Fclose(file_.release()) < 0) {
     throw Error("cannot close HDF5 file '" + path_.string() + "': " + take_hdf5_message());
+  }
+}
+
+void File::flush() {
+  require_open("/");
+  if (H5Fflush(file_.get(), H5F_SCOPE_LOCAL) < 0) {
+    throw Error("cannot flush HDF5 file '" + path_.string() + "': " + take_hdf5_message());
   }
 }
 
@@ -391,11 +411,23 @@ Handle File::open_object(const std::string& path) const {
   return object;
 }
 
+bool File::has_attribute(const std::string& object_path, const std::string& name) const {
+  Handle object = open_object(object_path);
+  const htri_t found = H5Aexists(object.get(), name.c_str());
+  if (found < 0) {
+    fail("cannot look up attribute", object_path + "@" + name);
+  }
+  return found > 0;
+}
+
 void File::write_attribute_raw(const std::string& object_path, const std::string& name,
                                hid_t file_type, hid_t mem_type, const void* value) {
   Handle object = open_object(object_path);
   const std::string where = object_path + "@" + name;
   const htri_t found = H5Aexists(object.get(), name.c_str());
+  if (found > 0 && overwrite_attribute(object.get(), name, file_type, mem_type, value)) {
+    return;
+  }
   if (found < 0 || (found > 0 && H5Adelete(object.get(), name.c_str()) < 0)) {
     fail("cannot replace attribute", where);
   }

@@ -7,6 +7,7 @@
 
 #include "core/build_info.hpp"
 #include "core/errors.hpp"
+#include "results/detached_write.hpp"
 #include "results/hdf5_file.hpp"
 #include "solver/checkpoint_fields.hpp"
 
@@ -159,25 +160,29 @@ CheckpointInfo read_info(const h5::File& file, const std::string& where) {
 
 void write_checkpoint(const std::filesystem::path& file, const SolutionState& state,
                       const CheckpointInfo& info) {
-  std::filesystem::path temporary = file;
-  temporary += ".tmp";
-  try {
-    h5::File out(temporary, h5::FileMode::truncate);
-    write_info(out, info);
-    FieldWriter writer(out);
-    visit_checkpoint_fields(writer, state);
-    out.close();
-  } catch (const h5::Error& e) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw OutputError(fmt::format("cannot write the checkpoint {}: {}", file.string(), e.what()));
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, file, error);
-  if (error) {
-    throw OutputError(
-        fmt::format("cannot write the checkpoint {}: {}", file.string(), error.message()));
-  }
+  // In a detached child (results/detached_write.hpp): a kill of the run cannot leave the
+  // temporary file behind, the child finishes and renames it.
+  run_detached([&] {
+    std::filesystem::path temporary = file;
+    temporary += ".tmp";
+    try {
+      h5::File out(temporary, h5::FileMode::truncate);
+      write_info(out, info);
+      FieldWriter writer(out);
+      visit_checkpoint_fields(writer, state);
+      out.close();
+    } catch (const h5::Error& e) {
+      std::error_code ignored;
+      std::filesystem::remove(temporary, ignored);
+      throw OutputError(fmt::format("cannot write the checkpoint {}: {}", file.string(), e.what()));
+    }
+    std::error_code error;
+    std::filesystem::rename(temporary, file, error);
+    if (error) {
+      throw OutputError(
+          fmt::format("cannot write the checkpoint {}: {}", file.string(), error.message()));
+    }
+  });
 }
 
 CheckpointInfo read_checkpoint(const std::filesystem::path& file, SolutionState& state) {
