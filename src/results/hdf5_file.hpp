@@ -95,6 +95,11 @@ class File {
   void write(const std::string& path, std::span<const int> data, const std::vector<hsize_t>& dims);
   /// Shape of dataset `path`.
   std::vector<hsize_t> shape(const std::string& path) const;
+  /// Values dataset `path` holds (the product of its shape); throws Error when it is beyond what
+  /// may be read into memory (a damaged file).
+  std::size_t value_count(const std::string& path) const;
+  /// True if dataset `path` holds 64-bit floating-point numbers.
+  bool holds_doubles(const std::string& path) const;
   /// Reads a whole dataset, converted to double or int by HDF5.
   std::vector<double> read_doubles(const std::string& path) const;
   std::vector<int> read_ints(const std::string& path) const;
