@@ -149,7 +149,8 @@ void run_detached(const std::function<void()>& write) {
   constexpr std::size_t stack_bytes = std::size_t{8} << 20;  // touched pages only
   const SharedMemory shared(sizeof(Report));
   const SharedMemory stack(stack_bytes, MAP_PRIVATE | MAP_STACK | MAP_NORESERVE);
-  if (!shared.valid() || !stack.valid()) {
+  // A guard page below the stack: an overflow faults rather than writing over other memory.
+  if (!shared.valid() || !stack.valid() || ::mprotect(stack.data(), 4096, PROT_NONE) != 0) {
     write();  // no memory for a child: write here, as before
     return;
   }
