@@ -34,7 +34,9 @@ class Soak:
         self.args = args
         self.case = args.source / "cases" / "square_cup_aluminium" / "case.toml"
         self.env = dict(os.environ, OMP_WAIT_POLICY="passive")
-        self.counts = {"SIGKILL": 0, "SIGTERM": 0, "restart": 0, "fresh": 0, "ended_first": 0}
+        self.counts = {"SIGKILL": 0, "SIGTERM": 0, "restart": 0, "fresh": 0, "ended_first": 0,
+                       "runs_stopped": 0}
+        self.duration = 1.0  # s, a whole run's wall time: measured, then followed (the load varies)
         self.cycles = []  # cycles the restarts went on from
         self.total_cycles = 1
 
@@ -63,31 +65,41 @@ class Soak:
             out.flush()
             process = subprocess.Popen(self.command(folder, threads, extra), env=self.env,
                                        stdout=out, stderr=subprocess.STDOUT)
-            if kill is None:
-                return process.wait()
+            started = time.monotonic()
             try:
-                return process.wait(timeout=kill[1])  # ended before the signal
+                status = process.wait(timeout=None if kill is None else kill[1])
+                self.elapsed = time.monotonic() - started  # it ran to its end
+                return status
             except subprocess.TimeoutExpired:
                 process.send_signal(kill[0])
                 return process.wait()
 
-    def one_run(self, index, reference, duration):
+    def follow_the_load(self, cycle):
+        """A segment that ran to its end from `cycle` took self.elapsed s: the whole run's wall
+        time it implies updates self.duration, so that the kill moments follow the machine's
+        load."""
+        whole = self.elapsed / max(0.2, 1.0 - cycle / self.total_cycles)
+        self.duration = 0.7 * self.duration + 0.3 * whole
+
+    def one_run(self, index, reference):
         rng = random.Random(self.args.seed * 1000003 + index)
         folder = self.args.work / f"run{index:03d}"
         log = self.args.work / f"run{index:03d}.log"
         shutil.rmtree(folder, ignore_errors=True)
         log.unlink(missing_ok=True)
-        problems, extra, cycle = [], (), 0
+        problems, extra, cycle, stopped = [], (), 0, 0
         stops = rng.randint(1, 3)
         for stop in range(stops + 1):
             threads = rng.choice((1, 2))
             kill = None
             if stop < stops:
-                # Over what is left of the run (its time from the cycle it goes on from).
-                left = duration * max(0.2, 1.0 - cycle / self.total_cycles)
+                # Over most of what is left of the run (its time from the cycle it goes on
+                # from), so that nearly every drawn signal lands before the end.
+                left = 0.8 * self.duration * max(0.2, 1.0 - cycle / self.total_cycles)
                 kill = (rng.choice((signal.SIGKILL, signal.SIGTERM)), rng.uniform(0.0, left))
             status = self.segment(folder, log, threads, extra, kill)
             if status == 0:
+                self.follow_the_load(cycle)
                 if kill is not None:
                     self.counts["ended_first"] += 1
                 break
@@ -95,6 +107,8 @@ class Soak:
                 problems.append(f"exit {status} (stop {stop}, {kill})")
                 break
             self.counts[signal.Signals(kill[0]).name] += 1
+            self.counts["runs_stopped"] += stop == 0
+            stopped += 1
             kill_check.wait_for_writers(folder)
             problems += [f"after {signal.Signals(kill[0]).name}: {p}"
                          for p in kill_check.check_folder(folder)]
@@ -112,7 +126,7 @@ class Soak:
         if not problems:
             shutil.rmtree(folder, ignore_errors=True)
             log.unlink(missing_ok=True)
-        return stops, problems
+        return stopped, problems
 
     def go_on_from(self, folder):
         """The next part's options, a restart from the checkpoint or a new start, and the cycle
@@ -141,17 +155,18 @@ def main():
     args.work.mkdir(parents=True)
     soak = Soak(args)
     started = time.monotonic()
-    reference, duration = soak.reference()
-    print(f"uninterrupted run: {duration:.1f} s (--stroke {args.stroke}); seed {args.seed}",
+    reference, soak.duration = soak.reference()
+    print(f"uninterrupted run: {soak.duration:.1f} s (--stroke {args.stroke}); seed {args.seed}",
           flush=True)
     failures = 0
     for index in range(args.runs):
-        stops, problems = soak.one_run(index, reference, duration)
+        stops, problems = soak.one_run(index, reference)
         print(f"run {index:2d}: {stops} stop(s): " + ("same bits" if not problems else
                                                      "FAIL: " + "; ".join(problems)), flush=True)
         failures += bool(problems)
     c, cycles = soak.counts, sorted(soak.cycles)
-    print(f"{args.runs} runs: {c['SIGKILL']} SIGKILL, {c['SIGTERM']} SIGTERM, "
+    print(f"{args.runs} runs ({c['runs_stopped']} stopped at least once): {c['SIGKILL']} SIGKILL, "
+          f"{c['SIGTERM']} SIGTERM, "
           f"{c['restart']} restarts from a checkpoint (cycles {cycles[:1]}..{cycles[-1:]}), "
           f"{c['fresh']} new starts (killed before a checkpoint), {c['ended_first']} signals "
           f"after the end; {failures} failing; {time.monotonic() - started:.0f} s in all")
