@@ -126,10 +126,28 @@ void create_results_folder(const fs::path& out) {
 constexpr const char* kRunFiles[] = {"results.h5", "summary.json", "checkpoint.h5",
                                      "checkpoint.h5.tmp", "case.resolved.toml"};
 
+// A write's temporary files (<part>.xdmf.tmp, checkpoint.h5.tmp) are left only when every process
+// of a run was killed at once inside a write (docs/results-format.md): the next run in the folder
+// removes them.
+bool is_leftover_temporary(const fs::path& file) {
+  return file.filename() == "checkpoint.h5.tmp" ||
+         (file.extension() == ".tmp" && file.stem().extension() == ".xdmf");
+}
+
+void remove_leftover_temporaries(const fs::path& out) {
+  std::error_code error;
+  for (const fs::directory_entry& entry : fs::directory_iterator(out, error)) {
+    if (is_leftover_temporary(entry.path())) {
+      fs::remove(entry.path(), error);
+    }
+  }
+}
+
 // A folder holding an earlier run's results is not mixed with a new run: refused, unless
 // --overwrite, which removes that run's files (and only those) first. A restart goes on in it.
 void clear_earlier_run(const Arguments& args, const fs::path& out) {
   if (!args.restart.empty()) {
+    remove_leftover_temporaries(out);
     return;
   }
   std::vector<fs::path> earlier;
@@ -148,7 +166,7 @@ void clear_earlier_run(const Arguments& args, const fs::path& out) {
         out.string(), earlier.front().filename().string(), sf::checkpoint_path(out).string()));
   }
   for (const fs::directory_entry& entry : fs::directory_iterator(out)) {
-    if (entry.path().extension() == ".xdmf") {
+    if (entry.path().extension() == ".xdmf" || is_leftover_temporary(entry.path())) {
       earlier.push_back(entry.path());
     }
   }

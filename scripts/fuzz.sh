@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # libFuzzer runs of the input readers (tests/fuzz, docs/tooling.md).
 #
-#   scripts/fuzz.sh short              CI: case_reader and mesh_reader 50 s each, geo_safety 20 s
-#                                      (it covers its scanner within seconds), msh41 15 s (a
-#                                      parser without gmsh: a million inputs); SF_FUZZ_SECONDS=N
-#                                      gives every target N s
+#   scripts/fuzz.sh short              CI: case_reader and mesh_reader 50 s each, geo_safety and
+#                                      checkpoint 20 s (the scanner is covered within seconds;
+#                                      the checkpoint's findings lie in libhdf5, met in seconds
+#                                      or not in minutes), msh41 15 s (a parser without gmsh: a
+#                                      million inputs); SF_FUZZ_SECONDS=N gives every target N s
 #   scripts/fuzz.sh long HOURS         HOURS (e.g. 0.5, 8) shared equally among the targets; a
 #                                      finding does not stop the run (libFuzzer's fork mode)
 #   scripts/fuzz.sh build              only configure and build (preset fuzz, build-fuzz/)
@@ -12,15 +13,16 @@
 #
 # Targets (tests/fuzz/fuzz_<name>.cpp): case_reader (case.toml -> read_case, and the resolved case
 # must read back to the same text), mesh_reader (.msh through gmsh -> load_gmsh_model,
-# extract_part_mesh, extract_node_group), geo_safety (the .geo command scanner) and msh41 (the
-# MSH 4.1 binary reader of what the sandboxed gmsh hands back). A finding is
+# extract_part_mesh, extract_node_group), geo_safety (the .geo command scanner), checkpoint
+# (checkpoint.h5 -> read_checkpoint, into the state of cases/verify_bounce) and msh41 (the MSH 4.1
+# binary reader of what the sandboxed gmsh hands back). A finding is
 # a crash, a sanitizer report (ASan, UBSan), an exception other than sf::InputError, a broken
 # property, a timeout (SF_FUZZ_TIMEOUT s per input) or more memory than SF_FUZZ_RSS_MB.
 #
 # Seeds (build-fuzz/seeds/<name>, made anew each run): every cases/*/case.toml; the .msh files in
 # cases/ up to the target's max_len and .msh files gmsh makes from tests/data/*.geo, in MSH 4.1
-# and 2.2; every .geo in cases/ and tests/data; MSH 4.1 binary files gmsh makes from tests/data/*.geo
-# (msh41). Plus every saved finding in
+# and 2.2; every .geo in cases/ and tests/data; the checkpoints in tests/fuzz/seeds/checkpoint; MSH
+# 4.1 binary files gmsh makes from tests/data/*.geo (msh41). Plus every saved finding in
 # tests/fuzz/regressions/<name>. The case reader gets a dictionary of the case file's keys taken
 # from src/casefile (build-fuzz/case_reader.dict), the others small dictionaries in tests/fuzz.
 # The corpus grows in build-fuzz/corpus/<name> and is kept between runs in the same build folder.
@@ -39,11 +41,11 @@ sf_cores() { env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc; }
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
 mode="${1:-short}"
-all_targets="case_reader mesh_reader geo_safety msh41"
+all_targets="case_reader mesh_reader geo_safety checkpoint msh41"
 targets="${SF_FUZZ_TARGETS:-$all_targets}"
 timeout_s="${SF_FUZZ_TIMEOUT:-20}"
 rss_mb="${SF_FUZZ_RSS_MB:-4096}"
-declare -A seconds_of=([case_reader]=50 [mesh_reader]=50 [geo_safety]=20 [msh41]=15)
+declare -A seconds_of=([case_reader]=50 [mesh_reader]=50 [geo_safety]=20 [checkpoint]=20 [msh41]=15)
 case "$mode" in
   short)
     if [ -n "${SF_FUZZ_SECONDS:-}" ]; then
@@ -80,12 +82,15 @@ echo "== Built in $(( $(date +%s) - start )) s"
 # --- seeds, made anew
 seeds="$build/seeds"
 rm -rf "$seeds"
-mkdir -p "$seeds/case_reader" "$seeds/mesh_reader" "$seeds/geo_safety" "$seeds/msh41"
+mkdir -p "$seeds/case_reader" "$seeds/mesh_reader" "$seeds/geo_safety" "$seeds/checkpoint" \
+  "$seeds/msh41"
+cp tests/fuzz/seeds/checkpoint/* "$seeds/checkpoint/"
 for f in cases/*/case.toml; do cp "$f" "$seeds/case_reader/$(basename "$(dirname "$f")").toml"; done
 for f in cases/*/*.geo tests/data/*.geo; do
   cp "$f" "$seeds/geo_safety/$(basename "$(dirname "$f")")_$(basename "$f")"
 done
-declare -A max_len=([case_reader]=16384 [mesh_reader]=32768 [geo_safety]=8192 [msh41]=32768)
+declare -A max_len=([case_reader]=16384 [mesh_reader]=32768 [geo_safety]=8192 [checkpoint]=65536
+                    [msh41]=32768)
 for f in cases/*/*.msh; do
   [ "$(stat -c %s "$f")" -le "${max_len[mesh_reader]}" ] \
     && cp "$f" "$seeds/mesh_reader/$(basename "$(dirname "$f")")_$(basename "$f")"

@@ -50,6 +50,33 @@ std::string dims_text(const std::vector<hsize_t>& dims) {
   return text + "]";
 }
 
+/// Values a dataspace holds (-1 when HDF5 cannot tell): a scalar read must meet exactly 1, or
+/// HDF5 would write past the one value it is given.
+hssize_t point_count(hid_t space) {
+  return space < 0 ? -1 : H5Sget_simple_extent_npoints(space);
+}
+
+/// The longest text read from a file: more is a damaged file, not text (attributes of this format
+/// hold 64 KiB at most; run information is a resolved case).
+constexpr std::size_t max_text_bytes = std::size_t{1} << 28;
+
+/// The most values read into memory at once (16 GiB of doubles): a damaged file's shape may claim
+/// any number.
+constexpr hsize_t max_values = hsize_t{1} << 31;
+
+/// Writes over attribute `name` of `object` in place when it has type `file_type`: the write then
+/// changes one block of the file (the results' frame count, their commit record, relies on it).
+/// False (nothing written) when its type differs.
+bool overwrite_attribute(hid_t object, const std::string& name, hid_t file_type, hid_t mem_type,
+                         const void* value) {
+  Handle attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT));
+  Handle type(attribute.valid() ? H5Aget_type(attribute.get()) : H5I_INVALID_HID);
+  if (!type.valid() || H5Tequal(type.get(), file_type) <= 0) {
+    return false;
+  }
+  return H5Awrite(attribute.get(), mem_type, value) >= 0;
+}
+
 /// A fixed-length UTF-8 string type of `size` bytes (at least 1), null-padded.
 Handle make_string_type(std::size_t size) {
   Handle type(H5Tcopy(H5T_C_S1));
@@ -141,6 +168,13 @@ void File::close() {
   }
   if (H5Fclose(file_.release()) < 0) {
     throw Error("cannot close HDF5 file '" + path_.string() + "': " + take_hdf5_message());
+  }
+}
+
+void File::flush() {
+  require_open("/");
+  if (H5Fflush(file_.get(), H5F_SCOPE_LOCAL) < 0) {
+    throw Error("cannot flush HDF5 file '" + path_.string() + "': " + take_hdf5_message());
   }
 }
 
@@ -279,14 +313,36 @@ void File::read_array(const std::string& path, void* data, std::size_t count,
   }
 }
 
+bool File::holds_doubles(const std::string& path) const {
+  require_open(path);
+  Handle dataset(H5Dopen2(file_.get(), path.c_str(), H5P_DEFAULT));
+  if (!dataset.valid()) {
+    fail("cannot open dataset", path);
+  }
+  Handle type(H5Dget_type(dataset.get()));
+  return type.valid() && H5Tget_class(type.get()) == H5T_FLOAT && H5Tget_size(type.get()) == 8;
+}
+
+std::size_t File::value_count(const std::string& path) const {
+  hsize_t count = 1;
+  for (const hsize_t n : shape(path)) {
+    if (n != 0 && count > max_values / n) {
+      throw Error("cannot read '" + path + "' in HDF5 file '" + path_.string() + "': shape " +
+                  dims_text(shape(path)) + " is too large");
+    }
+    count *= n;
+  }
+  return static_cast<std::size_t>(count);
+}
+
 std::vector<double> File::read_doubles(const std::string& path) const {
-  std::vector<double> values(product(shape(path)));
+  std::vector<double> values(value_count(path));
   read_array(path, values.data(), values.size(), H5T_NATIVE_DOUBLE);
   return values;
 }
 
 std::vector<int> File::read_ints(const std::string& path) const {
-  std::vector<int> values(product(shape(path)));
+  std::vector<int> values(value_count(path));
   read_array(path, values.data(), values.size(), H5T_NATIVE_INT);
   return values;
 }
@@ -369,9 +425,11 @@ std::string File::read_string(const std::string& path) const {
     fail("cannot open dataset", path);
   }
   Handle file_type(H5Dget_type(dataset.get()));
-  if (H5Tget_class(file_type.get()) != H5T_STRING || H5Tis_variable_str(file_type.get()) != 0) {
+  Handle space(H5Dget_space(dataset.get()));
+  if (H5Tget_class(file_type.get()) != H5T_STRING || H5Tis_variable_str(file_type.get()) != 0 ||
+      point_count(space.get()) != 1 || H5Tget_size(file_type.get()) > max_text_bytes) {
     throw Error("cannot read '" + path + "' in HDF5 file '" + path_.string() +
-                "': not a fixed-length string");
+                "': not one fixed-length string");
   }
   const std::size_t size = H5Tget_size(file_type.get());
   Handle type = make_string_type(size);
@@ -391,11 +449,23 @@ Handle File::open_object(const std::string& path) const {
   return object;
 }
 
+bool File::has_attribute(const std::string& object_path, const std::string& name) const {
+  Handle object = open_object(object_path);
+  const htri_t found = H5Aexists(object.get(), name.c_str());
+  if (found < 0) {
+    fail("cannot look up attribute", object_path + "@" + name);
+  }
+  return found > 0;
+}
+
 void File::write_attribute_raw(const std::string& object_path, const std::string& name,
                                hid_t file_type, hid_t mem_type, const void* value) {
   Handle object = open_object(object_path);
   const std::string where = object_path + "@" + name;
   const htri_t found = H5Aexists(object.get(), name.c_str());
+  if (found > 0 && overwrite_attribute(object.get(), name, file_type, mem_type, value)) {
+    return;
+  }
   if (found < 0 || (found > 0 && H5Adelete(object.get(), name.c_str()) < 0)) {
     fail("cannot replace attribute", where);
   }
@@ -411,7 +481,15 @@ void File::read_attribute_raw(const std::string& object_path, const std::string&
                               hid_t mem_type, void* value) const {
   Handle object = open_object(object_path);
   Handle attribute(H5Aopen(object.get(), name.c_str(), H5P_DEFAULT));
-  if (!attribute.valid() || H5Aread(attribute.get(), mem_type, value) < 0) {
+  if (!attribute.valid()) {
+    fail("cannot read attribute", object_path + "@" + name);
+  }
+  Handle space(H5Aget_space(attribute.get()));
+  if (point_count(space.get()) != 1) {
+    throw Error("cannot read attribute '" + object_path + "@" + name + "' in HDF5 file '" +
+                path_.string() + "': not a single value");
+  }
+  if (H5Aread(attribute.get(), mem_type, value) < 0) {
     fail("cannot read attribute", object_path + "@" + name);
   }
 }
@@ -453,9 +531,11 @@ std::string File::read_attribute_string(const std::string& object_path,
     fail("cannot open attribute", where);
   }
   Handle file_type(H5Aget_type(attribute.get()));
-  if (H5Tget_class(file_type.get()) != H5T_STRING || H5Tis_variable_str(file_type.get()) != 0) {
+  Handle space(H5Aget_space(attribute.get()));
+  if (H5Tget_class(file_type.get()) != H5T_STRING || H5Tis_variable_str(file_type.get()) != 0 ||
+      point_count(space.get()) != 1 || H5Tget_size(file_type.get()) > max_text_bytes) {
     throw Error("cannot read attribute '" + where + "' in HDF5 file '" + path_.string() +
-                "': not a fixed-length string");
+                "': not one fixed-length string");
   }
   const std::size_t size = H5Tget_size(file_type.get());
   Handle type = make_string_type(size);

@@ -76,6 +76,9 @@ class File {
 
   /// Flushes and closes the file; throws Error on failure. Later calls do nothing.
   void close();
+  /// Writes everything HDF5 holds for the file to it (the operating system's cache, not yet
+  /// the disk); throws Error on failure.
+  void flush();
 
   /// True if a link `path` exists (every parent must exist too; a missing parent gives false).
   bool exists(const std::string& path) const;
@@ -92,6 +95,11 @@ class File {
   void write(const std::string& path, std::span<const int> data, const std::vector<hsize_t>& dims);
   /// Shape of dataset `path`.
   std::vector<hsize_t> shape(const std::string& path) const;
+  /// Values dataset `path` holds (the product of its shape); throws Error when it is beyond what
+  /// may be read into memory (a damaged file).
+  std::size_t value_count(const std::string& path) const;
+  /// True if dataset `path` holds 64-bit floating-point numbers.
+  bool holds_doubles(const std::string& path) const;
   /// Reads a whole dataset, converted to double or int by HDF5.
   std::vector<double> read_doubles(const std::string& path) const;
   std::vector<int> read_ints(const std::string& path) const;
@@ -109,7 +117,10 @@ class File {
   void write_string(const std::string& path, const std::string& text);
   std::string read_string(const std::string& path) const;
 
-  /// Scalar attributes on the object at `object_path` (an existing one is replaced).
+  /// True if the object at `object_path` has an attribute `name`.
+  bool has_attribute(const std::string& object_path, const std::string& name) const;
+  /// Scalar attributes on the object at `object_path`. An existing one of the same type is
+  /// written over in place (no new space in the file); one of another type is replaced.
   void write_attribute(const std::string& object_path, const std::string& name, double value);
   void write_attribute(const std::string& object_path, const std::string& name, int value);
   void write_attribute(const std::string& object_path, const std::string& name,

@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <fcntl.h>
 #include <sys/resource.h>
 #include <sys/statvfs.h>
 #include <unistd.h>
@@ -18,6 +19,7 @@
 #include "core/errors.hpp"
 #include "core/log.hpp"
 #include "core/result_name.hpp"
+#include "results/detached_write.hpp"
 #include "results/hdf5_file.hpp"
 
 namespace sf {
@@ -26,6 +28,10 @@ namespace {
 constexpr const char* results_file_name = "results.h5";
 constexpr int format_version = 1;
 constexpr hsize_t history_chunk_rows = 1024;
+// The commit record: /parts attribute "frames", the number of frames written whole. A frame
+// group at or past it is a write that was cut (only a kill of every process of the run at once
+// or a power loss can cut one); readers ignore it and the next write replaces it.
+constexpr const char* frames_attribute = "frames";
 
 void check_name(const std::string& name, const std::string& what) {
   if (!is_plain_name(name)) {
@@ -106,6 +112,21 @@ std::vector<std::string> split_list(const std::string& list) {
     begin = comma + 1;
   }
   return items;
+}
+
+// Flushes `file` to the disk (HDF5 1.10's default driver does not), so that what the commit
+// record or an .xdmf names survives a power loss as well as a kill.
+void sync_to_disk(const std::filesystem::path& file) {
+  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0 || ::fsync(fd) != 0) {
+    const std::error_code error(errno, std::generic_category());
+    if (fd >= 0) {
+      ::close(fd);
+    }
+    throw std::runtime_error("cannot flush '" + file.string() +
+                             "' to the disk: " + error.message());
+  }
+  ::close(fd);
 }
 
 // A name for this run that another run will not have: the clock and the process.
@@ -204,12 +225,23 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
   check_layout(parts, history_columns_);
   set_directory(directory);
   run_id_ = new_run_id();
+  for (const PartTopology& part : parts) {
+    parts_.push_back(describe_part(part));
+  }
+  run_detached([&] {
+    create_file(parts, history_units);
+    write_xdmf_files();
+  });
+}
 
+void ResultsWriter::create_file(const std::vector<PartTopology>& parts,
+                                const std::vector<std::string>& history_units) const {
   try {
     h5::File file(results_file(), h5::FileMode::truncate);
     file.write_attribute("/", "format", std::string("sheetform results"));
     file.write_attribute("/", "format_version", format_version);
     file.create_group("/parts");
+    file.write_attribute("/parts", frames_attribute, 0);
     for (const PartTopology& part : parts) {
       const std::string path = part_path(part.name);
       const hsize_t cells = to_hsize(part.cells.cols());
@@ -247,7 +279,6 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
       // 4 quadrilaterals, 3 triangles, 0 mixed (quadrilaterals, then triangles).
       file.write_attribute(path, "nodes_per_cell", triangles > 0 ? 0 : part.nodes_per_cell);
       file.create_group(path + "/frames");
-      parts_.push_back(describe_part(part));
     }
     file.create_group("/history");
     std::string column_list;
@@ -266,7 +297,6 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
   } catch (const h5::Error& e) {
     throw InputError("cannot write results in '" + directory_.string() + "': " + e.what());
   }
-  write_xdmf_files();
 }
 
 ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
@@ -285,37 +315,42 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
                      "checkpoint comes from (give that run's results folder with -o)");
   }
   try {
-    h5::File file(results_file(), h5::FileMode::read_write);
+    const h5::File file(results_file(), h5::FileMode::read_only);
     run_id_ = file.exists("/run") ? file.read_attribute_string("/run", "run_id") : "";
     if (run_id_ != resume.run_id) {
       throw InputError(where + ": holds the results of another run (run " + run_id_ +
                        ") than the checkpoint's (run " + resume.run_id +
                        "); give the checkpoint's own results folder with -o");
     }
-    take_up(file, resume);
-    file.close();
+    read_kept_frames(file, resume);
   } catch (const h5::Error& e) {
     throw InputError(where + ": cannot take up the results for the restart: " + e.what());
   }
-  write_xdmf_files();
+  run_detached([&] {
+    try {
+      h5::File file(results_file(), h5::FileMode::read_write);
+      drop_later_output(file, resume);
+    } catch (const h5::Error& e) {
+      throw InputError(where + ": cannot take up the results for the restart: " + e.what());
+    }
+    write_xdmf_files();
+  });
 }
 
-void ResultsWriter::take_up(h5::File& file, const Resume& resume) {
+void ResultsWriter::read_kept_frames(const h5::File& file, const Resume& resume) {
   const std::string where = results_file().string();
+  // A file written before the commit record counts every frame group it has.
+  const int committed = file.has_attribute("/parts", frames_attribute)
+                            ? file.read_attribute_int("/parts", frames_attribute)
+                            : resume.frames;
   for (PartRecord& record : parts_) {
     const std::string frames = part_path(record.grid.name) + "/frames";
     if (!file.exists(frames)) {
       throw InputError(where + ": has no part '" + record.grid.name + "' (another case's results)");
     }
-    // Frames the run wrote after its checkpoint: the restart writes them again.
-    for (const std::string& name : file.list(frames)) {
-      if (std::stoi(name) >= resume.frames) {
-        file.remove(frames + "/" + name);
-      }
-    }
     for (int index = 0; index < resume.frames; ++index) {
       const std::string group = frame_path(record.grid.name, index);
-      if (!file.exists(group)) {
+      if (index >= committed || !file.exists(group)) {
         throw InputError(where + ": frame " + std::to_string(index) + " of part '" +
                          record.grid.name + "' is missing; the checkpoint expects " +
                          std::to_string(resume.frames) + " frames");
@@ -346,9 +381,24 @@ void ResultsWriter::take_up(h5::File& file, const Resume& resume) {
       throw InputError(where + ": history column '" + column + "' is missing or holds fewer than " +
                        std::to_string(resume.history_rows) + " rows (another case's results)");
     }
-    file.write_rows(path, resume.history_rows, {});  // drops the rows after the checkpoint
   }
   history_rows_written_ = resume.history_rows;
+}
+
+void ResultsWriter::drop_later_output(h5::File& file, const Resume& resume) const {
+  for (const PartRecord& record : parts_) {
+    // Frames the run wrote after its checkpoint: the restart writes them again.
+    const std::string frames = part_path(record.grid.name) + "/frames";
+    for (const std::string& name : file.list(frames)) {
+      if (std::stoi(name) >= resume.frames) {
+        file.remove(frames + "/" + name);
+      }
+    }
+  }
+  for (const std::string& column : history_columns_) {
+    file.write_rows("/history/" + column, resume.history_rows, {});  // drops the later rows
+  }
+  commit_frames(file, resume.frames);
 }
 
 ResultsWriter::~ResultsWriter() {
@@ -364,9 +414,13 @@ std::filesystem::path ResultsWriter::xdmf_file(const std::string& part) const {
 }
 
 const ResultsWriter::PartRecord& ResultsWriter::find_part(const std::string& name) const {
-  for (const PartRecord& record : parts_) {
-    if (record.grid.name == name) {
-      return record;
+  return parts_[part_index(name)];
+}
+
+std::size_t ResultsWriter::part_index(const std::string& name) const {
+  for (std::size_t i = 0; i < parts_.size(); ++i) {
+    if (parts_[i].grid.name == name) {
+      return i;
     }
   }
   throw std::invalid_argument("results: unknown part '" + name + "'");
@@ -444,47 +498,76 @@ void ResultsWriter::check_room(const std::vector<PartFrameView>& parts) const {
 
 void ResultsWriter::write_checked_frame(double time, int cycle,
                                         const std::vector<PartFrameView>& parts) {
-  const int index = frame_count_;
-  std::vector<XdmfFrame> new_frames(parts_.size());
-  h5::File file(results_file(), h5::FileMode::read_write);
+  const std::vector<XdmfFrame> frames = describe_frame(time, cycle, parts);
+  const std::size_t history_rows =
+      history_columns_.empty() ? 0 : history_buffer_.size() / history_columns_.size();
+  run_detached([&] {
+    store_frame(frames, parts);
+    write_xdmf_files(&frames);  // the frame is committed: only now may the .xdmf files list it
+  });
+  commit_history(history_rows);
+  for (std::size_t i = 0; i < parts_.size(); ++i) {
+    parts_[i].frames.push_back(frames[i]);
+  }
+  frame_count_ += 1;
+  last_time_ = time;
+}
+
+std::vector<XdmfFrame> ResultsWriter::describe_frame(
+    double time, int cycle, const std::vector<PartFrameView>& parts) const {
+  std::vector<XdmfFrame> frames(parts_.size());
   for (const PartFrameView& view : parts) {
-    const auto record_index = static_cast<std::size_t>(&find_part(view.part) - parts_.data());
-    const XdmfPart& grid = parts_[record_index].grid;
-    const std::string group = frame_path(view.part, index);
-    if (file.exists(group)) {
-      file.remove(group);  // left by an earlier attempt that failed half-way
-    }
-    XdmfFrame& frame = new_frames[record_index];
+    XdmfFrame& frame = frames[part_index(view.part)];
+    const std::string group = frame_path(view.part, frame_count_);
     frame.time = time;
     frame.cycle = cycle;
     frame.coordinates_dataset = group + "/coordinates";
+    for (const FieldView& field : view.fields) {
+      frame.attributes.push_back(
+          XdmfAttribute{field.name, field.center, field.components, group + "/" + field.name});
+    }
+  }
+  return frames;
+}
+
+void ResultsWriter::store_frame(const std::vector<XdmfFrame>& frames,
+                                const std::vector<PartFrameView>& parts) const {
+  h5::File file(results_file(), h5::FileMode::read_write);
+  for (const PartFrameView& view : parts) {
+    const std::size_t index = part_index(view.part);
+    const XdmfPart& grid = parts_[index].grid;
+    const XdmfFrame& frame = frames[index];
+    const std::string group = frame_path(view.part, frame_count_);
+    if (file.exists(group)) {
+      file.remove(group);  // left by a write that failed (or was cut) half-way
+    }
     file.write(frame.coordinates_dataset,
                std::span<const double>(view.coordinates.data(), grid.node_count * 3),
                {grid.node_count, 3});
-    for (const FieldView& field : view.fields) {
+    for (std::size_t f = 0; f < view.fields.size(); ++f) {
+      const FieldView& field = view.fields[f];
       const std::size_t rows =
           field.center == FieldCenter::node ? grid.node_count : grid.cell_count;
-      const std::size_t columns = static_cast<std::size_t>(field.components);
-      XdmfAttribute attribute{field.name, field.center, field.components, group + "/" + field.name};
-      file.write(attribute.dataset, std::span<const double>(field.data, rows * columns),
+      const auto columns = static_cast<std::size_t>(field.components);
+      file.write(frame.attributes[f].dataset, std::span<const double>(field.data, rows * columns),
                  {rows, columns});
-      frame.attributes.push_back(std::move(attribute));
     }
-    file.write_attribute(group, "time", time);
-    file.write_attribute(group, "cycle", cycle);
+    file.write_attribute(group, "time", frame.time);
+    file.write_attribute(group, "cycle", frame.cycle);
     file.write_attribute(group, "fields", field_list(view.fields));
   }
-  const std::size_t history_rows = write_history_rows(file);
-  file.close();
-  commit_history(history_rows);
+  write_history_rows(file);
+  commit_frames(file, frame_count_ + 1);
+}
 
-  // The frame is on disk: only now may the .xdmf files list it.
-  for (std::size_t i = 0; i < parts_.size(); ++i) {
-    parts_[i].frames.push_back(std::move(new_frames[i]));
-  }
-  frame_count_ = index + 1;
-  last_time_ = time;
-  write_xdmf_files();
+void ResultsWriter::commit_frames(h5::File& file, int frames) const {
+  // The count is written last, in place (one block of the file), once what it counts is on the
+  // disk (a power loss cannot leave a count of frames that are not there); the .xdmf files,
+  // flushed to the disk each, follow it (write_xdmf_files after this returns).
+  file.flush();
+  sync_to_disk(results_file());
+  file.write_attribute("/parts", frames_attribute, frames);
+  file.close();
 }
 
 void ResultsWriter::append_history(std::span<const double> row) {
@@ -501,9 +584,12 @@ void ResultsWriter::flush_history() {
     return;
   }
   writing(directory_, [&] {
-    h5::File file(results_file(), h5::FileMode::read_write);
-    const std::size_t rows = write_history_rows(file);
-    file.close();
+    const std::size_t rows = history_buffer_.size() / history_columns_.size();
+    run_detached([&] {
+      h5::File file(results_file(), h5::FileMode::read_write);
+      write_history_rows(file);
+      file.close();
+    });
     commit_history(rows);
   });
 }
@@ -533,20 +619,27 @@ void ResultsWriter::commit_history(std::size_t rows) {
 void ResultsWriter::write_run_info(const std::string& key, const std::string& text) {
   check_name(key, "run information key");
   writing(directory_, [&] {
-    h5::File file(results_file(), h5::FileMode::read_write);
-    const std::string path = "/run/" + key;
-    if (file.exists(path)) {
-      file.remove(path);
-    }
-    file.write_string(path, text);
-    file.close();
+    run_detached([&] {
+      h5::File file(results_file(), h5::FileMode::read_write);
+      const std::string path = "/run/" + key;
+      if (file.exists(path)) {
+        file.remove(path);
+      }
+      file.write_string(path, text);
+      file.close();
+    });
   });
 }
 
-void ResultsWriter::write_xdmf_files() const {
-  for (const PartRecord& record : parts_) {
+void ResultsWriter::write_xdmf_files(const std::vector<XdmfFrame>* pending) const {
+  for (std::size_t i = 0; i < parts_.size(); ++i) {
+    const PartRecord& record = parts_[i];
+    std::vector<XdmfFrame> frames = record.frames;
+    if (pending != nullptr) {
+      frames.push_back((*pending)[i]);
+    }
     write_file_atomically(xdmf_file(record.grid.name),
-                          make_xdmf(record.grid, record.frames, results_file_name));
+                          make_xdmf(record.grid, frames, results_file_name));
   }
 }
 

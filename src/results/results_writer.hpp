@@ -4,9 +4,11 @@
 // file per part for ParaView. The layout is described in docs/results-format.md.
 //
 // Crash safety: results.h5 is open only while a frame (or history, or run information) is being
-// written and is closed after it; every .xdmf is replaced atomically after the HDF5 file has been
-// closed and lists only frames fully written. A run killed between two writes therefore leaves a
-// consistent, readable set of files.
+// written and is closed after it. A frame's write goes: its datasets and the history rows, on the
+// disk; then the commit record, results.h5's frame count (/parts attribute "frames"); then every
+// .xdmf, replaced atomically. Each write runs in a detached child process (run_detached), so a
+// run killed at any moment leaves results.h5 and the .xdmf files agreeing on the frames, with no
+// temporary file (docs/results-format.md, "Running and killed jobs").
 #include <cstddef>
 #include <filesystem>
 #include <span>
@@ -133,16 +135,31 @@ class ResultsWriter {
                            const std::vector<std::string>& history_columns);
   static PartRecord describe_part(const PartTopology& part);
   void set_directory(const std::filesystem::path& directory);
-  /// Drops what a run wrote after its checkpoint and reads back the frames kept.
-  void take_up(h5::File& file, const Resume& resume);
+  /// Creates results.h5 with the parts' topology, no frames and empty history columns.
+  void create_file(const std::vector<PartTopology>& parts,
+                   const std::vector<std::string>& history_units) const;
+  /// Reads back the frames a restart keeps, after checking the file against `resume`.
+  void read_kept_frames(const h5::File& file, const Resume& resume);
+  /// Drops the frames and history rows a run wrote after its checkpoint.
+  void drop_later_output(h5::File& file, const Resume& resume) const;
   const PartRecord& find_part(const std::string& name) const;
+  std::size_t part_index(const std::string& name) const;
   void check_frame(double time, const std::vector<PartFrameView>& parts) const;
   void check_room(const std::vector<PartFrameView>& parts) const;
   void write_checked_frame(double time, int cycle, const std::vector<PartFrameView>& parts);
+  /// The .xdmf description of frame frame_count(), one per part in the writer's part order.
+  std::vector<XdmfFrame> describe_frame(double time, int cycle,
+                                        const std::vector<PartFrameView>& parts) const;
+  /// Writes frame frame_count() and the buffered history rows, then commits the frame.
+  void store_frame(const std::vector<XdmfFrame>& frames,
+                   const std::vector<PartFrameView>& parts) const;
+  /// Sets results.h5's frame count to `frames` once everything before is on the disk; closes.
+  void commit_frames(h5::File& file, int frames) const;
   /// Writes the buffered rows into the open file; returns how many (commit_history after close).
   std::size_t write_history_rows(h5::File& file) const;
   void commit_history(std::size_t rows);
-  void write_xdmf_files() const;
+  /// Replaces every part's .xdmf: its frames, and `pending`'s (one per part) when given.
+  void write_xdmf_files(const std::vector<XdmfFrame>* pending = nullptr) const;
 
   std::filesystem::path directory_;
   std::vector<PartRecord> parts_;

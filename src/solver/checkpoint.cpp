@@ -2,12 +2,17 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <limits>
 #include <system_error>
 
 #include "core/build_info.hpp"
 #include "core/errors.hpp"
+#include "results/detached_write.hpp"
 #include "results/hdf5_file.hpp"
+#include "results/hdf5_probe.hpp"
 #include "solver/checkpoint_fields.hpp"
 
 namespace sf {
@@ -45,6 +50,20 @@ class FieldWriter {
   h5::File& file_;
 };
 
+// `value` as an Integer, or an InputError naming `what` when it is not a whole number in range
+// (a cast of anything else would be undefined or silently wrong).
+template <class Integer>
+Integer checked_whole(double value, const std::string& where, const std::string& what,
+                      double lowest = static_cast<double>(std::numeric_limits<Integer>::min())) {
+  const double beyond = std::ldexp(1.0, std::numeric_limits<Integer>::digits);  // exact
+  if (!(value >= lowest && value < beyond && value == std::trunc(value))) {
+    throw InputError(
+        fmt::format("{}: {} is {}, not a whole number from {} to {} (a damaged checkpoint)", where,
+                    what, value, lowest, beyond - 1.0));
+  }
+  return static_cast<Integer>(value);
+}
+
 // Reads every field back into a state of the model's sizes; a size that differs is the
 // checkpoint of another model.
 class FieldReader {
@@ -61,25 +80,37 @@ class FieldReader {
   }
 
  private:
+  // The entry as the writer stores it (a 1-D array of doubles of the model's size), checked
+  // before anything is read: a damaged or foreign file gets its entry named.
   std::vector<double> read(const std::string& name, std::size_t expected) {
     const std::string path = "/state/" + name;
     if (!file_.exists(path)) {
       throw InputError(
           fmt::format("{}: no entry {} (a checkpoint of another version?)", where_, path));
     }
-    std::vector<double> data = file_.read_doubles(path);
-    if (data.size() != expected) {
+    if (!file_.holds_doubles(path)) {
+      throw InputError(fmt::format(
+          "{}: entry {} does not hold 64-bit floating-point numbers (a damaged checkpoint)", where_,
+          path));
+    }
+    const std::vector<hsize_t> shape = file_.shape(path);
+    if (shape.size() != 1) {
+      throw InputError(
+          fmt::format("{}: entry {} is an array of {} dimensions, a checkpoint "
+                      "stores a list (a damaged checkpoint)",
+                      where_, path, shape.size()));
+    }
+    if (shape[0] != expected) {
       throw InputError(fmt::format(
           "{}: entry {} holds {} values, the case's model needs {} (a checkpoint of another "
           "mesh or case)",
-          where_, path, data.size(), expected));
+          where_, path, shape[0], expected));
     }
-    return data;
+    return file_.read_doubles(path);
   }
   template <class Integer>
   Integer whole(const std::string& name) {
-    const double value = read(name, 1).front();
-    return static_cast<Integer>(std::llround(value));
+    return checked_whole<Integer>(read(name, 1).front(), where_, "entry /state/" + name);
   }
   void copy(const std::string& name, double* target, Eigen::Index size) {
     const std::vector<double> data = read(name, static_cast<std::size_t>(size));
@@ -121,70 +152,76 @@ void write_info(h5::File& file, const CheckpointInfo& info) {
   }
 }
 
+// A count kept as a double attribute: a whole number, not negative.
+template <class Integer>
+Integer read_count(const h5::File& file, const std::string& object, const std::string& name,
+                   const std::string& where, double lowest = 0.0) {
+  return checked_whole<Integer>(file.read_attribute_double(object, name), where,
+                                fmt::format("{}@{}", object, name), lowest);
+}
+
+SearchAuditRecord read_audit(const h5::File& file, const std::string& where, int a) {
+  const std::string path = "/output/audit" + std::to_string(a);
+  if (!file.holds_doubles(path) || file.shape(path) != std::vector<hsize_t>{8}) {
+    throw InputError(where + ": " + path + " is damaged (8 numbers expected)");
+  }
+  const std::vector<double> c = file.read_doubles(path);
+  const std::string what = path + " value ";
+  SearchAuditRecord r;
+  r.last.nodes_checked = checked_whole<int>(c[0], where, what + "0", 0.0);
+  r.last.misses = checked_whole<int>(c[1], where, what + "1", 0.0);
+  r.last.max_gap_error = c[2];
+  r.audits = checked_whole<int>(c[3], where, what + "3", 0.0);
+  r.max_misses = checked_whole<int>(c[4], where, what + "4", 0.0);
+  r.max_misses_time = c[5];
+  r.total_misses = checked_whole<long>(c[6], where, what + "6", 0.0);
+  r.max_gap_error = c[7];
+  return r;
+}
+
+// A name the writer made (a digest, a build's hash, a run id): letters, digits, '-' only. A
+// damaged file's bytes are refused here rather than printed in a later message.
+std::string read_name(const h5::File& file, const std::string& object, const std::string& name,
+                      const std::string& where) {
+  std::string text = file.read_attribute_string(object, name);
+  const bool plain = !text.empty() && text.size() <= 64 &&
+                     std::all_of(text.begin(), text.end(),
+                                 [](unsigned char c) { return std::isalnum(c) != 0 || c == '-'; });
+  if (!plain) {
+    throw InputError(fmt::format("{}: {}@{} is not a name sheetform writes (a damaged checkpoint)",
+                                 where, object, name));
+  }
+  return text;
+}
+
 CheckpointInfo read_info(const h5::File& file, const std::string& where) {
   CheckpointInfo info;
-  info.case_digest = file.read_attribute_string("/", "case_digest");
-  info.git_hash = file.read_attribute_string("/", "git_hash");
+  info.case_digest = read_name(file, "/", "case_digest", where);
+  info.git_hash = read_name(file, "/", "git_hash", where);
   info.end_time = file.read_attribute_double("/", "end_time");
   info.loop.dt_previous = file.read_attribute_double("/loop", "dt_previous");
   info.loop.last_frame_time = file.read_attribute_double("/loop", "last_frame_time");
   info.loop.warned_added_mass = file.read_attribute_int("/loop", "warned_added_mass") != 0;
   OutputMark& o = info.output;
   o.frames = file.read_attribute_int("/output", "frames");
-  o.history_rows = static_cast<std::size_t>(file.read_attribute_double("/output", "history_rows"));
-  o.last_history_cycle = std::llround(file.read_attribute_double("/output", "last_history_cycle"));
-  o.run_id = file.read_attribute_string("/output", "run_id");
-  o.last_audit_cycle = std::llround(file.read_attribute_double("/output", "last_audit_cycle"));
+  if (o.frames < 0) {
+    throw InputError(
+        fmt::format("{}: /output@frames is {} (a damaged checkpoint)", where, o.frames));
+  }
+  o.history_rows = read_count<std::size_t>(file, "/output", "history_rows", where);
+  o.last_history_cycle = read_count<long>(file, "/output", "last_history_cycle", where, -1.0);
+  o.run_id = read_name(file, "/output", "run_id", where);
+  o.last_audit_cycle = read_count<long>(file, "/output", "last_audit_cycle", where, -1.0);
   const int audits = file.read_attribute_int("/output", "audits");
-  for (int a = 0; a < audits; ++a) {
-    const std::vector<double> c = file.read_doubles("/output/audit" + std::to_string(a));
-    if (c.size() != 8) {
-      throw InputError(where + ": /output/audit" + std::to_string(a) + " is damaged");
-    }
-    SearchAuditRecord r;
-    r.last.nodes_checked = static_cast<int>(c[0]);
-    r.last.misses = static_cast<int>(c[1]);
-    r.last.max_gap_error = c[2];
-    r.audits = static_cast<int>(c[3]);
-    r.max_misses = static_cast<int>(c[4]);
-    r.max_misses_time = c[5];
-    r.total_misses = static_cast<long>(c[6]);
-    r.max_gap_error = c[7];
-    o.audits.push_back(std::move(r));
+  for (int a = 0; a < audits; ++a) {  // a damaged count meets a missing entry soon
+    o.audits.push_back(read_audit(file, where, a));
   }
   return info;
 }
 
-}  // namespace
-
-void write_checkpoint(const std::filesystem::path& file, const SolutionState& state,
-                      const CheckpointInfo& info) {
-  std::filesystem::path temporary = file;
-  temporary += ".tmp";
-  try {
-    h5::File out(temporary, h5::FileMode::truncate);
-    write_info(out, info);
-    FieldWriter writer(out);
-    visit_checkpoint_fields(writer, state);
-    out.close();
-  } catch (const h5::Error& e) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw OutputError(fmt::format("cannot write the checkpoint {}: {}", file.string(), e.what()));
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, file, error);
-  if (error) {
-    throw OutputError(
-        fmt::format("cannot write the checkpoint {}: {}", file.string(), error.message()));
-  }
-}
-
-CheckpointInfo read_checkpoint(const std::filesystem::path& file, SolutionState& state) {
+// The reading itself, once libhdf5 is known to survive the file.
+CheckpointInfo read_checked_checkpoint(const std::filesystem::path& file, SolutionState& state) {
   const std::string where = file.string();
-  if (!std::filesystem::is_regular_file(file)) {
-    throw InputError(where + ": no such checkpoint file (a run writes <results>/checkpoint.h5)");
-  }
   try {
     const h5::File in(file, h5::FileMode::read_only);
     if (!in.exists("/state") || in.read_attribute_string("/", "format") != kFormat) {
@@ -198,10 +235,56 @@ CheckpointInfo read_checkpoint(const std::filesystem::path& file, SolutionState&
     CheckpointInfo info = read_info(in, where);
     FieldReader reader(in, where);
     visit_checkpoint_fields(reader, state);
+    if (!(std::isfinite(state.time) && state.time >= 0.0 && std::isfinite(state.dt) &&
+          state.dt >= 0.0)) {
+      throw InputError(
+          fmt::format("{}: entry /state/time or /state/dt is {} or {}, not a time "
+                      "(a damaged checkpoint)",
+                      where, state.time, state.dt));
+    }
     return info;
   } catch (const h5::Error& e) {
     throw InputError(where + ": cannot read the checkpoint: " + e.what());
   }
+}
+
+}  // namespace
+
+void write_checkpoint(const std::filesystem::path& file, const SolutionState& state,
+                      const CheckpointInfo& info) {
+  // In a detached child (results/detached_write.hpp): a kill of the run cannot leave the
+  // temporary file behind, the child finishes and renames it.
+  run_detached([&] {
+    std::filesystem::path temporary = file;
+    temporary += ".tmp";
+    try {
+      h5::File out(temporary, h5::FileMode::truncate);
+      write_info(out, info);
+      FieldWriter writer(out);
+      visit_checkpoint_fields(writer, state);
+      out.close();
+    } catch (const h5::Error& e) {
+      std::error_code ignored;
+      std::filesystem::remove(temporary, ignored);
+      throw OutputError(fmt::format("cannot write the checkpoint {}: {}", file.string(), e.what()));
+    }
+    std::error_code error;
+    std::filesystem::rename(temporary, file, error);
+    if (error) {
+      throw OutputError(
+          fmt::format("cannot write the checkpoint {}: {}", file.string(), error.message()));
+    }
+  });
+}
+
+CheckpointInfo read_checkpoint(const std::filesystem::path& file, SolutionState& state) {
+  const std::string where = file.string();
+  if (!std::filesystem::is_regular_file(file)) {
+    throw InputError(where + ": no such checkpoint file (a run writes <results>/checkpoint.h5)");
+  }
+  // libhdf5 may crash on a damaged file: once in a child first (results/hdf5_probe.hpp).
+  read_in_child_first(file, "checkpoint", [&] { read_checked_checkpoint(file, state); });
+  return read_checked_checkpoint(file, state);
 }
 
 }  // namespace sf

@@ -303,6 +303,7 @@ TEST(ResultsWriter, ReadsBackEveryDatasetBitwise) {
   }
   expect_history(file, 6);
   EXPECT_EQ(file.read_string("/run/version"), "sheetform 0.1.0");
+  EXPECT_EQ(file.read_attribute_int("/parts", "frames"), 3);  // the commit record
 }
 
 TEST(ResultsWriter, XdmfListsEveryFrameWithTimesTopologyAndAttributes) {
@@ -376,6 +377,34 @@ TEST(ResultsWriter, KilledRunLeavesTwoConsistentFrames) {
   EXPECT_EQ(blank.times, (std::vector<double>{make_frame(0).time, make_frame(1).time}));
   EXPECT_EQ(blank.attributes, repeat(blank_attributes, 2));
   EXPECT_EQ(summarize_xdmf(read_text(dir / "punch.xdmf")).times.size(), 2u);
+}
+
+// A frame group past the commit record (a write cut by a kill of every process at once) is not
+// a frame: the .xdmf files do not list it, and the next frame's write replaces it.
+TEST(ResultsWriter, FrameGroupPastTheCommitRecordIsNotAFrame) {
+  const fs::path dir = output_dir("uncommitted");
+  ResultsWriter writer(dir, make_parts(), history_columns);
+  for (int k = 0; k < 2; ++k) {
+    const FrameData frame = make_frame(k);
+    writer.write_frame(frame.time, frame.cycle, frame.views());
+  }
+  {
+    h5::File file(dir / "results.h5", h5::FileMode::read_write);
+    const std::vector<double> half_written(5, 7.0);
+    file.write("/parts/blank/frames/000002/coordinates", half_written, {5});
+    file.close();
+  }
+  {
+    h5::File file(dir / "results.h5", h5::FileMode::read_only);
+    EXPECT_EQ(file.read_attribute_int("/parts", "frames"), 2);
+  }
+  EXPECT_EQ(summarize_xdmf(read_text(dir / "blank.xdmf")).times.size(), 2u);
+  const FrameData frame = make_frame(2);
+  writer.write_frame(frame.time, frame.cycle, frame.views());
+  h5::File file(dir / "results.h5", h5::FileMode::read_only);
+  EXPECT_EQ(file.read_attribute_int("/parts", "frames"), 3);
+  expect_frame(file, 2);
+  EXPECT_EQ(summarize_xdmf(read_text(dir / "punch.xdmf")).times.size(), 3u);
 }
 
 TEST(ResultsWriter, DestructorAndFlushWriteBufferedHistory) {
