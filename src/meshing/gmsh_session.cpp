@@ -1,7 +1,5 @@
 #include "meshing/gmsh_session.hpp"
 
-#include <omp.h>
-
 #include <gmsh.h>
 #include <exception>
 #include <stdexcept>
@@ -12,7 +10,7 @@
 
 namespace sf {
 
-GmshSession::GmshSession() : saved_threads_(omp_get_max_threads()) {
+GmshSession::GmshSession() {
   try {
     gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);  // no user gmshrc: deterministic
     gmsh::option::setNumber("General.Terminal", verbosity() >= Verbosity::verbose ? 1 : 0);
@@ -20,7 +18,6 @@ GmshSession::GmshSession() : saved_threads_(omp_get_max_threads()) {
     gmsh::option::setNumber("General.NumThreads", 1);    // serial and deterministic
     gmsh::logger::start();
   } catch (...) {
-    omp_set_num_threads(saved_threads_);
     throw std::runtime_error("gmsh could not be initialised");
   }
 }
@@ -34,7 +31,6 @@ GmshSession::~GmshSession() {
     gmsh::finalize();
   } catch (...) {
   }
-  omp_set_num_threads(saved_threads_);
 }
 
 std::string GmshSession::logged_errors() {

@@ -8,8 +8,10 @@
 namespace sf {
 
 /// initialize on construction (no user configuration files, serial, errors thrown), finalize on
-/// destruction; gmsh's terminal output only at Verbosity::verbose. Restores the OpenMP thread
-/// count that gmsh::initialize sets to its own value.
+/// destruction; gmsh's terminal output only at Verbosity::verbose. gmsh::initialize sets the
+/// OpenMP thread count to its own value: harmless in the child, whose threads are its own. (No
+/// OpenMP call here: clang's OpenMP runtime, in the sanitizer builds, registers itself in
+/// /dev/shm on its first call in a process, which the sandbox refuses.)
 class GmshSession {
  public:
   GmshSession();
@@ -20,9 +22,6 @@ class GmshSession {
   /// gmsh's error messages logged so far (lines starting with "Error", and a repeated node tag of
   /// a .msh, which gmsh only notes), joined by newlines.
   static std::string logged_errors();
-
- private:
-  int saved_threads_;
 };
 
 /// Runs one gmsh step; whatever gmsh throws or logs as an error becomes an InputError naming

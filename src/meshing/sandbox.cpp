@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 #include <linux/capability.h>
 #include <linux/landlock.h>
+#include <omp.h>
 #include <poll.h>
 #include <seccomp.h>
 #include <sys/prctl.h>
@@ -323,9 +324,25 @@ bool confine(const SandboxPolicy& policy) {
   return confined && filter_system_calls();
 }
 
+// LLVM's OpenMP runtime (clang's -fopenmp: the sanitizer and fuzz builds) registers each process
+// on its first OpenMP call with a file in /dev/shm named after the process, and ends the process
+// when it cannot; gmsh calls OpenMP (omp_set_num_threads), and the C library resolves its calls to
+// that runtime when the program brought it. The child therefore makes its first call before it is
+// confined; the parent removes the file the child leaves (it ends by _exit). GCC's runtime, the
+// release build's, registers nothing: both are no-ops there.
+void register_openmp_runtime() {
+  omp_get_max_threads();
+}
+
+void forget_openmp_registration(pid_t child) {
+  const std::string name = fmt::format("/dev/shm/__KMP_REGISTERED_LIB_{}_{}", child, ::getuid());
+  ::unlink(name.c_str());  // no such file with GCC's runtime
+}
+
 [[noreturn]] void run_child(const SandboxPolicy& policy,
                             const std::function<int(const SandboxReporter&)>& job, int report_fd) {
   reset_inherited_handlers();
+  register_openmp_runtime();
   arrange_descriptors(report_fd, policy.keep_output);
   const SandboxReporter reporter(kReportFd);
   if (address_space_limit_allowed()) {
@@ -536,6 +553,7 @@ SandboxOutcome run_sandboxed(const SandboxPolicy& policy,
   ChildWatch watch(child, fds[0], deadline);
   SandboxOutcome outcome = watch.wait();
   ::close(fds[0]);
+  forget_openmp_registration(child);
   return outcome;
 }
 
