@@ -16,6 +16,7 @@
 #include "meshing/gmsh_reader.hpp"
 #include "model/constraint_assembly.hpp"
 #include "model/node_selection.hpp"
+#include "model/physical_ranges.hpp"
 
 namespace sf {
 namespace {
@@ -604,6 +605,7 @@ Model build_model(const CaseConfig& config) {
   const ShellState state = make_shell_state(
       element_count(model.blank.part), config.blank.integration_points, config.blank.thickness);
   set_mass_and_time_step(config, model, state);
+  check_physical_ranges(config, model);
   set_up_contacts(config, model, state);
   set_up_force_controlled_tools(config, model);
   set_end_time(config, model);

@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Issue 31: values no sheet can have, a critical time step that cannot advance a run, and
+# messages that must name the file, the key and what is expected.
+#   bad_values_test.sh SHEETFORM SOURCE_DIR WORK_DIR
+# Each check ran before on a value that hung the run, crashed it at cycle 0, passed `check`, or
+# was told something that did not say what to do; `timeout` turns a hang into a failure.
+set -u
+sheetform="$1"; src="$2"; work="$3"
+rm -rf "$work"; mkdir -p "$work"
+failures=0; passed=0
+
+expect() {  # expect NAME CODE PATTERN -- command...
+  local name="$1" code="$2" pattern="$3"; shift 4
+  local out rc
+  out=$(timeout 300 "$@" 2>&1); rc=$?
+  if [ "$rc" -ne "$code" ]; then
+    echo "FAIL $name: exit code $rc, expected $code"; echo "$out" | tail -5; failures=$((failures+1)); return
+  fi
+  if ! grep -qE -- "$pattern" <<<"$out"; then
+    echo "FAIL $name: output lacks /$pattern/"; echo "$out" | tail -5; failures=$((failures+1)); return
+  fi
+  echo "ok   $name"; passed=$((passed+1))
+}
+refute() {  # refute NAME PATTERN -- command...: the output must not match
+  local name="$1" pattern="$2"; shift 3
+  if timeout 300 "$@" 2>&1 | grep -qE -- "$pattern"; then
+    echo "FAIL $name: output has /$pattern/"; failures=$((failures+1)); return
+  fi
+  echo "ok   $name"; passed=$((passed+1))
+}
+
+cp -r "$src/cases/square_cup_aluminium" "$work/case"; rm -rf "$work/case/results"
+demo="$work/case/case.toml"
+refute "the demo case has no physical-range warning" "Physical ranges" -- "$sheetform" check "$demo"
+
+# Values outside what any accepted unit system makes physical: refused with the range.
+expect "thickness 1e300 refused" 2 "case.toml: blank.thickness = 1e\+300 mm cannot be a sheet's thickness in any unit system sheetform accepts: expected a number in \[1e-06, 1e\+06\], what 1e-06 to 1 m is" -- \
+  "$sheetform" check "$demo" --set blank.thickness=1e300
+expect "thickness 1e300: run refuses" 2 "blank.thickness = 1e\+300 mm cannot be" -- \
+  "$sheetform" run "$demo" -o "$work/thick" --set blank.thickness=1e300
+expect "young 1e200 refused" 2 "materials.aluminium.young = 1e\+200 MPa cannot be a sheet's Young's modulus .*\[100, 2e\+06\] MPa in the case's units" -- \
+  "$sheetform" check "$demo" --set materials.aluminium.young=1e200
+expect "density 1e-300 refused" 2 "materials.aluminium.density = 1e-300 tonne/mm\^3 cannot be a sheet's density" -- \
+  "$sheetform" check "$demo" --set materials.aluminium.density=1e-300
+expect "element size 1e300 refused" 2 "blank.element_size = 1e\+300 mm cannot be a sheet's element size" -- \
+  "$sheetform" check "$demo" --set blank.element_size=1e300
+# Dimensionless ratios, refused without regard to units.
+expect "thickness beyond the blank's size refused" 2 "blank.thickness = 200 mm: its ratio to the blank's size \(the diagonal of its bounding box, 106.066 mm\) is 1.89, which no sheet can have .*expected at most 1" -- \
+  "$sheetform" check "$demo" --set blank.thickness=200
+expect "yield stress above young refused" 2 "materials.aluminium: the yield strain \(yield stress at 0.2 % plastic strain / young\) is 3.36, which no sheet can have .*expected in \[1e-06, 1\]" -- \
+  "$sheetform" check "$demo" --set materials.aluminium.hardening.K=1e6
+expect "tool faster than sound refused" 2 "tools\[0\].motion.curve \('punch'\): a peak speed of 3e\+07 mm/s: its ratio to the sheet's wave speed .* is 5.52, which no sheet can have" -- \
+  "$sheetform" check "$demo" --set 'tools[0].motion.curve=[[0.0, 0.0], [0.0005, 3.0e7]]'
+# Outside the range in the case's declared units only: a warning with the range, and the case runs.
+expect "density in kg/mm^3 warned" 0 "warning: .*materials.aluminium.density = 2.7e-06 tonne/mm\^3 is outside \[1e-10, 1e-07\] tonne/mm\^3 in the case's units, a sheet's density \(100 to 100000 kg/m\^3\)" -- \
+  "$sheetform" check "$demo" --set materials.aluminium.density=2.7e-6
+expect "a thick blank warned" 0 "warning: .*blank.thickness = 30 mm: its ratio to the blank's size .* is 0.283, not at most 0.25 as usual" -- \
+  "$sheetform" check "$demo" --set blank.thickness=30
+
+echo "$passed passed, $failures failed"
+[ "$failures" -eq 0 ]
