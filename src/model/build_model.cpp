@@ -17,6 +17,7 @@
 #include "model/constraint_assembly.hpp"
 #include "model/node_selection.hpp"
 #include "model/physical_ranges.hpp"
+#include "model/time_step_check.hpp"
 
 namespace sf {
 namespace {
@@ -374,6 +375,11 @@ void set_mass_and_time_step(const CaseConfig& config, Model& model, const ShellS
   compute_lumped_mass(blank.part, blank.mesh.nodes, state, blank.mass, blank.rotational_inertia);
   blank.physical_mass = blank.mass.sum();
   blank.physical_nodal_mass = blank.mass;
+  const bool explicit_run = !model.analysis.is_static();
+  if (explicit_run) {  // before mass scaling, which would divide by a step of 0
+    check_critical_time_step(config, blank,
+                             compute_stable_time_step(blank.part, blank.mesh.nodes, state));
+  }
   set_up_mass_scaling(blank.part, blank.mesh.nodes, state, control.mass_scaling_dt,
                       control.time_step_safety, blank.scaling);
   const TimeStepCheck step = scale_mass_to_time_step(blank.part, blank.mesh.nodes, blank.scaling,
@@ -389,6 +395,9 @@ void set_mass_and_time_step(const CaseConfig& config, Model& model, const ShellS
   }
   model.time.time_step = step.dt;
   model.time.limiting_element = step.element;
+  if (explicit_run) {
+    check_scaled_time_step(config, model);
+  }
 }
 
 void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& state) {

@@ -33,6 +33,17 @@ cp -r "$src/cases/square_cup_aluminium" "$work/case"; rm -rf "$work/case/results
 demo="$work/case/case.toml"
 refute "the demo case has no physical-range warning" "Physical ranges" -- "$sheetform" check "$demo"
 
+# young = 1e300: the wave speed overflows, the critical step is 0 and the run cycled at t = 0 for
+# ever ("Cycles about inf", "Case is valid"). check and run refuse it, naming the keys.
+young='materials\.aluminium: young = 1e\+300 MPa .*density = 2\.7e-09 tonne/mm\^3 and poisson = 0\.33 give a plate wave speed .* of inf mm/s and a critical time step of 0 s'
+expect "young 1e300: check refuses" 2 "$young" -- "$sheetform" check "$demo" --set materials.aluminium.young=1e300
+expect "young 1e300: run refuses before the first cycle" 2 "$young" -- \
+  "$sheetform" run "$demo" -o "$work/young" --set materials.aluminium.young=1e300
+[ ! -e "$work/young/results.h5" ] && passed=$((passed+1)) || { echo "FAIL young 1e300: the run started"; failures=$((failures+1)); }
+# An infinite cycle count is refused, naming where the end time comes from.
+expect "infinite cycle count refused" 2 "the run needs about inf cycles \(end time 1.7e\+308 s from control.end_time / time step [0-9.e-]+ s\), more than limits.max_cycles" -- \
+  "$sheetform" check "$demo" --set control.stroke=0.0 --set control.end_time=1.7e308
+
 # Values outside what any accepted unit system makes physical: refused with the range.
 expect "thickness 1e300 refused" 2 "case.toml: blank.thickness = 1e\+300 mm cannot be a sheet's thickness in any unit system sheetform accepts: expected a number in \[1e-06, 1e\+06\], what 1e-06 to 1 m is" -- \
   "$sheetform" check "$demo" --set blank.thickness=1e300
