@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -508,6 +509,29 @@ void set_up_force_controlled_tools(const CaseConfig& config, Model& model) {
   }
 }
 
+// The stroke tool's motion never travels control.stroke: the message names the case file, the
+// stroke and the tool's curve, and how far the curve goes.
+[[noreturn]] void throw_stroke_not_reached(const CaseConfig& config, std::size_t index,
+                                           const Tool& tool) {
+  const MotionConfig& motion = config.tools[index].motion;
+  if (!tool.motion.moves()) {
+    throw InputError(fmt::format(
+        "{}: control.stroke_tool: tool '{}' (tools[{}]) does not move, so it cannot define the "
+        "stroke",
+        config.file.string(), tool.name, index));
+  }
+  const bool velocity = motion.type == MotionConfig::Type::velocity;
+  const char* curve = velocity ? "velocity" : "displacement";
+  const double end = RigidToolMotion::kTravelSearchEnd;
+  throw InputError(fmt::format(
+      "{}: control.stroke = {} mm: tool '{}' never travels that far: its tools[{}].motion.curve "
+      "(type = \"{}\", {}) reaches {:.6g} mm by t = {:g} s (after its last point the {} holds its "
+      "last value); give a curve that reaches the stroke, or a smaller control.stroke (or "
+      "--stroke)",
+      config.file.string(), config.control.stroke, tool.name, index, curve,
+      velocity ? "[s, mm/s]" : "[s, mm]", tool.motion.travel(end), end, curve));
+}
+
 void set_end_time(const CaseConfig& config, Model& model) {
   const ControlConfig& control = config.control;
   if (!control.stroke_tool.empty()) {
@@ -526,7 +550,11 @@ void set_end_time(const CaseConfig& config, Model& model) {
           "force), so it cannot define the stroke",
           config.file.string(), tool.name));
     }
-    model.time.end_time = tool.motion.time_at_travel(control.stroke, tool.name);
+    const std::optional<double> end = tool.motion.time_at_travel(control.stroke);
+    if (!end) {
+      throw_stroke_not_reached(config, static_cast<std::size_t>(model.time.stroke_tool), tool);
+    }
+    model.time.end_time = *end;
   } else {
     model.time.end_time = control.end_time;
   }

@@ -68,5 +68,9 @@ expect "density in kg/mm^3 warned" 0 "warning: .*materials.aluminium.density = 2
 expect "a thick blank warned" 0 "warning: .*blank.thickness = 30 mm: its ratio to the blank's size .* is 0.283, not at most 0.25 as usual" -- \
   "$sheetform" check "$demo" --set blank.thickness=30
 
+# The stroke a motion curve never reaches names the case file, the stroke and the curve.
+expect "stroke never reached" 2 "case.toml: control.stroke = 40 mm: tool 'punch' never travels that far: its tools\[0\].motion.curve \(type = \"velocity\", \[s, mm/s\]\) reaches 1.5 mm" -- \
+  "$sheetform" check "$demo" --set 'tools[0].motion.curve=[[0.0, 0.0], [0.0005, 3000.0], [0.001, 0.0]]'
+
 echo "$passed passed, $failures failed"
 [ "$failures" -eq 0 ]
