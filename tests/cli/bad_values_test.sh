@@ -72,5 +72,9 @@ expect "a thick blank warned" 0 "warning: .*blank.thickness = 30 mm: its ratio t
 expect "stroke never reached" 2 "case.toml: control.stroke = 40 mm: tool 'punch' never travels that far: its tools\[0\].motion.curve \(type = \"velocity\", \[s, mm/s\]\) reaches 1.5 mm" -- \
   "$sheetform" check "$demo" --set 'tools[0].motion.curve=[[0.0, 0.0], [0.0005, 3000.0], [0.001, 0.0]]'
 
+# An integer beyond what the key can hold is told the bound (and the run's limit).
+expect "output_frames 2^63-1" 2 "control.output_frames: expected an integer >= 1, at most 2147483647 \(the largest this key holds; a run is held to limits.max_frames, 10000 by default\), got 9223372036854775807" -- \
+  "$sheetform" check "$demo" --set control.output_frames=9223372036854775807
+
 echo "$passed passed, $failures failed"
 [ "$failures" -eq 0 ]
