@@ -25,12 +25,14 @@
 #include <omp.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <optional>
 
 #include "casefile/case_config.hpp"
@@ -74,6 +76,24 @@ struct Arguments {
   bool quiet = false;
   bool verbose = false;
 };
+
+// A whole-number option's check, saying what is expected (CLI11's own says "Value two not in
+// range 1 to 4096"): "expected a whole number of threads >= 1, got 'two'".
+CLI::Validator whole_number(const std::string& what, long lo, long hi) {
+  auto check = [what, lo, hi](std::string& text) -> std::string {
+    long value = 0;
+    const char* end = text.data() + text.size();
+    const auto [stop, error] = std::from_chars(text.data(), end, value);
+    const bool whole = error == std::errc() && stop == end;
+    if (whole && value >= lo && value <= hi) {
+      return {};
+    }
+    return fmt::format("expected a whole number of {} >= {}{}, got '{}'", what, lo,
+                       whole && value > hi ? fmt::format(" and at most {}", hi) : std::string(),
+                       text);
+  };
+  return CLI::Validator(check, fmt::format("{} >= {}", what, lo));
+}
 
 // The command-line options that change the case, applied before it is read (read_case).
 sf::CaseOptions case_options(const Arguments& args) {
@@ -354,14 +374,14 @@ int main(int argc, char** argv) {
       ->add_option("--stop-at-cycle", args.stop_at_cycle,
                    "stop cleanly at the end of cycle N as on SIGTERM (last frame, checkpoint, "
                    "exit 5), to look at an early state or to test a restart")
-      ->check(CLI::PositiveNumber);
+      ->check(whole_number("cycles", 1, std::numeric_limits<long>::max()));
   run_cmd->add_option("--stroke", args.stroke, "override the end condition: stroke in mm");
   run_cmd->add_option("--end-time", args.end_time, "override the end condition: end time in s");
   run_cmd
       ->add_option("--threads", args.threads,
                    "OpenMP threads (default: OMP_NUM_THREADS, else every core); results are the "
                    "same bits for any count")
-      ->check(CLI::Range(1, 4096));
+      ->check(whole_number("threads", 1, 4096));
   run_cmd
       ->add_option("--search", args.search,
                    "override the search of every [[contact]]: standard, modified or cached")

@@ -76,5 +76,9 @@ expect "stroke never reached" 2 "case.toml: control.stroke = 40 mm: tool 'punch'
 expect "output_frames 2^63-1" 2 "control.output_frames: expected an integer >= 1, at most 2147483647 \(the largest this key holds; a run is held to limits.max_frames, 10000 by default\), got 9223372036854775807" -- \
   "$sheetform" check "$demo" --set control.output_frames=9223372036854775807
 
+# --threads with a word.
+expect "--threads two" 2 "^--threads: expected a whole number of threads >= 1, got 'two'" -- \
+  "$sheetform" run "$demo" --threads two -o "$work/threads"
+
 echo "$passed passed, $failures failed"
 [ "$failures" -eq 0 ]
