@@ -181,14 +181,47 @@ void clear_earlier_run(const Arguments& args, const fs::path& out) {
   }
 }
 
+// A folder (or anything but a file) where a command writes a file in the results folder is bad
+// input, said before any work: the first frame's rename onto it would fail (an internal error).
+// `extensions`: the files written per part ("blank.xdmf", ...).
+void check_result_paths(const fs::path& out, const sf::Model& model,
+                        std::initializer_list<const char*> extensions) {
+  std::vector<fs::path> paths(std::begin(kRunFiles), std::end(kRunFiles));
+  for (fs::path& p : paths) {
+    p = out / p;
+  }
+  std::vector<std::string> parts{"blank"};
+  for (const sf::Tool& tool : model.tools) {
+    parts.push_back(tool.name);
+  }
+  for (const std::string& part : parts) {
+    for (const char* extension : extensions) {
+      paths.push_back(out / (part + extension));
+    }
+  }
+  for (const fs::path& path : paths) {
+    std::error_code error;
+    const fs::file_status status = fs::status(path, error);
+    if (fs::exists(status) && !fs::is_regular_file(status)) {
+      throw sf::InputError(fmt::format(
+          "results folder {}: {} is {}, where the run writes a file; remove or rename it, or give "
+          "-o another folder",
+          out.string(), path.string(),
+          fs::is_directory(status) ? "a folder" : "not a regular file"));
+    }
+  }
+}
+
 // Rank 0 prepares the results folder and keeps the resolved case beside the results; every rank
 // learns whether that worked (a failure met by rank 0 alone must not leave the others waiting).
 void prepare_results_folder(const sf::MpiSession& mpi, const Arguments& args, const fs::path& out,
-                            const std::string& resolved_case) {
+                            const sf::Model& model) {
+  const std::string& resolved_case = model.output.resolved_case;
   std::string problem;
   if (mpi.rank() == 0) {
     try {
       create_results_folder(out);
+      check_result_paths(out, model, {".xdmf", ".xdmf.tmp"});
       clear_earlier_run(args, out);
       std::ofstream file(out / "case.resolved.toml");
       file << resolved_case;
@@ -264,7 +297,7 @@ int run(const Arguments& args, const sf::MpiSession& mpi) {
     throw sf::InputError("--restart continues an explicit run; " + loaded.config.file.string() +
                          " is a static analysis ([analysis] type = \"static\")");
   }
-  prepare_results_folder(mpi, args, out, model.output.resolved_case);
+  prepare_results_folder(mpi, args, out, model);
   sf::log_info("Results     {}\n", out.string());
   print_parallel_banner(mpi);
   // 4. Run the explicit time loop (and springback when the case asks), or the static analysis.
@@ -304,6 +337,7 @@ int mesh(const Arguments& args, const sf::MpiSession& mpi) {
   sf::print_run_estimate(loaded.estimate, model);
   const fs::path out = output_directory(args, loaded.config);
   create_results_folder(out);
+  check_result_paths(out, model, {".xdmf", ".xdmf.tmp", ".msh"});
   sf::FrameOutput output(model, out);
   sf::SolutionState state = sf::make_initial_state(model);
   output.write_frame(model, state);

@@ -80,5 +80,10 @@ expect "output_frames 2^63-1" 2 "control.output_frames: expected an integer >= 1
 expect "--threads two" 2 "^--threads: expected a whole number of threads >= 1, got 'two'" -- \
   "$sheetform" run "$demo" --threads two -o "$work/threads"
 
+# A folder where the run writes a file: bad input naming the path (was "internal error", exit 1).
+mkdir -p "$work/xdmf_folder/blank.xdmf"
+expect "blank.xdmf a folder" 2 "results folder .*xdmf_folder: .*xdmf_folder/blank.xdmf is a folder, where the run writes a file" -- \
+  "$sheetform" run "$demo" --stroke 0.01 -o "$work/xdmf_folder"
+
 echo "$passed passed, $failures failed"
 [ "$failures" -eq 0 ]
