@@ -279,6 +279,35 @@ void print_parallel_banner(const sf::MpiSession& mpi) {
                cores == 1 ? "" : "s", advice);
 }
 
+// What to do once the results folder can be written again: go on from this run's last
+// checkpoint when there is one (or from the one it restarted from), else run the case again.
+std::string how_to_go_on(const Arguments& args, const sf::CaseConfig& config, const fs::path& out) {
+  std::error_code error;
+  fs::path checkpoint = sf::checkpoint_path(out);
+  if (!fs::is_regular_file(checkpoint, error)) {
+    checkpoint = args.restart.empty() ? fs::path() : fs::absolute(args.restart);
+  }
+  if (!checkpoint.empty()) {
+    return fmt::format(
+        "\nOnce the results folder can be written again (free some space), continue from the last "
+        "checkpoint: "
+        "sheetform run {} --restart {} -o {} (with this run's --set, --search, --stroke or "
+        "--end-time options)",
+        config.file.string(), checkpoint.string(), out.string());
+  }
+  const sf::ControlConfig& control = config.control;
+  return fmt::format(
+      "\nNo checkpoint of this run was written before it stopped (one is written every "
+      "control.checkpoint_minutes = {:g} min of wall time{}), so there is none to continue from: "
+      "once the folder can be written again (free some space), run the case again with "
+      "--overwrite (or -o another folder)",
+      control.checkpoint_minutes,
+      control.checkpoint_cycles > 0
+          ? fmt::format(" and every control.checkpoint_cycles = {} cycles",
+                        control.checkpoint_cycles)
+          : std::string());
+}
+
 int run(const Arguments& args, const sf::MpiSession& mpi) {
   sf::install_run_request_handlers();  // a Ctrl-C while meshing stops at the first cycle
   const LoadedCase loaded = load(args);
@@ -304,8 +333,14 @@ int run(const Arguments& args, const sf::MpiSession& mpi) {
   options.output_directory = out;
   options.restart_file = args.restart.empty() ? fs::path() : fs::absolute(args.restart);
   options.stop_at_cycle = args.stop_at_cycle;
-  const sf::RunSummary summary = model.analysis.is_static() ? sf::run_static(model, options)
-                                                            : sf::run_explicit(model, options);
+  const sf::RunSummary summary = [&] {
+    try {
+      return model.analysis.is_static() ? sf::run_static(model, options)
+                                        : sf::run_explicit(model, options);
+    } catch (const sf::OutputError& e) {
+      throw sf::OutputError(e.what() + how_to_go_on(args, loaded.config, out));
+    }
+  }();
   if (mpi.rank() != 0) {
     return sf::exit_ok;  // rank 0 reports
   }

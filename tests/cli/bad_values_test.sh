@@ -85,5 +85,24 @@ mkdir -p "$work/xdmf_folder/blank.xdmf"
 expect "blank.xdmf a folder" 2 "results folder .*xdmf_folder: .*xdmf_folder/blank.xdmf is a folder, where the run writes a file" -- \
   "$sheetform" run "$demo" --stroke 0.01 -o "$work/xdmf_folder"
 
+# A full disk: continue from a checkpoint only when there is one. A 6 MB tmpfs fills before the
+# first checkpoint (30 min of wall time), or after the one of cycle 20; without a mount (no
+# privilege), a file-size limit stands in for it.
+steel="$src/cases/square_cup_steel/case.toml"
+full_disk() {  # full_disk NAME PATTERN TAG [OPTION...]: a run of the steel cup on a 6 MB disk
+  local name="$1" pattern="$2" disk="$work/disk_$3"; shift 3
+  mkdir -p "$disk"
+  if mount -t tmpfs -o size=6m tmpfs "$disk" 2>/dev/null; then
+    expect "$name" 6 "$pattern" -- "$sheetform" run "$steel" --stroke 0.5 --set blank.element_size=1.875 -q -o "$disk/out" "$@"
+    umount "$disk"
+  else
+    expect "$name" 6 "$pattern" -- bash -c 'trap "" XFSZ; ulimit -f 6000; exec "$@"' _ \
+      "$sheetform" run "$steel" --stroke 0.5 --set blank.element_size=1.875 -q -o "$disk/out" "$@"
+  fi
+}
+full_disk "full disk before a checkpoint" "^No checkpoint of this run was written before it stopped .* run the case again with --overwrite" none
+full_disk "full disk after a checkpoint" "^Once the results folder can be written again \(free some space\), continue from the last checkpoint: sheetform run .* --restart .*/disk_cycles/out/checkpoint.h5" \
+  cycles --set control.checkpoint_cycles=20
+
 echo "$passed passed, $failures failed"
 [ "$failures" -eq 0 ]
