@@ -25,12 +25,14 @@
 #include <omp.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <optional>
 
 #include "casefile/case_config.hpp"
@@ -75,6 +77,24 @@ struct Arguments {
   bool quiet = false;
   bool verbose = false;
 };
+
+// A whole-number option's check, saying what is expected (CLI11's own says "Value two not in
+// range 1 to 4096"): "expected a whole number of threads >= 1, got 'two'".
+CLI::Validator whole_number(const std::string& what, long lo, long hi) {
+  auto check = [what, lo, hi](std::string& text) -> std::string {
+    long value = 0;
+    const char* end = text.data() + text.size();
+    const auto [stop, error] = std::from_chars(text.data(), end, value);
+    const bool whole = error == std::errc() && stop == end;
+    if (whole && value >= lo && value <= hi) {
+      return {};
+    }
+    return fmt::format("expected a whole number of {} >= {}{}, got '{}'", what, lo,
+                       whole && value > hi ? fmt::format(" and at most {}", hi) : std::string(),
+                       text);
+  };
+  return CLI::Validator(check, fmt::format("{} >= {}", what, lo));
+}
 
 // The command-line options that change the case, applied before it is read (read_case).
 sf::CaseOptions case_options(const Arguments& args) {
@@ -180,14 +200,47 @@ void clear_earlier_run(const Arguments& args, const fs::path& out) {
   }
 }
 
+// A folder (or anything but a file) where a command writes a file in the results folder is bad
+// input, said before any work: the first frame's rename onto it would fail (an internal error).
+// `extensions`: the files written per part ("blank.xdmf", ...).
+void check_result_paths(const fs::path& out, const sf::Model& model,
+                        std::initializer_list<const char*> extensions) {
+  std::vector<fs::path> paths(std::begin(kRunFiles), std::end(kRunFiles));
+  for (fs::path& p : paths) {
+    p = out / p;
+  }
+  std::vector<std::string> parts{"blank"};
+  for (const sf::Tool& tool : model.tools) {
+    parts.push_back(tool.name);
+  }
+  for (const std::string& part : parts) {
+    for (const char* extension : extensions) {
+      paths.push_back(out / (part + extension));
+    }
+  }
+  for (const fs::path& path : paths) {
+    std::error_code error;
+    const fs::file_status status = fs::status(path, error);
+    if (fs::exists(status) && !fs::is_regular_file(status)) {
+      throw sf::InputError(fmt::format(
+          "results folder {}: {} is {}, where the run writes a file; remove or rename it, or give "
+          "-o another folder",
+          out.string(), path.string(),
+          fs::is_directory(status) ? "a folder" : "not a regular file"));
+    }
+  }
+}
+
 // Rank 0 prepares the results folder and keeps the resolved case beside the results; every rank
 // learns whether that worked (a failure met by rank 0 alone must not leave the others waiting).
 void prepare_results_folder(const sf::MpiSession& mpi, const Arguments& args, const fs::path& out,
-                            const std::string& resolved_case) {
+                            const sf::Model& model) {
+  const std::string& resolved_case = model.output.resolved_case;
   std::string problem;
   if (mpi.rank() == 0) {
     try {
       create_results_folder(out);
+      check_result_paths(out, model, {".xdmf", ".xdmf.tmp"});
       clear_earlier_run(args, out);
       std::ofstream file(out / "case.resolved.toml");
       file << resolved_case;
@@ -245,6 +298,35 @@ void print_parallel_banner(const sf::MpiSession& mpi) {
                cores == 1 ? "" : "s", advice);
 }
 
+// What to do once the results folder can be written again: go on from this run's last
+// checkpoint when there is one (or from the one it restarted from), else run the case again.
+std::string how_to_go_on(const Arguments& args, const sf::CaseConfig& config, const fs::path& out) {
+  std::error_code error;
+  fs::path checkpoint = sf::checkpoint_path(out);
+  if (!fs::is_regular_file(checkpoint, error)) {
+    checkpoint = args.restart.empty() ? fs::path() : fs::absolute(args.restart);
+  }
+  if (!checkpoint.empty()) {
+    return fmt::format(
+        "\nOnce the results folder can be written again (free some space), continue from the last "
+        "checkpoint: "
+        "sheetform run {} --restart {} -o {} (with this run's --set, --search, --stroke or "
+        "--end-time options)",
+        config.file.string(), checkpoint.string(), out.string());
+  }
+  const sf::ControlConfig& control = config.control;
+  return fmt::format(
+      "\nNo checkpoint of this run was written before it stopped (one is written every "
+      "control.checkpoint_minutes = {:g} min of wall time{}), so there is none to continue from: "
+      "once the folder can be written again (free some space), run the case again with "
+      "--overwrite (or -o another folder)",
+      control.checkpoint_minutes,
+      control.checkpoint_cycles > 0
+          ? fmt::format(" and every control.checkpoint_cycles = {} cycles",
+                        control.checkpoint_cycles)
+          : std::string());
+}
+
 int run(const Arguments& args, const sf::MpiSession& mpi) {
   sf::install_run_request_handlers();  // a Ctrl-C while meshing stops at the first cycle
   const LoadedCase loaded = load(args);
@@ -263,15 +345,21 @@ int run(const Arguments& args, const sf::MpiSession& mpi) {
     throw sf::InputError("--restart continues an explicit run; " + loaded.config.file.string() +
                          " is a static analysis ([analysis] type = \"static\")");
   }
-  prepare_results_folder(mpi, args, out, model.output.resolved_case);
+  prepare_results_folder(mpi, args, out, model);
   sf::log_info("Results     {}\n", out.string());
   print_parallel_banner(mpi);
   // 4. Run the explicit time loop (and springback when the case asks), or the static analysis.
   options.output_directory = out;
   options.restart_file = args.restart.empty() ? fs::path() : fs::absolute(args.restart);
   options.stop_at_cycle = args.stop_at_cycle;
-  const sf::RunSummary summary = model.analysis.is_static() ? sf::run_static(model, options)
-                                                            : sf::run_explicit(model, options);
+  const sf::RunSummary summary = [&] {
+    try {
+      return model.analysis.is_static() ? sf::run_static(model, options)
+                                        : sf::run_explicit(model, options);
+    } catch (const sf::OutputError& e) {
+      throw sf::OutputError(e.what() + how_to_go_on(args, loaded.config, out));
+    }
+  }();
   if (mpi.rank() != 0) {
     return sf::exit_ok;  // rank 0 reports
   }
@@ -311,6 +399,7 @@ int mesh(const Arguments& args, const sf::MpiSession& mpi) {
   sf::print_run_estimate(loaded.estimate, model);
   const fs::path out = output_directory(args, loaded.config);
   create_results_folder(out);
+  check_result_paths(out, model, {".xdmf", ".xdmf.tmp", ".msh"});
   sf::FrameOutput output(model, out);
   sf::SolutionState state = sf::make_initial_state(model);
   output.write_frame(model, state);
@@ -381,14 +470,14 @@ int main(int argc, char** argv) {
       ->add_option("--stop-at-cycle", args.stop_at_cycle,
                    "stop cleanly at the end of cycle N as on SIGTERM (last frame, checkpoint, "
                    "exit 5), to look at an early state or to test a restart")
-      ->check(CLI::PositiveNumber);
+      ->check(whole_number("cycles", 1, std::numeric_limits<long>::max()));
   run_cmd->add_option("--stroke", args.stroke, "override the end condition: stroke in mm");
   run_cmd->add_option("--end-time", args.end_time, "override the end condition: end time in s");
   run_cmd
       ->add_option("--threads", args.threads,
                    "OpenMP threads (default: OMP_NUM_THREADS, else every core); results are the "
                    "same bits for any count")
-      ->check(CLI::Range(1, 4096));
+      ->check(whole_number("threads", 1, 4096));
   run_cmd
       ->add_option("--search", args.search,
                    "override the search of every [[contact]]: standard, modified or cached")

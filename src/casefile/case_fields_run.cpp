@@ -59,7 +59,8 @@ FieldTable<ControlConfig> make_control_fields() {
         }
       }));
   t.push_back(integer_field<C>(
-      "output_frames", &C::output_frames, IntegerRange{.lo = 1},
+      "output_frames", &C::output_frames,
+      IntegerRange{.lo = 1, .limit_note = "a run is held to limits.max_frames, 10000 by default"},
       "frames at evenly spaced times (plus the initial one), each written at the first step end "
       "at or past its time (the step is not cut to it: docs/time-integration.md); the last at "
       "the end time"));

@@ -228,6 +228,11 @@ bool TomlSection::read_integer(std::string_view key, int& value, const IntegerRa
     return false;
   }
   const auto* integer = node->as_integer();
+  if (integer && integer->get() > range.hi && range.hi == std::numeric_limits<int>::max()) {
+    // The range's text leaves out the type's own bound; a value beyond it is told the bound.
+    fail_value(key, fmt::format("{}, at most {} (the largest this key holds{}{})", range.describe(),
+                                range.hi, range.limit_note.empty() ? "" : "; ", range.limit_note));
+  }
   if (!integer || !range.contains(integer->get())) {
     fail_value(key, range.describe());
   }

@@ -42,6 +42,8 @@ struct IntegerRange {
   std::int64_t lo = std::numeric_limits<int>::min();
   std::int64_t hi = std::numeric_limits<int>::max();
   std::string_view unit{};
+  /// Said to a value above hi, besides hi itself: a tighter limit elsewhere ("limits.max_frames").
+  std::string_view limit_note{};
 
   bool contains(std::int64_t v) const { return v >= lo && v <= hi; }
   std::string describe() const;

@@ -105,8 +105,45 @@ UnitSystem parse_unit_system(std::string_view text) {
         "inconsistent units: {} / {}^2 is {}, not {} (stress = force / length^2)", force.name,
         length.name, name_of_size(implied_stress, kStresses, "Pa"), stress.name));
   }
-  return UnitSystem{std::string(length.name), std::string(time.name), std::string(mass.name),
-                    std::string(force.name), std::string(stress.name)};
+  return UnitSystem{std::string(length.name),
+                    std::string(time.name),
+                    std::string(mass.name),
+                    std::string(force.name),
+                    std::string(stress.name),
+                    length.si,
+                    time.si,
+                    mass.si};
+}
+
+double UnitSystem::si_size(const Dimension& d) const {
+  if (!named()) {
+    return 0.0;
+  }
+  return std::pow(length_si, d.length) * std::pow(time_si, d.time) * std::pow(mass_si, d.mass);
+}
+
+const std::vector<UnitSystem>& accepted_unit_systems() {
+  static const std::vector<UnitSystem> systems = [] {
+    std::vector<UnitSystem> out;
+    for (const NamedUnit& l : kLengths) {
+      for (const NamedUnit& t : kTimes) {
+        for (const NamedUnit& m : kMasses) {
+          for (const NamedUnit& f : kForces) {
+            for (const NamedUnit& s : kStresses) {
+              try {
+                out.push_back(parse_unit_system(
+                    fmt::format("{}-{}-{}-{}-{}", l.name, t.name, m.name, f.name, s.name)));
+              } catch (const std::invalid_argument&) {
+                // not consistent: not a system a case can declare
+              }
+            }
+          }
+        }
+      }
+    }
+    return out;
+  }();
+  return systems;
 }
 
 }  // namespace sf

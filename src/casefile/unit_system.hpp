@@ -5,8 +5,16 @@
 // length^2), so that a case cannot claim units its numbers do not follow.
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace sf {
+
+/// The dimension of a quantity as powers of length, time and mass (a stress: -1, -2, 1).
+struct Dimension {
+  int length = 0;
+  int time = 0;
+  int mass = 0;
+};
 
 /// A consistent system of the five base units a case is written in, by their names.
 struct UnitSystem {
@@ -15,6 +23,16 @@ struct UnitSystem {
   std::string mass;    ///< e.g. "tonne"
   std::string force;   ///< e.g. "N"
   std::string stress;  ///< e.g. "MPa"
+  /// The base units' sizes in SI (m, s, kg); 0 for "consistent", a system of no known size.
+  double length_si = 0.0;
+  double time_si = 0.0;
+  double mass_si = 0.0;
+
+  /// Whether the sizes are known (a named system, not "consistent").
+  bool named() const { return length_si > 0.0; }
+  /// The size in SI units of this system's unit of a quantity of dimension d (MPa: 1e6 Pa);
+  /// 0 when the system is not named.
+  double si_size(const Dimension& d) const;
 
   /// Derived units as messages write them.
   std::string velocity() const { return length + "/" + time; }             ///< "mm/s"
@@ -34,5 +52,9 @@ struct UnitSystem {
 /// Throws std::invalid_argument with a message saying which part is unknown (and the names
 /// accepted there) or which relation fails (and the unit that would satisfy it).
 UnitSystem parse_unit_system(std::string_view text);
+
+/// Every consistent named system parse_unit_system accepts (e.g. mm-s-tonne-N-MPa, m-s-kg-N-Pa,
+/// mm-ms-kg-kN-GPa): the systems a case can be written in, which bound what its numbers can mean.
+const std::vector<UnitSystem>& accepted_unit_systems();
 
 }  // namespace sf

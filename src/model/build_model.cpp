@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -16,6 +17,8 @@
 #include "meshing/gmsh_reader.hpp"
 #include "model/constraint_assembly.hpp"
 #include "model/node_selection.hpp"
+#include "model/physical_ranges.hpp"
+#include "model/time_step_check.hpp"
 
 namespace sf {
 namespace {
@@ -373,6 +376,11 @@ void set_mass_and_time_step(const CaseConfig& config, Model& model, const ShellS
   compute_lumped_mass(blank.part, blank.mesh.nodes, state, blank.mass, blank.rotational_inertia);
   blank.physical_mass = blank.mass.sum();
   blank.physical_nodal_mass = blank.mass;
+  const bool explicit_run = !model.analysis.is_static();
+  if (explicit_run) {  // before mass scaling, which would divide by a step of 0
+    check_critical_time_step(config, blank,
+                             compute_stable_time_step(blank.part, blank.mesh.nodes, state));
+  }
   set_up_mass_scaling(blank.part, blank.mesh.nodes, state, control.mass_scaling_dt,
                       control.time_step_safety, blank.scaling);
   const TimeStepCheck step = scale_mass_to_time_step(blank.part, blank.mesh.nodes, blank.scaling,
@@ -388,6 +396,9 @@ void set_mass_and_time_step(const CaseConfig& config, Model& model, const ShellS
   }
   model.time.time_step = step.dt;
   model.time.limiting_element = step.element;
+  if (explicit_run) {
+    check_scaled_time_step(config, model);
+  }
 }
 
 void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& state) {
@@ -498,6 +509,29 @@ void set_up_force_controlled_tools(const CaseConfig& config, Model& model) {
   }
 }
 
+// The stroke tool's motion never travels control.stroke: the message names the case file, the
+// stroke and the tool's curve, and how far the curve goes.
+[[noreturn]] void throw_stroke_not_reached(const CaseConfig& config, std::size_t index,
+                                           const Tool& tool) {
+  const MotionConfig& motion = config.tools[index].motion;
+  if (!tool.motion.moves()) {
+    throw InputError(fmt::format(
+        "{}: control.stroke_tool: tool '{}' (tools[{}]) does not move, so it cannot define the "
+        "stroke",
+        config.file.string(), tool.name, index));
+  }
+  const bool velocity = motion.type == MotionConfig::Type::velocity;
+  const char* curve = velocity ? "velocity" : "displacement";
+  const double end = RigidToolMotion::kTravelSearchEnd;
+  throw InputError(fmt::format(
+      "{}: control.stroke = {} mm: tool '{}' never travels that far: its tools[{}].motion.curve "
+      "(type = \"{}\", {}) reaches {:.6g} mm by t = {:g} s (after its last point the {} holds its "
+      "last value); give a curve that reaches the stroke, or a smaller control.stroke (or "
+      "--stroke)",
+      config.file.string(), config.control.stroke, tool.name, index, curve,
+      velocity ? "[s, mm/s]" : "[s, mm]", tool.motion.travel(end), end, curve));
+}
+
 void set_end_time(const CaseConfig& config, Model& model) {
   const ControlConfig& control = config.control;
   if (!control.stroke_tool.empty()) {
@@ -516,7 +550,11 @@ void set_end_time(const CaseConfig& config, Model& model) {
           "force), so it cannot define the stroke",
           config.file.string(), tool.name));
     }
-    model.time.end_time = tool.motion.time_at_travel(control.stroke, tool.name);
+    const std::optional<double> end = tool.motion.time_at_travel(control.stroke);
+    if (!end) {
+      throw_stroke_not_reached(config, static_cast<std::size_t>(model.time.stroke_tool), tool);
+    }
+    model.time.end_time = *end;
   } else {
     model.time.end_time = control.end_time;
   }
@@ -604,6 +642,7 @@ Model build_model(const CaseConfig& config) {
   const ShellState state = make_shell_state(
       element_count(model.blank.part), config.blank.integration_points, config.blank.thickness);
   set_mass_and_time_step(config, model, state);
+  check_physical_ranges(config, model);
   set_up_contacts(config, model, state);
   set_up_force_controlled_tools(config, model);
   set_end_time(config, model);

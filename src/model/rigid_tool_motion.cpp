@@ -1,11 +1,7 @@
 #include "model/rigid_tool_motion.hpp"
 
-#include <fmt/core.h>
-
 #include <cmath>
 #include <stdexcept>
-
-#include "core/errors.hpp"
 
 namespace sf {
 
@@ -48,22 +44,18 @@ double RigidToolMotion::speed(double t) const {
   return 0.0;
 }
 
-double RigidToolMotion::time_at_travel(double target, const std::string& tool_name) const {
+std::optional<double> RigidToolMotion::time_at_travel(double target) const {
   if (!moves()) {
-    throw InputError(
-        fmt::format("tool '{}' does not move, so it cannot define the stroke", tool_name));
+    return std::nullopt;
   }
-  // Bracket: double the upper bound until the travel is reached (a held speed of zero or a
-  // displacement curve that stops short never gets there).
+  // Bracket: double the upper bound until the travel is reached.
   double low = 0.0;
   double high = 1e-6;
   while (travel(high) < target) {
     low = high;
     high *= 2.0;
-    if (high > 1e6) {
-      throw InputError(fmt::format(
-          "tool '{}': its motion curve never reaches the stroke of {} mm (it reaches {} mm)",
-          tool_name, target, travel(1e6)));
+    if (high > kTravelSearchEnd) {
+      return std::nullopt;
     }
   }
   for (int i = 0; i < 200 && high - low > 1e-12 * high; ++i) {

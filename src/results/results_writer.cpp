@@ -66,10 +66,8 @@ void writing(const std::filesystem::path& directory, Write write) {
     const std::string what = e.what();
     if (what.find("No space left on device") != std::string::npos ||
         what.find("errno = 28") != std::string::npos) {
-      throw OutputError(
-          "cannot write the results in " + directory.string() +
-          ": the disk is full (No space left on device); free some space, then run again or go "
-          "on from the last checkpoint with --restart");
+      throw OutputError("cannot write the results in " + directory.string() +
+                        ": the disk is full (No space left on device)");
     }
     throw OutputError("cannot write the results: " + what);
   }
@@ -490,8 +488,7 @@ void ResultsWriter::check_room(const std::vector<PartFrameView>& parts) const {
   if (room < 2.0 * bytes) {
     throw OutputError(fmt::format(
         "cannot write the results in {}: the disk is full ({:.1f} MB left, a frame needs about "
-        "{:.1f} MB); free some space, then run again or go on from the last checkpoint with "
-        "--restart",
+        "{:.1f} MB)",
         directory_.string(), std::max(room, 0.0) / 1e6, bytes / 1e6));
   }
 }

@@ -11,6 +11,7 @@
 #include "core/log.hpp"
 #include "solver/explicit_driver.hpp"
 #include "solver/output_schedule.hpp"
+#include "solver/time_step_control.hpp"
 
 // The explicit springback route (docs/static-analysis.md, "Springback by dynamic relaxation").
 //
@@ -405,6 +406,7 @@ DynamicRelaxationResult run_dynamic_relaxation(const Model& model, SolutionState
       }
       dt = schedule.land_on_frame(s.time, dt);
       dt = std::min(dt, t_stop - s.time);
+      check_step_advances(s, dt, " in the springback");
       advance_one_step(model, s, dt, dt_previous);
       dt_previous = dt;
       // Below the total energy at the start of springback the check is silent.

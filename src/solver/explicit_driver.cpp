@@ -17,6 +17,7 @@
 #include "solver/springback.hpp"
 #include "solver/state_gather.hpp"
 #include "solver/stop_request.hpp"
+#include "solver/time_step_control.hpp"
 
 namespace sf {
 
@@ -217,6 +218,7 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
       // at w dt = 0.87), and frame after frame that pumped energy into the flange's contact
       // chatter (the U-channel's energy balance grew 2x per frame, to 1.5e-4 at 10 mm).
       dt = std::min(dt, model.time.end_time - s.time);
+      check_step_advances(s, dt, "");
       advance_one_step(model, s, dt, loop.dt_previous);
       loop.dt_previous = dt;
       if (s.time > 0.1 * model.time.end_time) {

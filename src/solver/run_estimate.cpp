@@ -72,8 +72,10 @@ RunEstimate estimate_run(const CaseConfig& config, const Model& model) {
     e.tool_triangles += static_cast<long>(t.mesh.triangles.cols());
   }
   const bool explicit_run = !model.analysis.is_static();
-  e.cycles =
-      explicit_run && model.time.time_step > 0.0 ? model.time.end_time / model.time.time_step : 0.0;
+  // A step of 0 gives an infinite count, which the limit refuses (not 0 cycles, which it passes).
+  e.cycles = explicit_run ? model.time.end_time / model.time.time_step : 0.0;
+  e.end_time = model.time.end_time;
+  e.time_step = model.time.time_step;
   e.element_cycles = e.cycles * static_cast<double>(e.elements);
   e.memory_bytes = kBaseMemory + kMemoryPerElement * static_cast<double>(e.elements) +
                    kMemoryPerToolTriangle * static_cast<double>(e.tool_triangles);
@@ -118,10 +120,17 @@ void enforce_run_limits(const CaseConfig& config, const RunEstimate& e) {
                     "case-file.md, [limits])",
                     file, what, key, advice, key));
   };
-  if (e.cycles > l.max_cycles) {
-    refuse(fmt::format("the run needs about {:.3g} cycles (end time / time step)", e.cycles),
-           fmt::format("max_cycles = {:.3g}", l.max_cycles),
-           "check the density, the element size and the end time or stroke");
+  if (!(e.cycles <= l.max_cycles)) {  // an infinite or NaN count too
+    const ControlConfig& c = config.control;
+    refuse(
+        fmt::format("the run needs about {:.3g} cycles (end time {:.4g} s{} / time step {:.4g} "
+                    "s)",
+                    e.cycles, e.end_time,
+                    c.stroke > 0.0 ? fmt::format(", the time of control.stroke = {:g} mm", c.stroke)
+                                   : std::string(" from control.end_time"),
+                    e.time_step),
+        fmt::format("max_cycles = {:.3g}", l.max_cycles),
+        "check the density, the element size and the end time or stroke");
   }
   if (static_cast<double>(e.elements) > l.max_elements) {
     refuse(fmt::format("the blank has {} elements", e.elements),

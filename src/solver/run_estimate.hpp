@@ -22,8 +22,10 @@ struct InitialPenetration {
 };
 
 struct RunEstimate {
-  double cycles = 0.0;  ///< explicit cycles (0 for a static analysis)
-  long elements = 0;    ///< blank elements
+  double cycles = 0.0;     ///< explicit cycles (0 for a static analysis)
+  double end_time = 0.0;   ///< s, what the cycles are counted to
+  double time_step = 0.0;  ///< s, the initial step they are counted by
+  long elements = 0;       ///< blank elements
   long tool_triangles = 0;
   double element_cycles = 0.0;                   ///< cycles x blank elements
   double memory_bytes = 0.0;                     ///< the run's resident memory, estimated

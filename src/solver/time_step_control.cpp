@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/errors.hpp"
 #include "core/exact_sums.hpp"
@@ -101,6 +102,17 @@ double compute_time_step(const Model& model, SolutionState& s) {
   }
   s.max_stable_dt = std::max(s.max_stable_dt, check.dt);
   return check.dt;
+}
+
+void check_step_advances(const SolutionState& s, double dt, const char* where) {
+  if (std::isfinite(dt) && s.time + dt > s.time) {
+    return;
+  }
+  throw InstabilityError(fmt::format(
+      "the time step {:.3e} s does not advance the time t = {:.6e} s at cycle {}{} (element {} "
+      "limits the step, stable step {:.3e} s): the run cannot go on; check the blank's material "
+      "(young, density) and its smallest elements",
+      dt, s.time, s.cycle, where, s.dt_element, s.stable_dt));
 }
 
 }  // namespace sf

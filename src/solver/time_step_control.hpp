@@ -14,4 +14,10 @@ namespace sf {
 /// InstabilityError when the added mass passes control.mass_scaling_max_added.
 double compute_time_step(const Model& model, SolutionState& state);
 
+/// Throws InstabilityError when a step of dt (s) would not move the time state.time on: a step of
+/// 0, one lost in the time's round-off, or not a finite number. A time loop calls it before each
+/// step so that it can never cycle in place (build_model refuses such a step at the start; this
+/// guards any that arises later). `where` follows the time in the message (" in the springback").
+void check_step_advances(const SolutionState& state, double dt, const char* where);
+
 }  // namespace sf

@@ -68,4 +68,31 @@ TEST(UnitSystem, ErrorsSayWhatIsWrong) {
             "\"mm-s-tonne-N-MPa\" or \"m-s-kg-N-Pa\"), or \"consistent\", got 6 parts");
 }
 
+TEST(UnitSystem, SizesOfDerivedUnits) {
+  const sf::UnitSystem forming = sf::parse_unit_system("mm-s-tonne-N-MPa");
+  ASSERT_TRUE(forming.named());
+  EXPECT_DOUBLE_EQ(forming.si_size({-1, -2, 1}), 1e6);  // MPa in Pa
+  EXPECT_DOUBLE_EQ(forming.si_size({-3, 0, 1}), 1e12);  // tonne/mm^3 in kg/m^3
+  EXPECT_DOUBLE_EQ(forming.si_size({1, -1, 0}), 1e-3);  // mm/s in m/s
+  EXPECT_FALSE(sf::parse_unit_system("consistent").named());
+  EXPECT_EQ(sf::parse_unit_system("consistent").si_size({1, 0, 0}), 0.0);
+}
+
+TEST(UnitSystem, AcceptedSystemsAreTheConsistentOnes) {
+  // 15 of the 1200 combinations of the accepted names are consistent, the forming and SI systems
+  // among them; each reads back as itself.
+  const auto& systems = sf::accepted_unit_systems();
+  EXPECT_EQ(systems.size(), 15u);
+  int forming = 0, si = 0;
+  for (const sf::UnitSystem& u : systems) {
+    const std::string name =
+        u.length + "-" + u.time + "-" + u.mass + "-" + u.force + "-" + u.stress;
+    EXPECT_NO_THROW(sf::parse_unit_system(name)) << name;
+    forming += name == "mm-s-tonne-N-MPa";
+    si += name == "m-s-kg-N-Pa";
+  }
+  EXPECT_EQ(forming, 1);
+  EXPECT_EQ(si, 1);
+}
+
 }  // namespace

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <variant>
 
 #include "casefile/case_config.hpp"
 #include "core/errors.hpp"
@@ -66,6 +67,26 @@ TEST_F(Instability, InvertedElementNamesTheElementTimeAndCycle) {
   ASSERT_EQ(std::sscanf(message.c_str(), "shell element %d", &named), 1) << message;
   const auto named_quad = model_->blank.part.quads.col(named);
   EXPECT_TRUE((named_quad.array() == moved).any()) << message;
+}
+
+// A step that does not move the time on stops the run instead of cycling at t = 0 for ever
+// (issue 31: young = 1e300 made the wave speed overflow, so the critical step and the initial step
+// were both 0, and the collapse check, dt < 1e-3 x the initial step, never fired). build_model
+// refuses such a material now; here the model is changed after it was built.
+TEST(TimeLoopGuard, AStepOfZeroStopsTheRun) {
+  sf::CaseConfig config =
+      sf::read_case(fs::path(SF_SOURCE_DIR) / "cases/square_cup_aluminium/case.toml");
+  config.control.stroke = 1.0;
+  sf::Model model = sf::build_model(config);
+  std::visit([](auto& law) { law.E = 1e300; }, model.blank.part.material);
+  model.time.time_step = 0.0;
+  sf::RunOptions options;
+  options.write_results = false;
+  const std::string message = message_of([&] { sf::run_explicit(model, options); });
+  EXPECT_NE(message.find("the time step 0.000e+00 s does not advance the time t = 0.000000e+00 s "
+                         "at cycle 0"),
+            std::string::npos)
+      << message;
 }
 
 }  // namespace
