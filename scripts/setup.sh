@@ -9,7 +9,7 @@ set -euo pipefail
 sf_cores() { env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc; }
 cd "$(dirname "$0")/.."
 
-packages=(g++ cmake ninja-build pkg-config git libeigen3-dev libsuitesparse-dev libhdf5-dev hdf5-tools
+packages=(g++ lld cmake ninja-build pkg-config git libeigen3-dev libsuitesparse-dev libhdf5-dev hdf5-tools
           gmsh libgmsh-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libfmt-dev
           libgtest-dev python3-h5py python3-numpy python3-matplotlib python3-tomlkit
           libopenmpi-dev openmpi-bin libmetis-dev libseccomp-dev)

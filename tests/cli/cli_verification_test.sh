@@ -6,21 +6,8 @@
 set -u
 sheetform="$1"; src="$2"; work="$3"
 rm -rf "$work"; mkdir -p "$work"
-failures=0; passed=0
+source "$(dirname "$0")/expect.sh"
 python=/usr/bin/python3
-
-expect() {  # expect NAME CODE PATTERN -- command...
-  local name="$1" code="$2" pattern="$3"; shift 4
-  local out rc
-  out=$("$@" 2>&1); rc=$?
-  if [ "$rc" -ne "$code" ]; then
-    echo "FAIL $name: exit code $rc, expected $code"; echo "$out" | tail -5; failures=$((failures+1)); return
-  fi
-  if ! grep -qE -- "$pattern" <<<"$out"; then
-    echo "FAIL $name: output lacks /$pattern/"; echo "$out" | tail -5; failures=$((failures+1)); return
-  fi
-  echo "ok   $name"; passed=$((passed+1))
-}
 
 expect_not() {  # expect_not NAME PATTERN -- command...: exit 0 and no line matching PATTERN
   local name="$1" pattern="$2"; shift 3
