@@ -17,7 +17,10 @@ namespace sf {
 
 /// Visits the state's scalars and arrays. What is left out is scratch (the corner buffer, the
 /// per-thread sums) or rebuilt exactly (the cached search's candidate lists: its answers are the
-/// modified search's bit for bit, whatever the lists hold).
+/// modified search's bit for bit, whatever the lists hold), or is never set when a checkpoint is
+/// written: contact_off and released_loads belong to the springback's dynamic relaxation, whose
+/// loop (solver/dynamic_relaxation.cpp) writes no checkpoint; only run_explicit does.
+/// tests/solver/test_checkpoint_layout.cpp pins the order, names and kinds (format 1).
 template <class Visitor, class State>
 void visit_checkpoint_fields(Visitor& v, State& s) {
   static_assert(std::is_same_v<std::remove_const_t<State>, SolutionState>);
