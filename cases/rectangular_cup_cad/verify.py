@@ -196,8 +196,9 @@ def geo_variant(work):
 
 def run_case(args, case, name, extra=()):
     out = os.path.join(args.work, name)
-    cmd = [args.sheetform, "run", case, "-o", out, "-q", "--threads", "1", "--stroke",
-           f"{args.stroke:g}"] + list(extra)
+    # --overwrite: the work folder is this script's own, and a second run must not stop at it.
+    cmd = [args.sheetform, "run", case, "-o", out, "--overwrite", "-q", "--threads", "1",
+           "--stroke", f"{args.stroke:g}"] + list(extra)
     if not (args.reuse and os.path.isfile(os.path.join(out, "summary.json"))):
         run(cmd)
     with open(os.path.join(out, "summary.json"), encoding="utf-8") as f:
