@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "element/shell_directors.hpp"
+#include "mesh/mean_edge_length.hpp"
 
 namespace sf {
 
@@ -24,24 +25,10 @@ StaticShellBody::StaticShellBody(const ShellPart& part, const Matrix3X& x, const
         0.0);
   }
   // Mean edge length and mean thickness.
-  double edges = 0.0;
-  long edge_count = 0;
-  for (Eigen::Index e = 0; e < part_.quads.cols(); ++e) {
-    for (int a = 0; a < 4; ++a) {
-      edges += (x_.col(part_.quads(a, e)) - x_.col(part_.quads((a + 1) % 4, e))).norm();
-      ++edge_count;
-    }
-  }
-  for (Eigen::Index e = 0; e < part_.triangles.cols(); ++e) {
-    for (int a = 0; a < 3; ++a) {
-      edges += (x_.col(part_.triangles(a, e)) - x_.col(part_.triangles((a + 1) % 3, e))).norm();
-      ++edge_count;
-    }
-  }
-  if (edge_count == 0) {
+  if (element_count(part_) == 0) {
     throw std::invalid_argument("StaticShellBody: the part has no elements");
   }
-  length_scale_ = edges / static_cast<double>(edge_count);
+  length_scale_ = mean_edge_length(x_, part_.quads, part_.triangles);
   const double t = std::accumulate(state_.thickness.begin(), state_.thickness.end(), 0.0) /
                    static_cast<double>(state_.thickness.size());
   const auto [young, poisson] =

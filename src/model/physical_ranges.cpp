@@ -12,6 +12,7 @@
 #include "core/errors.hpp"
 #include "core/log.hpp"
 #include "material/plane_stress.hpp"
+#include "mesh/mean_edge_length.hpp"
 
 namespace sf {
 namespace {
@@ -132,21 +133,7 @@ BlankSize measure_blank(const PartMesh& mesh) {
     return size;
   }
   size.diagonal = (mesh.nodes.rowwise().maxCoeff() - mesh.nodes.rowwise().minCoeff()).norm();
-  double sum = 0.0;
-  long edges = 0;
-  const auto add_edges = [&](const auto& elements) {
-    const Eigen::Index corners = elements.rows();
-    for (Eigen::Index e = 0; e < elements.cols(); ++e) {
-      for (Eigen::Index i = 0; i < corners; ++i) {
-        sum += (mesh.nodes.col(elements((i + 1) % corners, e)) - mesh.nodes.col(elements(i, e)))
-                   .norm();
-        ++edges;
-      }
-    }
-  };
-  add_edges(mesh.quads);
-  add_edges(mesh.triangles);
-  size.mean_edge = edges > 0 ? sum / static_cast<double>(edges) : 0.0;
+  size.mean_edge = mean_edge_length(mesh.nodes, mesh.quads, mesh.triangles);
   return size;
 }
 

@@ -496,13 +496,11 @@ void ResultsWriter::check_room(const std::vector<PartFrameView>& parts) const {
 void ResultsWriter::write_checked_frame(double time, int cycle,
                                         const std::vector<PartFrameView>& parts) {
   const std::vector<XdmfFrame> frames = describe_frame(time, cycle, parts);
-  const std::size_t history_rows =
-      history_columns_.empty() ? 0 : history_buffer_.size() / history_columns_.size();
   run_detached([&] {
     store_frame(frames, parts);
     write_xdmf_files(&frames);  // the frame is committed: only now may the .xdmf files list it
   });
-  commit_history(history_rows);
+  commit_history();
   for (std::size_t i = 0; i < parts_.size(); ++i) {
     parts_[i].frames.push_back(frames[i]);
   }
@@ -581,22 +579,25 @@ void ResultsWriter::flush_history() {
     return;
   }
   writing(directory_, [&] {
-    const std::size_t rows = history_buffer_.size() / history_columns_.size();
     run_detached([&] {
       h5::File file(results_file(), h5::FileMode::read_write);
       write_history_rows(file);
       file.close();
     });
-    commit_history(rows);
+    commit_history();
   });
 }
 
-std::size_t ResultsWriter::write_history_rows(h5::File& file) const {
+std::size_t ResultsWriter::buffered_history_rows() const {
+  return history_columns_.empty() ? 0 : history_buffer_.size() / history_columns_.size();
+}
+
+void ResultsWriter::write_history_rows(h5::File& file) const {
   const std::size_t columns = history_columns_.size();
-  if (columns == 0 || history_buffer_.empty()) {
-    return 0;
+  const std::size_t rows = buffered_history_rows();
+  if (rows == 0) {
+    return;
   }
-  const std::size_t rows = history_buffer_.size() / columns;
   std::vector<double> column_values(rows);
   for (std::size_t c = 0; c < columns; ++c) {
     for (std::size_t r = 0; r < rows; ++r) {
@@ -605,11 +606,10 @@ std::size_t ResultsWriter::write_history_rows(h5::File& file) const {
     // Written at a fixed offset, so a retry after a failure does not duplicate rows.
     file.write_rows("/history/" + history_columns_[c], history_rows_written_, column_values);
   }
-  return rows;
 }
 
-void ResultsWriter::commit_history(std::size_t rows) {
-  history_rows_written_ += rows;
+void ResultsWriter::commit_history() {
+  history_rows_written_ += buffered_history_rows();
   history_buffer_.clear();
 }
 

@@ -155,9 +155,12 @@ class ResultsWriter {
                    const std::vector<PartFrameView>& parts) const;
   /// Sets results.h5's frame count to `frames` once everything before is on the disk; closes.
   void commit_frames(h5::File& file, int frames) const;
-  /// Writes the buffered rows into the open file; returns how many (commit_history after close).
-  std::size_t write_history_rows(h5::File& file) const;
-  void commit_history(std::size_t rows);
+  /// The whole rows in the history buffer (not yet in results.h5).
+  std::size_t buffered_history_rows() const;
+  /// Writes the buffered rows into the open file (commit_history once the write is done).
+  void write_history_rows(h5::File& file) const;
+  /// Counts the buffered rows as written and empties the buffer.
+  void commit_history();
   /// Replaces every part's .xdmf: its frames, and `pending`'s (one per part) when given.
   void write_xdmf_files(const std::vector<XdmfFrame>* pending = nullptr) const;
 
