@@ -143,14 +143,15 @@ void create_results_folder(const fs::path& out) {
 }
 
 // The files a run writes in its results folder (besides one .xdmf per part).
-constexpr const char* kRunFiles[] = {"results.h5", "summary.json", "checkpoint.h5",
-                                     "checkpoint.h5.tmp", "case.resolved.toml"};
+constexpr const char* kRunFiles[] = {"results.h5",        "summary.json",       "checkpoint.h5",
+                                     "checkpoint.h5.tmp", "case.resolved.toml", "formed_part.h5",
+                                     "formed_part.h5.tmp"};
 
 // A write's temporary files (<part>.xdmf.tmp, checkpoint.h5.tmp) are left only when every process
 // of a run was killed at once inside a write (docs/results-format.md): the next run in the folder
 // removes them.
 bool is_leftover_temporary(const fs::path& file) {
-  return file.filename() == "checkpoint.h5.tmp" ||
+  return file.filename() == "checkpoint.h5.tmp" || file.filename() == "formed_part.h5.tmp" ||
          (file.extension() == ".tmp" && file.stem().extension() == ".xdmf");
 }
 

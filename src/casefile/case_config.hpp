@@ -168,6 +168,10 @@ struct BlankConfig {
   /// at the start to fix its material axes. Used by hill48 only; must not be (near) normal to an
   /// element (build_model checks).
   std::array<double, 3> rolling_direction{1.0, 0.0, 0.0};
+  /// A formed part (another run's <results>/formed_part.h5, absolute after reading) whose state
+  /// the run starts from: its blank must be this case's (docs/process-chain.md). Empty: the
+  /// blank starts flat and stress-free.
+  std::filesystem::path formed_part;
 };
 
 /// How a tool moves: fixed, a prescribed velocity or displacement along `direction`, or driven by
@@ -299,7 +303,10 @@ struct ControlConfig {
   /// -, largest added mass as a fraction of the physical mass; the run stops beyond it; 0 = none
   double mass_scaling_max_added = 1.0;
   double energy_blowup_ratio = 10.0;  ///< stop when total energy exceeds this x external work (+1)
-  int checkpoint_cycles = 0;          ///< cycles between checkpoints; 0 = none by cycle count
+  /// The last step is cut short to end exactly at the end time (false: the run ends at the first
+  /// whole step at or past it)
+  bool land_on_end = true;
+  int checkpoint_cycles = 0;  ///< cycles between checkpoints; 0 = none by cycle count
   /// minutes of wall time between checkpoints; 0 = none by wall time
   double checkpoint_minutes = 30.0;
   std::array<double, 3> gravity{0.0, 0.0, 0.0};  ///< mm/s^2 (forming cases: 0, or -9810 in z)

@@ -212,6 +212,26 @@ FieldTable<BlankConfig> make_blank_fields() {
       "to fix its material axes (docs/material.md). It must not be within about 5.7° of an "
       "element's normal (in-plane part of the unit vector >= 0.1): building the model stops "
       "with an error naming the element"));
+  t.push_back(
+      custom_field<B>(
+          {"formed_part",
+           "string",
+           "none",
+           {},
+           "a formed part (`formed_part.h5` of another run's results folder), relative to the "
+           "case file's folder: the run starts from its state (time, shape, thickness, stresses, "
+           "plastic strains; tools of the same name where it left them). Its blank must be this "
+           "case's blank (docs/process-chain.md)"},
+          [](const TomlSection& s, B& b, Presence) {
+            if (!s.has("formed_part")) {
+              return;
+            }
+            b.formed_part = read_existing_file(
+                s, "formed_part", [](const fs::path& p) { return p.extension() == ".h5"; },
+                "a formed part (.h5)");
+          },
+          [](TomlWriter& w, const B& b) { w.string("formed_part", b.formed_part.string()); })
+          .write_if([](const B& b) { return !b.formed_part.empty(); }));
   return t;
 }
 

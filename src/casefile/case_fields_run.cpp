@@ -79,6 +79,12 @@ FieldTable<ControlConfig> make_control_fields() {
       "largest added mass as a fraction of the blank's physical mass (0.05 = 5 %, the default "
       "1.0 = as much again as the blank's own mass); beyond it the run stops, or is refused at "
       "the start; 0 = no limit"));
+  t.push_back(bool_field<C>(
+      "land_on_end", &C::land_on_end,
+      "true: the last step is cut short so that the run ends exactly at the end time (or "
+      "stroke); false: it ends at the first whole step at or past it, so that another case "
+      "starting from its formed part (`blank.formed_part`) continues with the bits of one "
+      "uninterrupted run (docs/process-chain.md)"));
   t.push_back(number_field<C>("energy_blowup_ratio", &C::energy_blowup_ratio, greater_than(1.0),
                               "the run stops when the total energy exceeds this times the "
                               "external work"));

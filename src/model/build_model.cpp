@@ -263,6 +263,7 @@ void read_blank(const CaseConfig& config, Model& model) {
   blank.part.hourglass_coefficient = bc.hourglass_coefficient;
   blank.part.hourglass_form = bc.hourglass_form;
   blank.part.formulation = bc.formulation;
+  blank.formed_part = bc.formed_part;
   const bool material_axes =
       std::visit([](const auto& law) { return kUsesMaterialAxes<std::decay_t<decltype(law)>>; },
                  blank.part.material);
@@ -596,6 +597,7 @@ void copy_plans(const CaseConfig& config, Model& model) {
   TimeControl& time = model.time;
   time.progress_interval = config.control.progress_interval;
   time.energy_blowup_ratio = config.control.energy_blowup_ratio;
+  time.land_on_end = config.control.land_on_end;
   time.mass_scaling_max_added = config.control.mass_scaling_max_added;
   OutputPlan& output = model.output;
   output.frames = config.control.output_frames;

@@ -34,6 +34,9 @@ struct Blank {
   NodeCorners node_corners;       ///< each node's element corners, in the order they are summed
   VectorX physical_nodal_mass;    ///< tonne per node before mass scaling (for gravity)
   std::vector<NodeGroup> groups;  ///< every node group the case names, each once
+  /// The formed part the run starts from (blank.formed_part; solver/formed_part.hpp reads it
+  /// when the run starts). Empty: none.
+  std::filesystem::path formed_part;
 
   /// The node group of this name (build_model reads every group the case names).
   const NodeGroup& group(const std::string& name) const;
@@ -117,6 +120,9 @@ struct TimeControl {
   int limiting_element = -1;  ///< the element limiting time_step
   int progress_interval = 0;  ///< cycles between progress lines; 0 = about every 2 s of wall time
   double energy_blowup_ratio = 10.0;  ///< stop when total energy exceeds this x external work (+1)
+  /// The last step is cut short to end exactly at end_time (false: the run ends at the first
+  /// whole step at or past it, control.land_on_end)
+  bool land_on_end = true;
   /// -, largest added mass as a fraction of the physical mass; the run stops beyond it; 0 = none
   double mass_scaling_max_added = 0.0;
 };

@@ -6,11 +6,10 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
-#include <system_error>
 
 #include "core/build_info.hpp"
 #include "core/errors.hpp"
-#include "results/detached_write.hpp"
+#include "results/atomic_hdf5_write.hpp"
 #include "results/hdf5_file.hpp"
 #include "results/hdf5_probe.hpp"
 #include "solver/checkpoint_fields.hpp"
@@ -252,28 +251,12 @@ CheckpointInfo read_checked_checkpoint(const std::filesystem::path& file, Soluti
 
 void write_checkpoint(const std::filesystem::path& file, const SolutionState& state,
                       const CheckpointInfo& info) {
-  // In a detached child (results/detached_write.hpp): a kill of the run cannot leave the
-  // temporary file behind, the child finishes and renames it.
-  run_detached([&] {
-    std::filesystem::path temporary = file;
-    temporary += ".tmp";
-    try {
-      h5::File out(temporary, h5::FileMode::truncate);
-      write_info(out, info);
-      FieldWriter writer(out);
-      visit_checkpoint_fields(writer, state);
-      out.close();
-    } catch (const h5::Error& e) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      throw OutputError(fmt::format("cannot write the checkpoint {}: {}", file.string(), e.what()));
-    }
-    std::error_code error;
-    std::filesystem::rename(temporary, file, error);
-    if (error) {
-      throw OutputError(
-          fmt::format("cannot write the checkpoint {}: {}", file.string(), error.message()));
-    }
+  // In a detached child: a kill of the run cannot leave the temporary file behind, the child
+  // finishes and renames it (results/atomic_hdf5_write.hpp).
+  write_hdf5_atomically(file, "checkpoint", [&](h5::File& out) {
+    write_info(out, info);
+    FieldWriter writer(out);
+    visit_checkpoint_fields(writer, state);
   });
 }
 

@@ -1,6 +1,8 @@
 #include "solver/state_gather.hpp"
 
-#include "solver/checkpoint_fields.hpp"
+#include <type_traits>
+
+#include "solver/state_fields.hpp"
 
 namespace sf {
 
@@ -22,61 +24,47 @@ void gather_element_field(Domain& domain, std::vector<double>& field, int n_elem
   domain.gather_elements(field, static_cast<int>(field.size()) / n_elements);
 }
 
-// Gathers the checkpoint's per-node and per-element arrays; scalars are the same on every
-// process (exact all-reduces, replicated tools) and stay as they are.
-class CheckpointGather {
+// Gathers the per-node and per-element arrays of the fields with a role; scalars are the same
+// on every process (exact all-reduces, replicated tools) and stay as they are.
+class FieldGather {
  public:
-  explicit CheckpointGather(Domain& domain) : domain_(domain) {}
+  FieldGather(Domain& domain, int n_elements) : domain_(domain), n_elements_(n_elements) {}
   template <class T>
-  void scalar(const std::string& /*name*/, T& /*value*/) {}
-  void nodes(const std::string& /*name*/, Matrix3X& a) {
-    if (a.size() > 0) {  // empty alike on every process (friction, distance bounds off)
-      gather_node_field(domain_, a);
+  void operator()(const StateField& /*field*/, const std::string& /*key*/, T& value) {
+    if constexpr (std::is_same_v<T, std::vector<double>>) {
+      gather_element_field(domain_, value, n_elements_);
+    } else if constexpr (!std::is_arithmetic_v<T>) {
+      if (value.size() > 0) {  // empty alike on every process (friction, distance bounds off)
+        gather_node_field(domain_, value);
+      }
     }
-  }
-  void nodes(const std::string& /*name*/, VectorX& a) {
-    if (a.size() > 0) {
-      gather_node_field(domain_, a);
-    }
-  }
-  void elements(const std::string& /*name*/, std::vector<double>& a, int n) {
-    gather_element_field(domain_, a, n);
   }
 
  private:
   Domain& domain_;
+  int n_elements_;
 };
+
+void gather_fields_to_root(SolutionState& s, unsigned role) {
+  if (s.domain->processes() == 1) {
+    return;
+  }
+  FieldGather gather(*s.domain, s.shell.n_elements);
+  visit_state_fields_with(role, gather, s);
+}
 
 }  // namespace
 
 void gather_checkpoint_state_to_root(SolutionState& s) {
-  if (s.domain->processes() == 1) {
-    return;
-  }
-  CheckpointGather gather(*s.domain);
-  visit_checkpoint_fields(gather, s);
+  gather_fields_to_root(s, field_role::checkpoint);
+}
+
+void gather_formed_part_to_root(SolutionState& s) {
+  gather_fields_to_root(s, field_role::formed_part);
 }
 
 void gather_state_to_root(SolutionState& s) {
-  Domain& domain = *s.domain;
-  if (domain.processes() == 1) {
-    return;
-  }
-  for (Matrix3X* field :
-       {&s.x, &s.v, &s.omega, &s.rotation, &s.f_int, &s.m_int, &s.f_contact, &s.f_ext, &s.m_ext}) {
-    gather_node_field(domain, *field);
-  }
-  for (VectorX* field : {&s.half_thickness, &s.mass, &s.rotational_inertia}) {
-    gather_node_field(domain, *field);
-  }
-  ShellState& shell = s.shell;
-  for (std::vector<double>* field :
-       {&shell.sxx, &shell.syy, &shell.sxy, &shell.eps_p, &shell.flow_stress, &shell.flow_stress_at,
-        &shell.sxz, &shell.syz, &shell.thickness, &shell.hourglass, &shell.director,
-        &shell.back_stress}) {
-    gather_element_field(domain, *field, shell.n_elements);
-  }
-  gather_element_field(domain, s.scaling.element_dt, shell.n_elements);
+  gather_fields_to_root(s, field_role::output);
 }
 
 }  // namespace sf

@@ -11,7 +11,11 @@ namespace sf {
 /// state is completed; the others' is left as it was.
 void gather_state_to_root(SolutionState& s);
 
-/// Likewise for a checkpoint: every field the checkpoint keeps (solver/checkpoint_fields.hpp).
+/// Likewise for a checkpoint: every field the checkpoint keeps. Both gather the fields of
+/// solver/state_fields.hpp with their role (output, checkpoint).
 void gather_checkpoint_state_to_root(SolutionState& s);
+
+/// Likewise for the formed part (solver/formed_part.hpp): every field it hands on.
+void gather_formed_part_to_root(SolutionState& s);
 
 }  // namespace sf

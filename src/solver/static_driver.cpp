@@ -115,6 +115,12 @@ class StaticOutput {
 }  // namespace
 
 RunSummary run_static(const Model& model, const RunOptions& options, SolutionState* final_state) {
+  if (!model.blank.formed_part.empty()) {
+    throw InputError(fmt::format(
+        "{}: blank.formed_part: a static analysis does not start from a formed part yet (an "
+        "explicit run does)",
+        model.case_file.string()));
+  }
   const auto start = std::chrono::steady_clock::now();
   SolutionState s = make_initial_state(model);
   const auto node_name = blank_node_namer(model);

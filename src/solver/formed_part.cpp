@@ -1,0 +1,418 @@
+#include "solver/formed_part.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+#include "core/build_info.hpp"
+#include "core/errors.hpp"
+#include "results/atomic_hdf5_write.hpp"
+#include "results/hdf5_file.hpp"
+#include "results/hdf5_probe.hpp"
+#include "solver/state_fields.hpp"
+
+namespace sf {
+
+namespace {
+
+constexpr const char* kFormat = "sheetform formed part";
+constexpr int kFormatVersion = 1;
+constexpr const char* kUnits = "mm, tonne, s; N, MPa, N mm";
+
+const char* place_name(FieldPlace place) {
+  switch (place) {
+    case FieldPlace::run:
+      return "run";
+    case FieldPlace::node:
+      return "node";
+    case FieldPlace::element:
+      return "element";
+    case FieldPlace::point:
+      return "point";
+    case FieldPlace::tool:
+      return "tool";
+    case FieldPlace::contact:
+      return "contact";
+  }
+  return "?";
+}
+
+template <class Conn>
+std::vector<int> row_major(const Conn& conn) {  // (nodes per element, n) -> (n, nodes)
+  return {conn.data(), conn.data() + conn.size()};
+}
+
+// Writes the fields with the formed-part role under /state, shaped per node or per element.
+class FieldWriter {
+ public:
+  FieldWriter(h5::File& file, int n_elements) : file_(file), n_elements_(n_elements) {}
+  template <class T>
+  void operator()(const StateField& field, const std::string& key, const T& value) {
+    const std::string path = "/state/" + key;
+    if constexpr (std::is_arithmetic_v<T>) {
+      const double v = static_cast<double>(value);
+      file_.write(path, std::span<const double>(&v, 1), {1});
+    } else if constexpr (std::is_same_v<T, std::vector<double>>) {
+      const std::size_t n = static_cast<std::size_t>(n_elements_);
+      const bool per_element = n > 0 && !value.empty() && value.size() % n == 0;
+      file_.write(path, value,
+                  per_element ? std::vector<hsize_t>{n, value.size() / n}
+                              : std::vector<hsize_t>{value.size()});
+    } else {
+      const std::span<const double> data(value.data(), static_cast<std::size_t>(value.size()));
+      file_.write(path, data,
+                  value.rows() == 3 ? std::vector<hsize_t>{static_cast<hsize_t>(value.cols()), 3}
+                                    : std::vector<hsize_t>{data.size()});
+    }
+    file_.write_attribute(path, "place", std::string(place_name(field.place)));
+    file_.write_attribute(path, "unit", std::string(field.unit));
+  }
+
+ private:
+  h5::File& file_;
+  int n_elements_;
+};
+
+void write_mesh(h5::File& out, const Model& model) {
+  const PartMesh& mesh = model.blank.mesh;
+  const auto n = static_cast<hsize_t>(mesh.nodes.cols());
+  out.write("/mesh/reference_nodes",
+            std::span<const double>(mesh.nodes.data(), static_cast<std::size_t>(mesh.nodes.size())),
+            {n, 3});
+  std::vector<double> tags(mesh.gmsh_node_tags.begin(), mesh.gmsh_node_tags.end());
+  out.write("/mesh/node_tags", tags, {tags.size()});
+  out.write("/mesh/quads", row_major(mesh.quads), {static_cast<hsize_t>(mesh.quads.cols()), 4});
+  out.write("/mesh/triangles", row_major(mesh.triangles),
+            {static_cast<hsize_t>(mesh.triangles.cols()), 3});
+  out.create_group("/mesh/groups");
+  for (const NodeGroup& g : model.blank.groups) {
+    out.write("/mesh/groups/" + g.name, g.nodes, {g.nodes.size()});
+  }
+}
+
+}  // namespace
+
+std::string material_law_kind(const Material& material) {
+  return std::visit(
+      [](const auto& law) -> std::string {
+        using Law = std::decay_t<decltype(law)>;
+        if constexpr (std::is_same_v<Law, ElasticPlaneStress>) {
+          return "elastic";
+        } else if constexpr (std::is_same_v<Law, J2PlaneStress>) {
+          return "j2";
+        } else if constexpr (std::is_same_v<Law, Hill48PlaneStress>) {
+          return "hill48";
+        } else {
+          return "general_plasticity";
+        }
+      },
+      material);
+}
+
+void write_formed_part(const std::filesystem::path& file, const Model& model,
+                       const SolutionState& state) {
+  write_hdf5_atomically(file, "formed part", [&](h5::File& out) {
+    out.write_attribute("/", "format", std::string(kFormat));
+    out.write_attribute("/", "format_version", kFormatVersion);
+    out.write_attribute("/", "git_hash", std::string(build_info::git_hash));
+    out.write_attribute("/", "units", std::string(kUnits));
+    write_mesh(out, model);
+    const ShellPart& part = model.blank.part;
+    out.create_group("/section");
+    out.write_attribute("/section", "n_points", part.section.n_points);
+    out.write_attribute("/section", "rule",
+                        std::string(choice_name<ThroughThicknessRule>(kThroughThicknessRuleNames,
+                                                                      part.section.rule)));
+    out.create_group("/material");
+    out.write_attribute("/material", "law", material_law_kind(part.material));
+    FieldWriter writer(out, state.shell.n_elements);
+    visit_state_fields_with(field_role::formed_part, writer, state);
+    for (std::size_t t = 0; t < model.tools.size(); ++t) {
+      out.write_attribute("/state/tools/" + std::to_string(t), "name", model.tools[t].name);
+    }
+    for (std::size_t c = 0; c < model.contacts.size(); ++c) {
+      out.write_attribute("/state/contacts/" + std::to_string(c), "tool",
+                          model.tools[static_cast<std::size_t>(model.contacts[c].tool)].name);
+    }
+  });
+}
+
+namespace {
+
+// Reads one formed part (libhdf5 known to survive it), checking every entry before use.
+class PartReader {
+ public:
+  PartReader(const h5::File& in, std::string where) : in_(in), where_(std::move(where)) {}
+
+  // A list of doubles or integers of `shape`'s size (a dimension of -1: any, within `limit`).
+  std::vector<double> doubles(const std::string& path, std::size_t limit) const {
+    check_size(path, limit);
+    if (!in_.holds_doubles(path)) {
+      fail(path, "does not hold 64-bit floating-point numbers");
+    }
+    return in_.read_doubles(path);
+  }
+  std::vector<int> ints(const std::string& path, std::size_t limit, int below) const {
+    check_size(path, limit);
+    std::vector<int> values = in_.read_ints(path);
+    for (int v : values) {
+      if (v < 0 || v >= below) {
+        fail(path, fmt::format("holds {}, a node index is 0 to {}", v, below - 1));
+      }
+    }
+    return values;
+  }
+  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
+    throw InputError(fmt::format("{}: entry {} {} (a damaged formed part)", where_, path, what));
+  }
+  const std::string& where() const { return where_; }
+
+ private:
+  void check_size(const std::string& path, std::size_t limit) const {
+    if (!in_.exists(path)) {
+      throw InputError(
+          fmt::format("{}: no entry {} (not a formed part of this format)", where_, path));
+    }
+    if (in_.value_count(path) > limit) {
+      fail(path, fmt::format("holds {} values, more than the {} the part can have",
+                             in_.value_count(path), limit));
+    }
+  }
+  const h5::File& in_;
+  std::string where_;
+};
+
+template <class Conn>
+Conn read_connectivity(const PartReader& r, const std::string& path, int nodes_per_element,
+                       int n_nodes, const std::vector<hsize_t>& shape) {
+  if (shape.size() != 2 || shape[1] != static_cast<hsize_t>(nodes_per_element)) {
+    r.fail(path, fmt::format("is not a table of {} node indices per element", nodes_per_element));
+  }
+  const std::vector<int> v =
+      r.ints(path, static_cast<std::size_t>(shape[0]) * nodes_per_element, n_nodes);
+  Conn conn(nodes_per_element, static_cast<Eigen::Index>(shape[0]));
+  std::copy(v.begin(), v.end(), conn.data());
+  return conn;
+}
+
+// The keys the part's state should hold: the formed-part fields of a state with `tools` tools.
+std::vector<std::string> expected_keys(std::size_t tools, std::size_t contacts) {
+  SolutionState s;
+  s.tools.resize(tools);
+  s.contacts.resize(contacts);
+  std::vector<std::string> keys;
+  auto record = [&](const StateField&, const std::string& key, const auto&) {
+    keys.push_back(key);
+  };
+  visit_state_fields_with(field_role::formed_part, record, s);
+  return keys;
+}
+
+FormedPart read_checked_part(const std::filesystem::path& file) {
+  const std::string where = file.string();
+  try {
+    const h5::File in(file, h5::FileMode::read_only);
+    if (!in.has_attribute("/", "format") || in.read_attribute_string("/", "format") != kFormat) {
+      throw InputError(where + ": not a sheetform formed part (a results folder's formed_part.h5)");
+    }
+    const int version = in.read_attribute_int("/", "format_version");
+    if (version != kFormatVersion) {
+      throw InputError(fmt::format(
+          "{}: formed part format {}, this build reads format {} (written by a {} build)", where,
+          version, kFormatVersion, version > kFormatVersion ? "newer" : "older"));
+    }
+    const PartReader r(in, where);
+    FormedPart part;
+    part.file = where;
+    const std::vector<hsize_t> node_shape = in.exists("/mesh/reference_nodes")
+                                                ? in.shape("/mesh/reference_nodes")
+                                                : std::vector<hsize_t>{};
+    if (node_shape.size() != 2 || node_shape[1] != 3 || node_shape[0] == 0 ||
+        node_shape[0] > static_cast<hsize_t>(std::numeric_limits<int>::max() / 64)) {
+      r.fail("/mesh/reference_nodes", "is not a table of (x, y, z) per node");
+    }
+    const int n = static_cast<int>(node_shape[0]);
+    const std::vector<double> xyz = r.doubles("/mesh/reference_nodes", 3 * node_shape[0]);
+    part.reference_nodes = Eigen::Map<const Matrix3X>(xyz.data(), 3, n);
+    part.node_tags = r.doubles("/mesh/node_tags", node_shape[0]);
+    part.quads = read_connectivity<QuadConn>(r, "/mesh/quads", 4, n, in.shape("/mesh/quads"));
+    part.triangles =
+        read_connectivity<TriConn>(r, "/mesh/triangles", 3, n, in.shape("/mesh/triangles"));
+    const std::size_t n_elements =
+        static_cast<std::size_t>(part.quads.cols() + part.triangles.cols());
+    for (const std::string& name : in.list("/mesh/groups")) {
+      part.groups[name] = r.ints("/mesh/groups/" + name, node_shape[0], n);
+    }
+    part.n_points = in.read_attribute_int("/section", "n_points");
+    if (part.n_points < 1 || part.n_points > 9) {
+      r.fail("/section@n_points", fmt::format("is {}, not 1 to 9", part.n_points));
+    }
+    part.rule = in.read_attribute_string("/section", "rule");
+    part.law = in.read_attribute_string("/material", "law");
+    const std::size_t tools = in.exists("/state/tools") ? in.list("/state/tools").size() : 0;
+    for (std::size_t t = 0; t < tools; ++t) {
+      part.tools.push_back(in.read_attribute_string("/state/tools/" + std::to_string(t), "name"));
+    }
+    // No field holds more than 3 values per node, or (12 directors) per element, or 3 back
+    // stresses of 3 components per point.
+    const std::size_t limit = std::max<std::size_t>(
+        {3 * node_shape[0], 12 * n_elements, 9 * n_elements * part.n_points, 1});
+    const std::size_t contacts =
+        in.exists("/state/contacts") ? in.list("/state/contacts").size() : 0;
+    for (std::size_t c = 0; c < contacts; ++c) {
+      part.contact_tools.push_back(
+          in.read_attribute_string("/state/contacts/" + std::to_string(c), "tool"));
+    }
+    for (const std::string& key : expected_keys(tools, contacts)) {
+      part.fields[key] = r.doubles("/state/" + key, limit);
+    }
+    return part;
+  } catch (const h5::Error& e) {
+    throw InputError(where + ": cannot read the formed part: " + e.what());
+  }
+}
+
+}  // namespace
+
+FormedPart read_formed_part(const std::filesystem::path& file) {
+  const std::string where = file.string();
+  if (!std::filesystem::is_regular_file(file)) {
+    throw InputError(where + ": no such formed part (a run writes <results>/formed_part.h5)");
+  }
+  read_in_child_first(file, "formed part", [&] { read_checked_part(file); });
+  return read_checked_part(file);
+}
+
+namespace {
+
+// Refuses a part whose blank is not the model's: it would put one mesh's state on another.
+void check_same_blank(const FormedPart& part, const Model& model) {
+  const PartMesh& mesh = model.blank.mesh;
+  const ShellPart& shell = model.blank.part;
+  const std::string rule(
+      choice_name<ThroughThicknessRule>(kThroughThicknessRuleNames, shell.section.rule));
+  auto refuse = [&](const std::string& what) {
+    throw InputError(fmt::format("{}: a formed part of another blank: {}", part.file, what));
+  };
+  if (part.reference_nodes.cols() != mesh.nodes.cols() || part.quads.cols() != mesh.quads.cols() ||
+      part.triangles.cols() != mesh.triangles.cols()) {
+    refuse(fmt::format("{} nodes, {} quads, {} triangles; the case's blank has {}, {}, {}",
+                       part.reference_nodes.cols(), part.quads.cols(), part.triangles.cols(),
+                       mesh.nodes.cols(), mesh.quads.cols(), mesh.triangles.cols()));
+  }
+  for (Eigen::Index i = 0; i < mesh.nodes.cols(); ++i) {
+    if (part.reference_nodes.col(i) != mesh.nodes.col(i)) {
+      refuse(fmt::format("node {} was at ({}, {}, {}) mm, the case's is at ({}, {}, {}) mm", i,
+                         part.reference_nodes(0, i), part.reference_nodes(1, i),
+                         part.reference_nodes(2, i), mesh.nodes(0, i), mesh.nodes(1, i),
+                         mesh.nodes(2, i)));
+    }
+  }
+  if (part.quads != mesh.quads || part.triangles != mesh.triangles) {
+    refuse("the elements join other nodes");
+  }
+  if (part.n_points != shell.section.n_points || part.rule != rule) {
+    refuse(fmt::format("{} {} points through the thickness; the case's blank has {} {}",
+                       part.n_points, part.rule, shell.section.n_points, rule));
+  }
+  if (part.law != material_law_kind(shell.material)) {
+    refuse(fmt::format("material law {}; the case's blank has {}", part.law,
+                       material_law_kind(shell.material)));
+  }
+}
+
+// Copies the part's fields into the state, checking each one's size against the model's.
+class FieldCopy {
+ public:
+  FieldCopy(const FormedPart& part, std::vector<int> part_tool, std::vector<int> part_contact)
+      : part_(part), part_tool_(std::move(part_tool)), part_contact_(std::move(part_contact)) {}
+  template <class T>
+  void operator()(const StateField& field, const std::string& key, T& value) {
+    std::string part_key = key;
+    if (field.place == FieldPlace::tool || field.place == FieldPlace::contact) {
+      // "tools/T/..." or "contacts/C/...": the part's own index of the tool or pair
+      const std::size_t first = key.find('/') + 1;
+      const std::size_t slash = key.find('/', first);
+      const auto index = static_cast<std::size_t>(std::stoi(key.substr(first, slash - first)));
+      const int in_part =
+          field.place == FieldPlace::tool ? part_tool_[index] : part_contact_[index];
+      if (in_part < 0) {
+        return;  // of this case only: it starts as the case sets it
+      }
+      part_key = key.substr(0, first) + std::to_string(in_part) + key.substr(slash);
+    }
+    const std::vector<double>& data = part_.fields.at(part_key);
+    if constexpr (!std::is_arithmetic_v<T>) {
+      if (field.place == FieldPlace::contact &&
+          data.size() != static_cast<std::size_t>(value.size())) {
+        return;  // friction on in one case only: no stick forces to hand on
+      }
+    }
+    if constexpr (std::is_arithmetic_v<T>) {
+      check_size(part_key, data.size(), 1);
+      if constexpr (std::is_same_v<T, double>) {
+        value = data[0];
+      } else {
+        const double lowest = std::is_same_v<T, bool> ? 0.0 : -1.0;
+        const double beyond = std::is_same_v<T, bool> ? 2.0 : std::ldexp(1.0, 31);
+        if (!(data[0] >= lowest && data[0] < beyond && data[0] == std::trunc(data[0]))) {
+          throw InputError(
+              fmt::format("{}: entry /state/{} is {}, not a count (a damaged "
+                          "formed part)",
+                          part_.file, part_key, data[0]));
+        }
+        value = static_cast<T>(data[0]);
+      }
+    } else {
+      check_size(part_key, data.size(), static_cast<std::size_t>(value.size()));
+      std::copy(data.begin(), data.end(), value.data());
+    }
+  }
+
+ private:
+  void check_size(const std::string& key, std::size_t has, std::size_t needs) const {
+    if (has != needs) {
+      throw InputError(fmt::format(
+          "{}: entry /state/{} holds {} values, the case's blank needs {} (a formed part of "
+          "another material law or element)",
+          part_.file, key, has, needs));
+    }
+  }
+  const FormedPart& part_;
+  std::vector<int> part_tool_;
+  std::vector<int> part_contact_;
+};
+
+}  // namespace
+
+std::vector<std::string> apply_formed_part(const FormedPart& part, const Model& model,
+                                           SolutionState& state) {
+  check_same_blank(part, model);
+  std::vector<int> part_tool(model.tools.size(), -1);
+  std::vector<std::string> placed;
+  for (std::size_t t = 0; t < model.tools.size(); ++t) {
+    const auto found = std::find(part.tools.begin(), part.tools.end(), model.tools[t].name);
+    if (found != part.tools.end()) {
+      part_tool[t] = static_cast<int>(found - part.tools.begin());
+      placed.push_back(model.tools[t].name);
+    }
+  }
+  // A pair takes the stick forces of the part's pair with its tool, when that tool was placed.
+  std::vector<int> part_contact(model.contacts.size(), -1);
+  for (std::size_t c = 0; c < model.contacts.size(); ++c) {
+    const auto tool = static_cast<std::size_t>(model.contacts[c].tool);
+    const auto found =
+        std::find(part.contact_tools.begin(), part.contact_tools.end(), model.tools[tool].name);
+    if (part_tool[tool] >= 0 && found != part.contact_tools.end()) {
+      part_contact[c] = static_cast<int>(found - part.contact_tools.begin());
+    }
+  }
+  FieldCopy copy(part, std::move(part_tool), std::move(part_contact));
+  visit_state_fields_with(field_role::formed_part, copy, state);
+  return placed;
+}
+
+}  // namespace sf
