@@ -50,7 +50,9 @@
 #include "solver/case_digest.hpp"
 #include "solver/checkpoint.hpp"
 #include "solver/distributed_run.hpp"
+#include "solver/dynain_writer.hpp"
 #include "solver/explicit_driver.hpp"
+#include "solver/formed_part.hpp"
 #include "solver/frame_output.hpp"
 #include "solver/model_report.hpp"
 #include "solver/run_estimate.hpp"
@@ -426,6 +428,20 @@ int mesh(const Arguments& args, const sf::MpiSession& mpi) {
   return sf::exit_ok;
 }
 
+// Writes a formed part as a dynain file beside it (or at `output`).
+int dynain(const std::string& part_file, const std::string& output) {
+  const sf::FormedPart part = sf::read_formed_part(part_file);
+  fs::path file = output;
+  if (file.empty()) {
+    file = fs::path(part_file).replace_extension(".dynain");
+  }
+  sf::write_dynain(part, file);
+  sf::log_info("Wrote {} ({} nodes, {} shells, {} points through the thickness)\n", file.string(),
+               part.reference_nodes.cols(), part.quads.cols() + part.triangles.cols(),
+               part.n_points);
+  return sf::exit_ok;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -488,6 +504,15 @@ int main(int argc, char** argv) {
   CLI::App* mesh_cmd = app.add_subcommand("mesh", "write only the meshes (HDF5 + XDMF)");
   add_common(mesh_cmd);
   mesh_cmd->add_option("-o,--output", args.output_directory, "results folder");
+  CLI::App* dynain_cmd = app.add_subcommand(
+      "dynain", "write a formed part as an LS-DYNA keyword file (docs/process-chain.md)");
+  std::string dynain_part, dynain_output;
+  dynain_cmd->add_option("part", dynain_part, "the formed part (<results>/formed_part.h5)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  dynain_cmd->add_option("-o,--output", dynain_output,
+                         "the keyword file (default: the part's name with .dynain)");
+  dynain_cmd->add_flag("-q,--quiet", args.quiet, "print errors only");
   CLI::App* schema_cmd =
       app.add_subcommand("schema", "print the case file's keys, section by section");
   bool markdown = false;
@@ -528,7 +553,10 @@ int main(int argc, char** argv) {
   // Every rank ends with one barrier, on success and on error alike, so that none exits before
   // rank 0 has reported (the launcher kills the others when one exits with an error).
   try {
-    const int code = *run_cmd ? run(args, *mpi) : *check_cmd ? check(args) : mesh(args, *mpi);
+    const int code = *run_cmd      ? run(args, *mpi)
+                     : *check_cmd  ? check(args)
+                     : *dynain_cmd ? dynain(dynain_part, dynain_output)
+                                   : mesh(args, *mpi);
     mpi->barrier();
     return code;
   } catch (const sf::InputError& e) {

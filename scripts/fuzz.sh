@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # libFuzzer runs of the input readers (tests/fuzz, docs/tooling.md).
 #
-#   scripts/fuzz.sh short              CI: case_reader and mesh_reader 50 s each, geo_safety and
-#                                      checkpoint 20 s (the scanner is covered within seconds;
-#                                      the checkpoint's findings lie in libhdf5, met in seconds
-#                                      or not in minutes), msh41 15 s (a parser without gmsh: a
-#                                      million inputs); SF_FUZZ_SECONDS=N gives every target N s
+#   scripts/fuzz.sh short              CI: case_reader 45 s, mesh_reader 35 s, geo_safety,
+#                                      checkpoint and formed_part 20 s (the scanner is covered
+#                                      within seconds; the HDF5 readers' findings lie in libhdf5,
+#                                      met in seconds or not in minutes), msh41 15 s (a parser
+#                                      without gmsh: a million inputs); SF_FUZZ_SECONDS=N gives
+#                                      every target N s
 #   scripts/fuzz.sh long HOURS         HOURS (e.g. 0.5, 8) shared equally among the targets; a
 #                                      finding does not stop the run (libFuzzer's fork mode)
 #   scripts/fuzz.sh build              only configure and build (preset fuzz, build-fuzz/)
@@ -14,8 +15,9 @@
 # Targets (tests/fuzz/fuzz_<name>.cpp): case_reader (case.toml -> read_case, and the resolved case
 # must read back to the same text), mesh_reader (.msh through gmsh -> load_gmsh_model,
 # extract_part_mesh, extract_node_group), geo_safety (the .geo command scanner), checkpoint
-# (checkpoint.h5 -> read_checkpoint, into the state of cases/verify_bounce) and msh41 (the MSH 4.1
-# binary reader of what the sandboxed gmsh hands back). A finding is
+# (checkpoint.h5 -> read_checkpoint, into the state of cases/verify_bounce), formed_part
+# (formed_part.h5 -> read_formed_part) and msh41 (the MSH 4.1 binary reader of what the sandboxed
+# gmsh hands back). A finding is
 # a crash, a sanitizer report (ASan, UBSan), an exception other than sf::InputError, a broken
 # property, a timeout (SF_FUZZ_TIMEOUT s per input) or more memory than SF_FUZZ_RSS_MB.
 #
@@ -41,11 +43,12 @@ sf_cores() { env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc; }
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
 mode="${1:-short}"
-all_targets="case_reader mesh_reader geo_safety checkpoint msh41"
+all_targets="case_reader mesh_reader geo_safety checkpoint msh41 formed_part"
 targets="${SF_FUZZ_TARGETS:-$all_targets}"
 timeout_s="${SF_FUZZ_TIMEOUT:-20}"
 rss_mb="${SF_FUZZ_RSS_MB:-4096}"
-declare -A seconds_of=([case_reader]=50 [mesh_reader]=50 [geo_safety]=20 [checkpoint]=20 [msh41]=15)
+declare -A seconds_of=([case_reader]=45 [mesh_reader]=35 [geo_safety]=20 [checkpoint]=20 [msh41]=15
+                       [formed_part]=20)
 case "$mode" in
   short)
     if [ -n "${SF_FUZZ_SECONDS:-}" ]; then
@@ -83,14 +86,15 @@ echo "== Built in $(( $(date +%s) - start )) s"
 seeds="$build/seeds"
 rm -rf "$seeds"
 mkdir -p "$seeds/case_reader" "$seeds/mesh_reader" "$seeds/geo_safety" "$seeds/checkpoint" \
-  "$seeds/msh41"
+  "$seeds/msh41" "$seeds/formed_part"
 cp tests/fuzz/seeds/checkpoint/* "$seeds/checkpoint/"
+cp tests/fuzz/seeds/formed_part/* "$seeds/formed_part/"
 for f in cases/*/case.toml; do cp "$f" "$seeds/case_reader/$(basename "$(dirname "$f")").toml"; done
 for f in cases/*/*.geo tests/data/*.geo; do
   cp "$f" "$seeds/geo_safety/$(basename "$(dirname "$f")")_$(basename "$f")"
 done
 declare -A max_len=([case_reader]=16384 [mesh_reader]=32768 [geo_safety]=8192 [checkpoint]=65536
-                    [msh41]=32768)
+                    [msh41]=32768 [formed_part]=65536)
 for f in cases/*/*.msh; do
   [ "$(stat -c %s "$f")" -le "${max_len[mesh_reader]}" ] \
     && cp "$f" "$seeds/mesh_reader/$(basename "$(dirname "$f")")_$(basename "$f")"

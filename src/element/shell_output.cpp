@@ -35,6 +35,17 @@ Mat3 element_frame(const ShellPart& part, const Matrix3X& x, int e) {
 
 }  // namespace
 
+void compute_point_stresses(const ShellPart& part, const Matrix3X& x, const ShellState& state,
+                            int e, std::span<Stress6> out) {
+  const Mat3 frame = element_frame(part, x, e);
+  const auto ue = static_cast<std::size_t>(e);
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const std::size_t i = ue * static_cast<std::size_t>(state.n_points) + k;
+    out[k] = rotate_to_global(frame, state.sxx[i], state.syy[i], state.sxy[i], state.syz[ue],
+                              state.sxz[ue]);
+  }
+}
+
 void compute_element_stress_output(const ShellPart& part, const Matrix3X& x,
                                    const ShellState& state, ShellStressOutput& out) {
   compute_element_stress_output(part, x, state, out.mid, out.top, out.bottom, out.eps_p);

@@ -1,5 +1,7 @@
 #pragma once
 // Element stress output of a shell part, in global components.
+#include <span>
+
 #include "core/types.hpp"
 #include "element/shell_part.hpp"
 
@@ -36,6 +38,13 @@ void compute_element_stress_output(const ShellPart& part, const Matrix3X& x,
 void compute_element_back_stress_output(const ShellPart& part, const Matrix3X& x,
                                         const ShellState& state, StressColumns& top,
                                         StressColumns& bottom);
+
+/// The stress (MPa) at every integration point of element e, bottom to top, in global components
+/// (xx, yy, zz, xy, yz, xz): the point's in-plane stress with the element's transverse shear
+/// (Q / t, the same at every point), rotated with the element frame at the coordinates x (mm).
+/// `out` holds state.n_points entries. Throws InstabilityError on a degenerate element.
+void compute_point_stresses(const ShellPart& part, const Matrix3X& x, const ShellState& state,
+                            int e, std::span<Stress6> out);
 
 /// Von Mises equivalent stress (MPa) of (xx, yy, zz, xy, yz, xz).
 double von_mises(const Stress6& s);

@@ -87,6 +87,9 @@ void write_mesh(h5::File& out, const Model& model) {
   out.write("/mesh/quads", row_major(mesh.quads), {static_cast<hsize_t>(mesh.quads.cols()), 4});
   out.write("/mesh/triangles", row_major(mesh.triangles),
             {static_cast<hsize_t>(mesh.triangles.cols()), 3});
+  const std::vector<double> t0(static_cast<std::size_t>(element_count(model.blank.part)),
+                               model.initial.thickness);
+  out.write("/mesh/initial_thickness", t0, {t0.size()});
   out.create_group("/mesh/groups");
   for (const NodeGroup& g : model.blank.groups) {
     out.write("/mesh/groups/" + g.name, g.nodes, {g.nodes.size()});
@@ -243,6 +246,12 @@ FormedPart read_checked_part(const std::filesystem::path& file) {
         read_connectivity<TriConn>(r, "/mesh/triangles", 3, n, in.shape("/mesh/triangles"));
     const std::size_t n_elements =
         static_cast<std::size_t>(part.quads.cols() + part.triangles.cols());
+    part.initial_thickness = r.doubles("/mesh/initial_thickness", n_elements);
+    if (part.initial_thickness.size() != n_elements ||
+        !std::all_of(part.initial_thickness.begin(), part.initial_thickness.end(),
+                     [](double t) { return std::isfinite(t) && t > 0.0; })) {
+      r.fail("/mesh/initial_thickness", "is not a positive thickness per element");
+    }
     for (const std::string& name : in.list("/mesh/groups")) {
       part.groups[name] = r.ints("/mesh/groups/" + name, node_shape[0], n);
     }

@@ -8,10 +8,11 @@
 //
 // Layout: attributes /@format = "sheetform formed part", /@format_version, /@git_hash,
 // /@units; /mesh/reference_nodes (n, 3), /mesh/node_tags (n), /mesh/quads (q, 4) and
-// /mesh/triangles (t, 3) as 0-based node indices, /mesh/groups/NAME (node indices);
+// /mesh/triangles (t, 3) as 0-based node indices, /mesh/initial_thickness (per element, mm),
+// /mesh/groups/NAME (node indices);
 // /section@n_points, @rule; /material@law; /state/KEY (a field's values: per node (n, 3) or
 // (n), per element or point (elements, values per element), run numbers (1)), each with
-// attributes place and unit; /state/tools/T@name.
+// attributes place and unit; /state/tools/T@name, /state/contacts/C@tool (its tool's name).
 #include <filesystem>
 #include <map>
 #include <string>
@@ -29,9 +30,10 @@ inline std::filesystem::path formed_part_path(const std::filesystem::path& resul
 
 /// A formed part as read from its file.
 struct FormedPart {
-  std::string file;               ///< where it was read from (for messages)
-  Matrix3X reference_nodes;       ///< mm, the blank's nodes at time 0 of the first operation
-  std::vector<double> node_tags;  ///< the mesh file's node numbers
+  std::string file;          ///< where it was read from (for messages)
+  Matrix3X reference_nodes;  ///< mm, the blank's nodes at time 0 of the first operation
+  std::vector<double> initial_thickness;  ///< mm per element, at time 0 of the first operation
+  std::vector<double> node_tags;          ///< the mesh file's node numbers
   QuadConn quads;
   TriConn triangles;
   std::map<std::string, std::vector<int>> groups;  ///< node groups, by name

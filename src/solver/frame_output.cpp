@@ -6,47 +6,83 @@
 #include "core/build_info.hpp"
 #include "solver/draw_in.hpp"
 #include "solver/reactions.hpp"
+#include "solver/state_fields.hpp"
 
 namespace sf {
 
-std::vector<HistoryColumn> history_columns(const Model& model) {
+namespace {
+
+// A history column and how its value is read (the [[history]] groups' columns, computed
+// together, come after these).
+struct HistoryValue {
+  HistoryColumn column;
+  HistoryReader value;
+};
+
+// Every column but the groups', each named and read in one place.
+std::vector<HistoryValue> history_values(const Model& model) {
   const UnitSystem units = parse_unit_system(model.output.units);
   const std::string energy = units.moment();
-  std::vector<HistoryColumn> columns = {{"time", units.time},
-                                        {"time_step", units.time},
-                                        {"stable_time_step", units.time},
-                                        {"time_step_element", "-"},
-                                        {"kinetic_energy", energy},
-                                        {"internal_energy", energy},
-                                        {"hourglass_energy", energy},
-                                        {"contact_energy", energy},
-                                        {"damping_energy", energy},
-                                        {"mass_scaling_energy", energy},
-                                        {"plastic_work", energy},
-                                        {"friction_work", energy},
-                                        {"external_work", energy},
-                                        {"half_kick_energy", energy},
-                                        {"energy_balance_error", "-"},
-                                        {"added_mass", units.mass},
-                                        {"added_mass_percent", "%"},
-                                        {"scaled_elements", "-"}};
-  for (const Tool& t : model.tools) {
-    columns.push_back({t.name + "_travel", units.length});
-    columns.push_back({t.name + "_speed", units.velocity()});
-    columns.push_back({t.name + "_force", units.force});
-    columns.push_back({t.name + "_nodes_in_contact", "-"});
+  using M = const Model&;
+  using S = const SolutionState&;
+  using A = const SearchAuditRecorder&;
+  std::vector<HistoryValue> v = {
+      {{"time", units.time}, [](M, S s, A) { return s.time; }},
+      {{"time_step", units.time}, [](M, S s, A) { return s.dt; }},
+      {{"stable_time_step", units.time}, [](M, S s, A) { return s.stable_dt; }},
+      {{"time_step_element", "-"}, [](M, S s, A) { return static_cast<double>(s.dt_element); }},
+      {{"kinetic_energy", energy}, [](M, S s, A) { return s.energies.kinetic; }},
+      {{"internal_energy", energy}, [](M, S s, A) { return s.energies.internal; }},
+      {{"hourglass_energy", energy}, [](M, S s, A) { return s.energies.hourglass; }},
+      {{"contact_energy", energy}, [](M, S s, A) { return s.energies.contact; }},
+      {{"damping_energy", energy}, [](M, S s, A) { return s.energies.damping; }},
+      {{"mass_scaling_energy", energy}, [](M, S s, A) { return s.energies.mass_scaling; }},
+      {{"plastic_work", energy}, [](M, S s, A) { return s.energies.plastic_work; }},
+      {{"friction_work", energy}, [](M, S s, A) { return s.energies.friction_work; }},
+      {{"external_work", energy}, [](M, S s, A) { return s.energies.external_work; }},
+      {{"half_kick_energy", energy}, [](M, S s, A) { return s.energies.half_kick_change(); }},
+      {{"energy_balance_error", "-"}, [](M, S s, A) { return s.energies.balance_error(); }},
+      {{"added_mass", units.mass}, [](M, S s, A) { return s.scaling.added_mass; }},
+      {{"added_mass_percent", "%"},
+       [](M m, S s, A) { return 100.0 * s.scaling.added_mass / m.blank.physical_mass; }},
+      {{"scaled_elements", "-"},
+       [](M, S s, A) { return static_cast<double>(s.scaling.scaled_elements); }},
+  };
+  for (std::size_t t = 0; t < model.tools.size(); ++t) {
+    const std::string& name = model.tools[t].name;
+    v.push_back({{name + "_travel", units.length}, [t](M, S s, A) { return s.tools[t].travel; }});
+    v.push_back({{name + "_speed", units.velocity()}, [t](M, S s, A) { return s.tools[t].speed; }});
+    // Positive when the blank resists the tool's motion (the punch force; a holder's force).
+    v.push_back({{name + "_force", units.force},
+                 [t](M m, S s, A) { return -s.tools[t].force.dot(m.tools[t].direction()); }});
+    v.push_back({{name + "_nodes_in_contact", "-"},
+                 [t](M, S s, A) { return static_cast<double>(s.tools[t].nodes_in_contact); }});
   }
-  for (const DrawInConfig& d : model.output.draw_ins) {
-    columns.push_back({"draw_in_" + d.name, units.length});
+  for (std::size_t d = 0; d < model.output.draw_ins.size(); ++d) {
+    v.push_back({{"draw_in_" + model.output.draw_ins[d].name, units.length},
+                 [d](M m, S s, A) { return measure_draw_in(m, m.output.draw_ins[d], s.x); }});
   }
-  for (std::size_t c = 0; c < model.contacts.size(); ++c) {
-    if (model.contacts[c].audit) {
-      columns.push_back(
-          {model.tools[static_cast<std::size_t>(model.contacts[c].tool)].name + "_search_misses",
-           "-"});
+  std::size_t audit = 0;  // the audited pairs' records, in the order of the pairs
+  for (const ContactInterface& contact : model.contacts) {
+    if (contact.audit) {
+      v.push_back(
+          {{model.tools[static_cast<std::size_t>(contact.tool)].name + "_search_misses", "-"},
+           [audit](M, S, A a) { return static_cast<double>(a.records()[audit].last.misses); }});
+      ++audit;
     }
   }
-  for (HistoryColumn& column : history_group_columns(model, units)) {
+  return v;
+}
+
+}  // namespace
+
+std::vector<HistoryColumn> history_columns(const Model& model) {
+  std::vector<HistoryColumn> columns;
+  for (HistoryValue& v : history_values(model)) {
+    columns.push_back(std::move(v.column));
+  }
+  for (HistoryColumn& column :
+       history_group_columns(model, parse_unit_system(model.output.units))) {
     columns.push_back(std::move(column));
   }
   return columns;
@@ -101,6 +137,9 @@ OutputMark FrameOutput::mark() {
 }
 
 std::vector<PartTopology> FrameOutput::set_up(const Model& model) {
+  for (HistoryValue& v : history_values(model)) {
+    history_readers_.push_back(std::move(v.value));
+  }
   std::vector<PartTopology> parts;
   PartTopology blank;
   blank.name = "blank";
@@ -152,13 +191,22 @@ void FrameOutput::write_frame(const Model& model, const SolutionState& s) {
                                 s.shell, stress_mid_, stress_top_, stress_bottom_, plastic_strain_);
   std::vector<PartFrameView> frames;
   PartFrameView blank{"blank", s.x, {}};
-  blank.fields = {
-      {"displacement", FieldCenter::node, 3, displacement_.data()},
-      {"velocity", FieldCenter::node, 3, s.v.data()},
-      {"contact_force", FieldCenter::node, 3, s.f_contact.data()},
-      {"thickness", FieldCenter::cell, 1, s.shell.thickness.data()},
-      {"plastic_strain", FieldCenter::cell, 1, plastic_strain_.data()},
+  blank.fields = {{"displacement", FieldCenter::node, 3, displacement_.data()}};
+  // The state's fields written as they are (state_fields.hpp, StateField::result).
+  auto add_state_field = [&](const StateField& field, const std::string&, const auto& value) {
+    using T = std::remove_cvref_t<decltype(value)>;
+    if constexpr (!std::is_arithmetic_v<T>) {
+      if (!field.result.empty()) {
+        const bool per_node = field.place == FieldPlace::node;
+        const auto count = static_cast<std::size_t>(per_node ? s.x.cols() : s.shell.n_elements);
+        blank.fields.push_back(
+            {std::string(field.result), per_node ? FieldCenter::node : FieldCenter::cell,
+             static_cast<int>(static_cast<std::size_t>(value.size()) / count), value.data()});
+      }
+    }
   };
+  visit_state_fields(add_state_field, s);
+  blank.fields.push_back({"plastic_strain", FieldCenter::cell, 1, plastic_strain_.data()});
   if (has_springback_field_) {
     if (springback_reference_.cols() > 0) {
       springback_displacement_ = s.x - springback_reference_;
@@ -211,28 +259,8 @@ void FrameOutput::append_history(const Model& model, const SolutionState& s) {
   last_history_cycle_ = s.cycle;
   audits_.record(model, s);
   std::size_t k = 0;
-  const Energies& e = s.energies;
-  const MassScaling& scaling = s.scaling;
-  for (double value :
-       {s.time, s.dt, s.stable_dt, static_cast<double>(s.dt_element), e.kinetic, e.internal,
-        e.hourglass, e.contact, e.damping, e.mass_scaling, e.plastic_work, e.friction_work,
-        e.external_work, e.half_kick_change(), e.balance_error(), scaling.added_mass,
-        100.0 * scaling.added_mass / model.blank.physical_mass,
-        static_cast<double>(scaling.scaled_elements)}) {
-    row_[k++] = value;
-  }
-  for (std::size_t t = 0; t < model.tools.size(); ++t) {
-    row_[k++] = s.tools[t].travel;
-    row_[k++] = s.tools[t].speed;
-    // Positive when the blank resists the tool's motion (the punch force; a holder's force).
-    row_[k++] = -s.tools[t].force.dot(model.tools[t].direction());
-    row_[k++] = s.tools[t].nodes_in_contact;
-  }
-  for (const DrawInConfig& d : model.output.draw_ins) {
-    row_[k++] = measure_draw_in(model, d, s.x);
-  }
-  for (const SearchAuditRecord& r : audits_.records()) {
-    row_[k++] = r.last.misses;
+  for (const HistoryReader& read : history_readers_) {
+    row_[k++] = read(model, s, audits_);
   }
   if (needs_reactions_) {
     compute_reactions(model, s, reaction_force_, reaction_moment_);

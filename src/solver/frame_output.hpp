@@ -3,6 +3,7 @@
 // docs/results-format.md). Buffers are allocated once; frames are rare, so this is off the hot
 // path.
 #include <filesystem>
+#include <functional>
 #include <memory>
 
 #include "model/model.hpp"
@@ -24,6 +25,11 @@ struct OutputMark {
   std::vector<SearchAuditRecord> audits;
   long last_audit_cycle = -1;
 };
+
+/// Reads one history column's value from the state (frame_output.cpp: each column is named and
+/// read in one place).
+using HistoryReader =
+    std::function<double(const Model&, const SolutionState&, const SearchAuditRecorder&)>;
 
 class FrameOutput {
  public:
@@ -75,6 +81,7 @@ class FrameOutput {
   Eigen::Matrix<double, 6, Eigen::Dynamic> back_stress_top_, back_stress_bottom_;
   std::vector<Matrix3X> tool_coordinates_;
   std::vector<Matrix3X> tool_displacement_;
+  std::vector<HistoryReader> history_readers_;  ///< the columns before the groups', in order
   std::vector<double> row_;
   long last_history_cycle_ = -1;  ///< one row per cycle at most
 };

@@ -55,6 +55,9 @@ struct StateField {
   unsigned roles;
   FieldMapping mapping;
   std::string_view meaning;
+  /// The name of the frame field (results.h5, ParaView) that writes it as it is; empty: none
+  /// (the results' other fields are computed from the state: docs/results-format.md).
+  std::string_view result = {};
   [[nodiscard]] constexpr bool has(unsigned role) const { return (roles & role) != 0; }
 };
 
@@ -89,15 +92,16 @@ inline constexpr StateField peak_kinetic_ratio{
 
 // The blank's nodes.
 inline constexpr StateField x{"x", node, "mm", kShown, interpolate, "coordinates"};
-inline constexpr StateField v{"v", node, "mm/s", kShown, interpolate, "velocity at the half step"};
+inline constexpr StateField v{
+    "v", node, "mm/s", kShown, interpolate, "velocity at the half step", "velocity"};
 inline constexpr StateField omega{"omega", node,        "rad/s",
                                   kShown,  interpolate, "angular velocity at the half step"};
 inline constexpr StateField rotation{
     "rotation", node, "rad", kShown, interpolate, "rotation increments summed since time 0"};
 inline constexpr StateField f_int{"f_int", node, "N", kShown, recompute, "internal forces"};
 inline constexpr StateField m_int{"m_int", node, "N mm", kShown, recompute, "internal moments"};
-inline constexpr StateField f_contact{"f_contact", node,      "N",
-                                      kShown,      recompute, "contact forces on the blank"};
+inline constexpr StateField f_contact{
+    "f_contact", node, "N", kShown, recompute, "contact forces on the blank", "contact_force"};
 inline constexpr StateField f_ext{"f_ext", node, "N", kShown, recompute, "applied forces"};
 inline constexpr StateField m_ext{"m_ext", node, "N mm", kShown, recompute, "applied moments"};
 inline constexpr StateField f_ext_previous{
@@ -146,8 +150,8 @@ inline constexpr StateField sxz{"shell/sxz", element, "MPa",
                                 kShown,      inherit, "transverse shear stress xz"};
 inline constexpr StateField syz{"shell/syz", element, "MPa",
                                 kShown,      inherit, "transverse shear stress yz"};
-inline constexpr StateField thickness{"shell/thickness",  element, "mm", kShown, inherit,
-                                      "current thickness"};
+inline constexpr StateField thickness{"shell/thickness",   element,    "mm", kShown, inherit,
+                                      "current thickness", "thickness"};
 inline constexpr StateField hourglass{"shell/hourglass",
                                       element,
                                       "N, N mm",

@@ -20,26 +20,7 @@
 #include "results/hdf5_file.hpp"
 #include "solver/checkpoint.hpp"
 #include "solver/checkpoint_fields.hpp"
-
-// A SolutionState holds a serial domain, whose (inline) methods name these element functions. This
-// target never runs a step, so it does not link the element library (the fuzz build would compile
-// it, with the sanitizers, for nothing): these stand-ins, weak (the real ones win where linked),
-// satisfy the linker and stop the process if ever called.
-namespace sf {
-[[gnu::weak]] StableStep smallest_time_step(std::span<const double> /*element_dt*/) {
-  std::abort();
-}
-[[gnu::weak]] void gather_corner_forces(const NodeCorners& /*nodes*/,
-                                        std::span<const double> /*corners*/, Matrix3X& /*f*/,
-                                        Matrix3X& /*m*/) {
-  std::abort();
-}
-[[gnu::weak]] void gather_half_thickness(const NodeCorners& /*nodes*/,
-                                         std::span<const double> /*thickness*/,
-                                         const VectorX& /*weight*/, VectorX& /*half_thickness*/) {
-  std::abort();
-}
-}  // namespace sf
+#include "state_without_elements.hpp"
 
 namespace {
 

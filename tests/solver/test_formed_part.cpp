@@ -152,5 +152,19 @@ TEST(FormedPart, RefusesAnotherVersionAnotherBlankAndOtherFiles) {
             std::string::npos);
 }
 
+// A part written by an earlier build (the fuzz seed, format 1) is read by this one and goes on
+// the case it came from.
+TEST(FormedPart, ReadsAPartOfAnEarlierBuild) {
+  const FormedPart part = read_formed_part(fs::path(SF_SOURCE_DIR) /
+                                           "tests/fuzz/seeds/formed_part/verify_bounce_t1e-5.h5");
+  const Model model =
+      build_model(read_case(fs::path(SF_SOURCE_DIR) / "cases/verify_bounce/case.toml"));
+  SolutionState s = make_initial_state(model);
+  EXPECT_EQ(apply_formed_part(part, model, s), std::vector<std::string>{"floor"});
+  EXPECT_GE(s.time, 1e-5);
+  EXPECT_GT(s.cycle, 0);
+  EXPECT_NE(s.x, model.blank.mesh.nodes);  // the shell moved
+}
+
 }  // namespace
 }  // namespace sf
