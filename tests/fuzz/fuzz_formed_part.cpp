@@ -18,16 +18,16 @@
 
 namespace {
 
-const std::filesystem::path seed_file = std::filesystem::path(SF_SOURCE_DIR) /
-                                        "tests/fuzz/seeds/formed_part/verify_bounce_t1e-5.h5";
+const std::filesystem::path seed_file =
+    std::filesystem::path(SF_SOURCE_DIR) / "tests/fuzz/seeds/formed_part/verify_bounce_t1e-5.h5";
 
 // Every node index the part holds is one of its nodes (the reader's checks).
 void check_consistent(const sf::FormedPart& part) {
   const auto n = part.reference_nodes.cols();
-  const bool in_range = (part.quads.size() == 0 || (part.quads.minCoeff() >= 0 &&
-                                                    part.quads.maxCoeff() < n)) &&
-                        (part.triangles.size() == 0 ||
-                         (part.triangles.minCoeff() >= 0 && part.triangles.maxCoeff() < n));
+  const bool in_range =
+      (part.quads.size() == 0 || (part.quads.minCoeff() >= 0 && part.quads.maxCoeff() < n)) &&
+      (part.triangles.size() == 0 ||
+       (part.triangles.minCoeff() >= 0 && part.triangles.maxCoeff() < n));
   if (!in_range) {
     std::fprintf(stderr, "fuzz: read_formed_part returned a node index out of range\n");
     std::abort();

@@ -25,4 +25,3 @@ namespace sf {
   std::abort();
 }
 }  // namespace sf
-
