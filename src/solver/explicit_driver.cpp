@@ -301,16 +301,14 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
   // The end of the forming: a checkpoint that a restart with a longer stroke or end time goes on
   // from (before the last history row, which such a restart does not repeat).
   checkpoints.write(model, s, output.get(), loop);
-  gather_state_to_root(s);
+  // One gather for the last history row, the summary and the formed part: the formed part's
+  // fields include every field output reads (state_fields.hpp, kShown).
+  gather_formed_part_to_root(s);
   if (output) {
     output->append_history(model, s);
     output->flush();
-  }
-  if (options.write_results) {  // the blank as it stands, for the next operation
-    gather_formed_part_to_root(s);
-    if (root) {
-      write_formed_part(formed_part_path(options.output_directory), model, s);
-    }
+    // the blank as it stands, for the next operation
+    write_formed_part(formed_part_path(options.output_directory), model, s);
   }
   progress.report(model, s, true);
   const double wall_seconds =

@@ -40,9 +40,10 @@ const char* place_name(FieldPlace place) {
   return "?";
 }
 
+// A connectivity (nodes per element, n) as the (n, nodes) table its memory already is.
 template <class Conn>
-std::vector<int> row_major(const Conn& conn) {  // (nodes per element, n) -> (n, nodes)
-  return {conn.data(), conn.data() + conn.size()};
+std::span<const int> row_major(const Conn& conn) {
+  return {conn.data(), static_cast<std::size_t>(conn.size())};
 }
 
 // Writes the fields with the formed-part role under /state, shaped per node or per element.
