@@ -153,7 +153,8 @@ constexpr const char* kRunFiles[] = {"results.h5",        "summary.json",       
 // of a run was killed at once inside a write (docs/results-format.md): the next run in the folder
 // removes them.
 bool is_leftover_temporary(const fs::path& file) {
-  return file.filename() == "checkpoint.h5.tmp" || file.filename() == "formed_part.h5.tmp" ||
+  return file.filename() == "checkpoint.h5.tmp" ||
+         (sf::is_formed_part_file(file) && file.extension() == ".tmp") ||
          (file.extension() == ".tmp" && file.stem().extension() == ".xdmf");
 }
 
@@ -189,7 +190,8 @@ void clear_earlier_run(const Arguments& args, const fs::path& out) {
         out.string(), earlier.front().filename().string(), sf::checkpoint_path(out).string()));
   }
   for (const fs::directory_entry& entry : fs::directory_iterator(out)) {
-    if (entry.path().extension() == ".xdmf" || is_leftover_temporary(entry.path())) {
+    if (entry.path().extension() == ".xdmf" || is_leftover_temporary(entry.path()) ||
+        (sf::is_formed_part_file(entry.path()) && entry.path() != out / "formed_part.h5")) {
       earlier.push_back(entry.path());
     }
   }

@@ -15,6 +15,7 @@
 #include "casefile/case_config_history.hpp"
 #include "casefile/case_config_implicit.hpp"
 #include "casefile/case_config_node_groups.hpp"
+#include "casefile/case_config_operations.hpp"
 #include "casefile/case_fields.hpp"
 #include "casefile/case_overrides.hpp"
 #include "casefile/toml_reader.hpp"
@@ -101,6 +102,12 @@ void read_tools(const TomlSection& top, std::vector<ToolConfig>& tools) {
     if (const auto motion = s.sub_table("motion", Presence::optional)) {
       read_table(*motion, motion_fields(), tool.motion);
     }
+    if (tool.position == ToolConfig::Position::touch &&
+        tool.motion.type == MotionConfig::Type::fixed) {
+      s.fail_value("position",
+                   "\"as_meshed\" for a fixed tool (\"touch\" moves a tool along its motion's "
+                   "direction: give it a [tools.motion])");
+    }
     tools.push_back(std::move(tool));
   }
 }
@@ -175,7 +182,7 @@ void read_control(const TomlSection& top, const CaseConfig& config, ControlConfi
                           "and stroke = {}",
                           control.end_time, control.stroke));
   }
-  if (!(control.end_time > 0.0) && !(control.stroke > 0.0)) {
+  if (!(control.end_time > 0.0) && !(control.stroke > 0.0) && !top.has("operations")) {
     s.fail_at(s.table(), "control.end_time/control.stroke",
               "expected exactly one of end_time (s) and stroke (mm) > 0, got neither");
   }
@@ -288,10 +295,11 @@ CaseConfig read_case(const fs::path& case_file, const CaseOptions& options) {
   const fs::path folder = config.file.parent_path();
 
   const TomlSection top(root, "", file);
-  read_table(top, top_level_fields(), config,
-             {"blank", "materials", "tools", "contact", "boundary", "draw_in", "load",
-              "initial_velocity", "prescribed_velocity", "prescribed_motion", "control", "output",
-              "analysis", "implicit", "springback", "history", "node_group", "limits"});
+  read_table(
+      top, top_level_fields(), config,
+      {"blank", "materials", "tools", "contact", "boundary", "draw_in", "load", "initial_velocity",
+       "prescribed_velocity", "prescribed_motion", "control", "output", "analysis", "implicit",
+       "springback", "history", "node_group", "limits", "operations"});
   read_materials(top, config.materials);
   read_blank(top, config, config.blank);
   read_tools(top, config.tools);
@@ -307,6 +315,7 @@ CaseConfig read_case(const fs::path& case_file, const CaseOptions& options) {
   check_constraints_for_analysis(top, config);
   read_history_groups(top, config);
   read_node_groups(top, config);
+  read_operations(top, config);
   return config;
 }
 

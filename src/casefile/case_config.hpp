@@ -179,7 +179,10 @@ struct BlankConfig {
 /// moves along that axis only, under the force and the blank's reaction).
 struct MotionConfig {
   enum class Type { velocity, displacement, fixed, force };
+  /// What a force curve's abscissa is: the time (s) or the tool's travel (mm: a gas spring)
+  enum class ForceOf { time, travel };
   Type type = Type::fixed;
+  ForceOf force_of = ForceOf::time;
   std::array<double, 3> direction{0.0, 0.0, -1.0};  ///< unit vector (normalised on read)
   /// velocity in mm/s, displacement in mm, or (force) the force in N pushing along `direction`,
   /// against time in s
@@ -192,9 +195,43 @@ struct MotionConfig {
 };
 
 struct ToolConfig {
+  /// Where the tool starts: where its mesh puts it, or moved along its motion's direction until
+  /// it touches the blank (auto-positioning)
+  enum class Position { as_meshed, touch };
   std::string name;  ///< unique; referred to by [[contact]] and [control]
   MeshSourceConfig mesh;
+  Position position = Position::as_meshed;
   MotionConfig motion;
+};
+
+/// A tool's motion redefined by an operation ([[operations.motion]]): its time counts from the
+/// operation's start and its travel adds to where the tool stands then.
+struct OperationMotionConfig {
+  std::string tool;  ///< name of a [[tools]] entry with a prescribed motion or none
+  MotionConfig motion;
+};
+
+/// One operation of the press line ([[operations]], docs/process-chain.md), run in the case's
+/// order on one time loop; time runs on across them.
+struct OperationConfig {
+  enum class Kind { gravity, closing, forming, springback };
+  /// What ends it: the stroke tool's travel, a duration, the push on a tool, the clearance left
+  /// between two tools, or the blank at rest (kinetic energy fallen below `rest` x its peak).
+  enum class End { stroke, time, force, gap, rest, none };
+  std::string name;  ///< unique; names its results group and summary entry
+  Kind kind = Kind::forming;
+  std::vector<std::string> tools;  ///< the tools in play (contact and motion); empty = all
+  bool all_tools = true;           ///< `tools` absent: every tool is in play
+  End end = End::stroke;
+  std::string tool;     ///< the tool of a stroke, force or gap end
+  double stroke = 0.0;  ///< mm, the tool's travel since the case's start
+  double time = 0.0;    ///< s: the duration (end "time"), else the longest it may take
+  double force = 0.0;   ///< N, the tool's push against its motion
+  double gap = 0.0;     ///< mm, the clearance left between `tool` and `gap_to` along its motion
+  std::string gap_to;   ///< the tool the gap is measured to
+  double rest = 1e-3;   ///< -, kinetic energy / its peak in the operation
+  std::optional<double> damping;  ///< 1/s, mass-proportional; absent = control.damping
+  std::vector<OperationMotionConfig> motions;
 };
 
 struct ContactConfig {
@@ -465,6 +502,7 @@ struct CaseConfig {
   AnalysisConfig analysis;                                      ///< [analysis]
   ImplicitConfig implicit;                                      ///< [implicit]
   std::optional<SpringbackConfig> springback;                   ///< [springback]
+  std::vector<OperationConfig> operations;                      ///< [[operations]]
 
   /// The material named by blank.material (the reader guarantees it exists).
   const MaterialConfig& blank_material() const;

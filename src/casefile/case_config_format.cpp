@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "casefile/case_config.hpp"
+#include "casefile/case_config_operations.hpp"
 #include "casefile/case_fields.hpp"
 #include "casefile/toml_reader.hpp"
 #include "casefile/toml_writer.hpp"
@@ -128,6 +129,7 @@ std::string format_resolved_case(const CaseConfig& config) {
   w.header("control");
   write_fields(control_fields(), w, config.control);
   write_implicit_sections(w, config);
+  write_operations(w, config);
   w.header("output");
   write_fields(output_fields(), w, config.output);
   w.header("limits");

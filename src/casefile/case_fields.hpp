@@ -43,6 +43,10 @@ const FieldTable<ImplicitConfig>& implicit_fields();
 const FieldTable<SpringbackConfig>& springback_fields();
 const FieldTable<UChannelMeasureConfig>& u_channel_fields();
 
+// The press line's operations (case_config_operations.cpp).
+const FieldTable<OperationConfig>& operation_fields();
+const FieldTable<OperationMotionConfig>& operation_motion_fields();
+
 // Materials (case_fields_material.cpp).
 const FieldTable<MaterialConfig>& material_fields();
 const FieldTable<HardeningConfig>& hardening_fields();

@@ -248,6 +248,14 @@ FieldTable<ToolConfig> make_tool_fields() {
     }
     t.push_back(std::move(f));
   }
+  static constexpr std::array<Choice<T::Position>, 2> kPositions{{
+      {T::Position::as_meshed, "as_meshed", "where its mesh puts it"},
+      {T::Position::touch, "touch",
+       "moved along its motion's `direction` until it touches the blank (its surface half the "
+       "blank's thickness from the blank's mid-surface along that direction); a tool with a "
+       "motion only; the distance is in the banner"},
+  }};
+  t.push_back(choice_field<T, T::Position>("position", &T::position, kPositions, ""));
   return t;
 }
 
@@ -274,9 +282,19 @@ FieldTable<MotionConfig> make_motion_fields() {
                                  "one the tool moves along")
                   .when(moves, "not for `\"fixed\"`", "a fixed tool does not move"));
   t.push_back(curve_field<M>("curve", &M::curve, "mm/s (velocity), mm (displacement) or N (force)",
-                             "piecewise linear, held constant after the last point")
+                             "piecewise linear, held constant after the last point; against the "
+                             "time in s, or (`force_of = \"travel\"`) the travel in mm")
                   .required()
                   .when(moves, "not for `\"fixed\"`", "a fixed tool does not move"));
+  static constexpr std::array<Choice<M::ForceOf>, 2> kForceOf{{
+      {M::ForceOf::time, "time", "the curve is the force against the time (s)"},
+      {M::ForceOf::travel, "travel",
+       "the force against the tool's travel along `direction` (mm): a gas spring, a nitrogen "
+       "cylinder, a cushion; its steepest slope counts in the mass check below"},
+  }};
+  t.push_back(choice_field<M, M::ForceOf>("force_of", &M::force_of, kForceOf, "")
+                  .when(force, "`\"force\"` only",
+                        "force_of is for type = \"force\" (what its force curve is against)"));
   t.push_back(custom_field<M>(
                   {"mass", "float", "the blank's mass at the start", "tonne",
                    "> 0, the tool's moving mass; checked when the model is built (below)"},

@@ -31,6 +31,8 @@ std::vector<SchemaSection> case_schema() {
       {"implicit", field_docs(implicit_fields())},
       {"springback", field_docs(springback_fields())},
       {"springback.u_channel", field_docs(u_channel_fields())},
+      {"operations", field_docs(operation_fields())},
+      {"operations.motion", field_docs(operation_motion_fields())},
   };
 }
 

@@ -137,6 +137,10 @@ NodeOutcome node_contact(const ContactPair& pair, ContactState& state,
 
 }  // namespace
 
+void size_contact_state(const ContactPair& pair, ContactState& state, int n) {
+  size_state(pair, state, n, pair.friction.active());
+}
+
 namespace {
 
 // Blank nodes per unit of work the threads take (dynamically: contact nodes cluster).

@@ -40,6 +40,11 @@ struct ContactPair {
 /// node at least this far away may then move (factor - 1) cutoffs before it is looked at again.
 inline constexpr double distance_bound_reach_factor = 4.0;
 
+/// Sizes a pair's state for n blank nodes as its first call does (its search cache, distance
+/// bounds and stick forces), for a pair out of play whose state must still be whole (a
+/// checkpoint keeps it).
+void size_contact_state(const ContactPair& pair, ContactState& state, int n);
+
 /// What compute_penalty_contact needs of the blank and the tool for one call.
 struct ContactKinematics {
   const Matrix3X& x;                 ///< blank node positions, mm

@@ -17,8 +17,10 @@
 #include "meshing/gmsh_reader.hpp"
 #include "model/constraint_assembly.hpp"
 #include "model/node_selection.hpp"
+#include "model/operation_plan.hpp"
 #include "model/physical_ranges.hpp"
 #include "model/time_step_check.hpp"
+#include "model/tool_clearance.hpp"
 
 namespace sf {
 namespace {
@@ -272,6 +274,38 @@ void read_blank(const CaseConfig& config, Model& model) {
   }
 }
 
+// position = "touch": moves the tool's mesh along its motion's direction d until it touches the
+// blank: its surface half the blank's thickness from the blank's mid-surface (quads split in two
+// triangles) along d. Returns the distance moved (mm; negative: moved back along -d).
+double move_to_touch(const CaseConfig& config, std::size_t index, const Blank& blank,
+                     PartMesh& mesh) {
+  const ToolConfig& tc = config.tools[index];
+  const Vec3 d =
+      Vec3(tc.motion.direction[0], tc.motion.direction[1], tc.motion.direction[2]).normalized();
+  TriConn blank_triangles(3, 2 * blank.mesh.quads.cols() + blank.mesh.triangles.cols());
+  Eigen::Index k = 0;
+  for (Eigen::Index q = 0; q < blank.mesh.quads.cols(); ++q) {
+    const auto& n = blank.mesh.quads.col(q);
+    blank_triangles.col(k++) << n(0), n(1), n(2);
+    blank_triangles.col(k++) << n(0), n(2), n(3);
+  }
+  for (Eigen::Index e = 0; e < blank.mesh.triangles.cols(); ++e) {
+    blank_triangles.col(k++) = blank.mesh.triangles.col(e);
+  }
+  const TriangleSurface moving(tc.name, mesh.nodes, mesh.triangles);
+  const TriangleSurface sheet("blank", blank.mesh.nodes, blank_triangles);
+  const std::optional<double> clearance = clearance_along(moving, sheet, d);
+  if (!clearance) {
+    throw InputError(fmt::format(
+        "{}: tools[{}].position = \"touch\": tool '{}' moving along ({:g}, {:g}, {:g}) never "
+        "meets the blank; check the motion's direction, or give position = \"as_meshed\"",
+        config.file.string(), index, tc.name, d.x(), d.y(), d.z()));
+  }
+  const double shift = *clearance - 0.5 * config.blank.thickness;
+  mesh.nodes.colwise() += shift * d;
+  return shift;
+}
+
 void read_tools(const CaseConfig& config, Model& model) {
   for (std::size_t t = 0; t < config.tools.size(); ++t) {
     const ToolConfig& tc = config.tools[t];
@@ -285,6 +319,9 @@ void read_tools(const CaseConfig& config, Model& model) {
           fmt::format("{}: tool '{}' group '{}' holds quadrilaterals; tools must be "
                       "meshed as triangles",
                       tc.mesh.file.string(), tc.name, tc.mesh.group));
+    }
+    if (tc.position == ToolConfig::Position::touch) {
+      tool.touch_shift = move_to_touch(config, t, model.blank, tool.mesh);
     }
     tool.surface = TriangleSurface(tc.name, tool.mesh.nodes, tool.mesh.triangles);
     tool.orientation = orient_surface(tool.surface, model.blank.mesh.nodes);
@@ -484,11 +521,18 @@ void set_up_force_controlled_tools(const CaseConfig& config, Model& model) {
         k_sum += c.pair.stiffness.sum();
       }
     }
+    const auto& d = tc.motion.direction;
+    const bool of_travel = tc.motion.force_of == MotionConfig::ForceOf::travel;
+    ForceControlledTool tool(Vec3(d[0], d[1], d[2]),
+                             LoadCurve(tc.motion.curve.times, tc.motion.curve.values), mass,
+                             tc.motion.damping, of_travel);
+    k_sum += tool.stiffness();  // a force of the travel is a spring on the tool too
     const double minimum_mass = k_sum * (dt / w_c) * (dt / w_c);
     if (mass < minimum_mass * (1.0 - 1e-12)) {
       throw InputError(fmt::format(
           "{}: tools[{}].motion.mass: tool '{}': a mass of {:.4e} tonne is too small for a stable "
-          "run: on the blank's contact springs (sum k = {:.4e} N/mm) the tool's frequency "
+          "run: on the blank's contact springs (and its force's slope against its travel; sum k "
+          "= {:.4e} N/mm) the tool's frequency "
           "sqrt(sum k / mass) times the step {:.4e} s is {:.3f}, above {:.3f}, the bound on every "
           "contact spring at time_step_safety = {}; give mass >= {:.4e} tonne, or leave it out "
           "(the default, the blank's mass, {:.4e} tonne, is always enough)",
@@ -503,10 +547,7 @@ void set_up_force_controlled_tools(const CaseConfig& config, Model& model) {
           config.file.string(), t, tc.name, tc.motion.damping, dt, tc.motion.damping * dt,
           1.0 / dt));
     }
-    const auto& d = tc.motion.direction;
-    model.tools[t].force_control = ForceControlledTool(
-        Vec3(d[0], d[1], d[2]), LoadCurve(tc.motion.curve.times, tc.motion.curve.values), mass,
-        tc.motion.damping);
+    model.tools[t].force_control = std::move(tool);
   }
 }
 
@@ -648,6 +689,7 @@ Model build_model(const CaseConfig& config) {
   set_up_contacts(config, model, state);
   set_up_force_controlled_tools(config, model);
   set_end_time(config, model);
+  build_operations(config, model);
   assemble_constraints(config, model.blank, model.time.end_time, model);
   set_up_loads(config, model);
   // The contact pairs point at the tools' surfaces: the tools vector must not move again.

@@ -15,20 +15,29 @@ namespace sf {
 class ForceControlledTool {
  public:
   ForceControlledTool() = default;
-  /// direction: the axis (normalised here); force: N against s; mass: tonne (> 0); damping: 1/s.
-  ForceControlledTool(const Vec3& direction, LoadCurve force, double mass, double damping);
+  /// direction: the axis (normalised here); force: N against the time (s) or, of_travel, against
+  /// the tool's travel (mm: a gas spring, a cushion); mass: tonne (> 0); damping: 1/s.
+  ForceControlledTool(const Vec3& direction, LoadCurve force, double mass, double damping,
+                      bool of_travel = false);
 
   const Vec3& direction() const { return direction_; }
   double mass() const { return mass_; }        ///< tonne
   double damping() const { return damping_; }  ///< 1/s
-  /// The applied force along the direction at time t, N.
-  double applied_force(double t) const { return force_.value(t); }
+  /// Whether the force is a function of the travel (else of the time).
+  bool of_travel() const { return of_travel_; }
+  /// The applied force along the direction at time t (s) and travel s (mm), N.
+  double applied_force(double t, double travel = 0.0) const {
+    return force_.value(of_travel_ ? travel : t);
+  }
+  /// N/mm, the steepest slope of a force of the travel (0 for a force of the time): the spring
+  /// it adds to the tool's stability bound.
+  double stiffness() const;
 
   /// The rate of the velocity (mm/s^2) at time t: u = (F(t) + R . d) / M - c v, with R the
   /// blank's force on the tool (N) and v the velocity the damping acts on (mm/s; the half-step
   /// velocity v(n-1/2), as for the blank's nodes).
-  double rate(double t, const Vec3& reaction, double velocity) const {
-    return (applied_force(t) + reaction.dot(direction_)) / mass_ - damping_ * velocity;
+  double rate(double t, const Vec3& reaction, double velocity, double travel = 0.0) const {
+    return (applied_force(t, travel) + reaction.dot(direction_)) / mass_ - damping_ * velocity;
   }
 
   /// One central-difference step from time t(n) (s) with the reaction R(n) (N):
@@ -40,9 +49,9 @@ class ForceControlledTool {
 
   /// The whole-step velocity v(n+1) = v(n+1/2) + dt/2 u(n+1) (mm/s) at the end of a step of size
   /// dt (s), from the force and reaction at t(n+1): the velocity the kinetic energy is taken at.
-  double whole_step_velocity(double t, const Vec3& reaction, double half_step_velocity,
-                             double dt) const {
-    return half_step_velocity + 0.5 * dt * rate(t, reaction, half_step_velocity);
+  double whole_step_velocity(double t, const Vec3& reaction, double half_step_velocity, double dt,
+                             double travel = 0.0) const {
+    return half_step_velocity + 0.5 * dt * rate(t, reaction, half_step_velocity, travel);
   }
 
  private:
@@ -50,6 +59,7 @@ class ForceControlledTool {
   LoadCurve force_;
   double mass_ = 0.0;
   double damping_ = 0.0;
+  bool of_travel_ = false;
 };
 
 }  // namespace sf

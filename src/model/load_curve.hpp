@@ -16,6 +16,9 @@ class LoadCurve {
   /// The exact integral of value() from 0 to t (value-unit x s).
   double integral(double t) const;
   bool empty() const { return times_.empty(); }
+  /// The points' abscissae and values.
+  const std::vector<double>& times() const { return times_; }
+  const std::vector<double>& values() const { return values_; }
 
  private:
   std::vector<double> times_;

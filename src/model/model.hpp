@@ -16,6 +16,7 @@
 #include "model/boundary_conditions.hpp"
 #include "model/force_controlled_tool.hpp"
 #include "model/mass_scaling.hpp"
+#include "model/operation.hpp"
 #include "model/rigid_tool_motion.hpp"
 
 namespace sf {
@@ -96,6 +97,9 @@ struct Tool {
   SurfaceOrientation orientation;  ///< what orient_surface did to the mesh as read
   RigidToolMotion motion;
   std::optional<ForceControlledTool> force_control;
+  /// mm, how far the tool was moved along its direction to touch the blank (position =
+  /// "touch"; its mesh and surface are where it was moved to); 0 otherwise
+  double touch_shift = 0.0;
 
   /// The axis the tool moves along (the prescribed motion's or the force's; the case's default,
   /// -z, for a fixed tool).
@@ -178,6 +182,9 @@ struct Model {
   OutputPlan output;
   AnalysisPlan analysis;
   std::optional<SpringbackConfig> springback;  ///< the springback plan, when the case asks
+  /// The press line's operations in order ([[operations]]); empty: the case runs as one forming
+  /// operation to time.end_time (and its [springback], if any)
+  std::vector<Operation> operations;
 };
 
 }  // namespace sf

@@ -628,6 +628,58 @@ void ResultsWriter::write_run_info(const std::string& key, const std::string& te
   });
 }
 
+void ResultsWriter::write_operation(int index, const OperationRecord& r) {
+  writing(directory_, [&] {
+    run_detached([&] {
+      h5::File file(results_file(), h5::FileMode::read_write);
+      if (!file.exists("/operations")) {
+        file.create_group("/operations");
+      }
+      const std::string path = "/operations/" + std::to_string(index);
+      if (file.exists(path)) {
+        file.remove(path);
+      }
+      file.create_group(path);
+      file.write_attribute(path, "name", r.name);
+      file.write_attribute(path, "kind", r.kind);
+      file.write_attribute(path, "ended_by", r.ended_by);
+      file.write_attribute(path, "start_time", r.start_time);
+      file.write_attribute(path, "end_time", r.end_time);
+      file.write_attribute(path, "start_cycle", static_cast<double>(r.start_cycle));
+      file.write_attribute(path, "end_cycle", static_cast<double>(r.end_cycle));
+      file.write_attribute(path, "first_frame", r.first_frame);
+      file.write_attribute(path, "last_frame", r.last_frame);
+      file.write_attribute(path, "wall_seconds", r.wall_seconds);
+      file.close();
+    });
+  });
+}
+
+std::vector<OperationRecord> ResultsWriter::read_operations(int count) const {
+  std::vector<OperationRecord> records;
+  const h5::File file(results_file(), h5::FileMode::read_only);
+  for (int index = 0; index < count; ++index) {
+    const std::string path = "/operations/" + std::to_string(index);
+    if (!file.exists(path)) {
+      throw InputError(results_file().string() + ": has no record " + path +
+                       " of an operation the checkpoint has passed (another run's results?)");
+    }
+    OperationRecord r;
+    r.name = file.read_attribute_string(path, "name");
+    r.kind = file.read_attribute_string(path, "kind");
+    r.ended_by = file.read_attribute_string(path, "ended_by");
+    r.start_time = file.read_attribute_double(path, "start_time");
+    r.end_time = file.read_attribute_double(path, "end_time");
+    r.start_cycle = static_cast<long>(file.read_attribute_double(path, "start_cycle"));
+    r.end_cycle = static_cast<long>(file.read_attribute_double(path, "end_cycle"));
+    r.first_frame = file.read_attribute_int(path, "first_frame");
+    r.last_frame = file.read_attribute_int(path, "last_frame");
+    r.wall_seconds = file.read_attribute_double(path, "wall_seconds");
+    records.push_back(std::move(r));
+  }
+  return records;
+}
+
 void ResultsWriter::write_xdmf_files(const std::vector<XdmfFrame>* pending) const {
   for (std::size_t i = 0; i < parts_.size(); ++i) {
     const PartRecord& record = parts_[i];

@@ -65,6 +65,20 @@ struct PartFrameView {
 /// the path; invalid arguments (unknown part, wrong sizes, bad names, time not increasing) throw
 /// std::invalid_argument before anything is written; a failure to write a frame, history rows or
 /// run information (a full disk) throws sf::OutputError naming the file and the system's reason.
+/// One operation of the press line as run (results.h5 /operations/<index>, summary.json).
+struct OperationRecord {
+  std::string name;
+  std::string kind;         ///< "gravity", "closing", "forming", "springback"
+  std::string ended_by;     ///< what ended it, in words ("stroke 20 mm of 'punch'")
+  double start_time = 0.0;  ///< s
+  double end_time = 0.0;    ///< s
+  long start_cycle = 0;
+  long end_cycle = 0;
+  int first_frame = 0;        ///< the first frame at or after its start
+  int last_frame = 0;         ///< the frame of its end
+  double wall_seconds = 0.0;  ///< s, its wall time
+};
+
 class ResultsWriter {
  public:
   /// Creates `directory` (and its parents) if missing, creates or truncates
@@ -110,6 +124,13 @@ class ResultsWriter {
   /// Stores `text` (e.g. the resolved case, the version) as the string dataset /run/<key>,
   /// replacing an earlier one of the same key.
   void write_run_info(const std::string& key, const std::string& text);
+
+  /// Writes operation number `index`'s record as the group /operations/<index> (attributes; one
+  /// written before, by a run a restart goes on from, is replaced).
+  void write_operation(int index, const OperationRecord& record);
+  /// The records of operations 0 .. count - 1 as written (a restart inside operation `count`
+  /// reports the ones before it); InputError naming the file when one is missing.
+  std::vector<OperationRecord> read_operations(int count) const;
 
   /// The identity of the run that created results.h5 (attribute run_id of /run): a restart
   /// checks that its checkpoint belongs to the same run.

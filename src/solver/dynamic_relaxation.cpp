@@ -10,7 +10,9 @@
 #include "core/errors.hpp"
 #include "core/log.hpp"
 #include "solver/explicit_driver.hpp"
+#include "solver/frame_observer.hpp"
 #include "solver/output_schedule.hpp"
+#include "solver/time_loop.hpp"
 #include "solver/time_step_control.hpp"
 
 // The explicit springback route (docs/static-analysis.md, "Springback by dynamic relaxation").
@@ -314,6 +316,90 @@ class RelaxationProgress {
   std::chrono::steady_clock::time_point last_;
 };
 
+// What the dynamic relaxation's observers tell each other.
+struct RelaxationFlags {
+  bool restart = false;       ///< the last step ended with a reset: the next starts from rest
+  bool at_rest = false;       ///< the stop rule found the blank at rest
+  bool reached_stop = false;  ///< max_time after the release has passed
+};
+
+// Kinetic damping after every step: a reset at a peak of the kinetic energy, the rest probe once
+// the release is over.
+class KineticDampingObserver final : public LoopObserver {
+ public:
+  KineticDampingObserver(const Model& model, KineticDamping& damping, double release_end,
+                         RelaxationFlags& flags)
+      : model_(model), damping_(damping), release_end_(release_end), flags_(flags) {}
+
+  bool after_step(SolutionState& s) override {
+    const bool after_release = s.time >= release_end_ * (1.0 - 1e-12);
+    const KineticDamping::Outcome outcome = damping_.after_step(model_, s, after_release);
+    flags_.restart = outcome != KineticDamping::Outcome::moving;
+    flags_.at_rest = outcome == KineticDamping::Outcome::at_rest;
+    return false;
+  }
+
+ private:
+  const Model& model_;
+  KineticDamping& damping_;
+  double release_end_;
+  RelaxationFlags& flags_;
+};
+
+// The relaxation's end: at rest, or max_time after the release; a start from rest after a reset;
+// the progress line.
+class RelaxationEndObserver final : public LoopObserver {
+ public:
+  RelaxationEndObserver(const Model& model, RelaxationProgress& progress,
+                        const KineticDamping& damping, double t0, double release_time,
+                        double max_time, double& dt_previous, RelaxationFlags& flags)
+      : model_(model),
+        progress_(progress),
+        damping_(damping),
+        t0_(t0),
+        release_time_(release_time),
+        max_time_(max_time),
+        dt_previous_(dt_previous),
+        flags_(flags) {}
+
+  bool before_step(SolutionState& s) override {
+    if (s.time >= t_stop() * (1.0 - 1e-12)) {
+      flags_.reached_stop = true;
+      return true;
+    }
+    if (flags_.restart) {
+      // After a reset the state is a start from rest, as before a run's first step (dt 0 for
+      // the whole-step velocity in compute_time_step's momentum update, a half kick next).
+      s.dt = 0.0;
+      dt_previous_ = 0.0;
+      flags_.restart = false;
+    }
+    return false;
+  }
+  double bound_step(const SolutionState& s, double dt) override {
+    return std::min(dt, t_stop() - s.time);
+  }
+  bool after_step(SolutionState& s) override {
+    const double release_end = t0_ + release_time_;
+    progress_.report(model_, s, std::min(1.0, (s.time - t0_) / release_time_),
+                     std::max(0.0, (s.time - release_end) / max_time_), damping_.running_ratio(),
+                     damping_.resets(), false);
+    return flags_.at_rest;
+  }
+
+ private:
+  double t_stop() const { return t0_ + release_time_ + max_time_; }
+
+  const Model& model_;
+  RelaxationProgress& progress_;
+  const KineticDamping& damping_;
+  double t0_;
+  double release_time_;
+  double max_time_;
+  double& dt_previous_;
+  RelaxationFlags& flags_;
+};
+
 }  // namespace
 
 DynamicRelaxationResult run_dynamic_relaxation(const Model& model, SolutionState& state,
@@ -334,7 +420,6 @@ DynamicRelaxationResult run_dynamic_relaxation(const Model& model, SolutionState
   const double release_time = config.release_time;
   const double max_time = config.max_time > 0.0 ? config.max_time : 10.0 * release_time;
   const double release_end = t0 + release_time;
-  const double t_stop = release_end + max_time;
 
   DynamicRelaxationResult result;
   result.release_time = release_time;
@@ -362,7 +447,6 @@ DynamicRelaxationResult run_dynamic_relaxation(const Model& model, SolutionState
   const Energies& e = s.energies;
   const double entry_internal = e.internal + e.hourglass;
   const double energy_scale = std::max(0.0, e.total());
-  const double initial_dt = model.time.time_step;
 
   log_info(
       "springback by dynamic relaxation from t = {:.6e} s: the formed state's static internal "
@@ -380,60 +464,21 @@ DynamicRelaxationResult run_dynamic_relaxation(const Model& model, SolutionState
   RelaxationProgress progress(model.time.progress_interval);
   KineticDamping damping(config.kinetic_tolerance, entry_internal, t0, e.kinetic);
   double dt_previous = s.dt;  // the last forming step (0 from a fresh state: v(0) then)
-  bool restart = formed;      // the last step ended with a reset (a formed part starts at rest)
-  bool reached_stop = false;
+  // The last step ended with a reset (a formed part starts at rest).
+  RelaxationFlags flags{.restart = formed, .at_rest = false, .reached_stop = false};
   const long first_cycle = s.cycle;
-
+  KineticDampingObserver damping_steps(model, damping, release_end, flags);
+  FrameObserver frames(model, schedule, output, false, true, last_frame_time);
+  RelaxationEndObserver ends(model, progress, damping, t0, release_time, max_time, dt_previous,
+                             flags);
+  LoopObserver* const observers[] = {&damping_steps, &frames, &ends};
+  // Below the total energy at the start of springback the blow-up check is silent.
+  const LoopChecks checks{.where = " in the springback",
+                          .energy_scale = energy_scale,
+                          .blowup_where = " in the springback (dynamic relaxation)",
+                          .blowup_remedy = "reduce the time-step safety factor"};
   try {
-    while (true) {
-      if (s.time >= t_stop * (1.0 - 1e-12)) {
-        reached_stop = true;
-        break;
-      }
-      if (restart) {
-        // After a reset the state is a start from rest, as before a run's first step (dt 0 for
-        // the whole-step velocity in compute_time_step's momentum update, a half kick next).
-        s.dt = 0.0;
-        dt_previous = 0.0;
-        restart = false;
-      }
-      double dt = compute_time_step(model, s);
-      if (dt < 1e-3 * initial_dt) {
-        throw InstabilityError(fmt::format(
-            "time step collapsed to {:.3e} s (from {:.3e} s) at t = {:.6e} s, cycle {} in the "
-            "springback: an element is being crushed",
-            dt, initial_dt, s.time, s.cycle));
-      }
-      dt = schedule.land_on_frame(s.time, dt);
-      dt = std::min(dt, t_stop - s.time);
-      check_step_advances(s, dt, " in the springback");
-      advance_one_step(model, s, dt, dt_previous);
-      dt_previous = dt;
-      // Below the total energy at the start of springback the check is silent.
-      check_energy_blowup(model, s, energy_scale, " in the springback (dynamic relaxation)",
-                          "reduce the time-step safety factor");
-
-      const bool after_release = s.time >= release_end * (1.0 - 1e-12);
-      const KineticDamping::Outcome outcome = damping.after_step(model, s, after_release);
-      restart = outcome != KineticDamping::Outcome::moving;
-      result.at_rest = outcome == KineticDamping::Outcome::at_rest;
-
-      const PhaseTimer output_timer(s.times.output);
-      const OutputSchedule::Due due = schedule.after_step(s.time, s.cycle);
-      if (output && due.history) {
-        output->append_history(model, s);
-      }
-      if (output && due.frame) {
-        output->write_frame(model, s);
-        last_frame_time = s.time;
-      }
-      progress.report(model, s, std::min(1.0, (s.time - t0) / release_time),
-                      std::max(0.0, (s.time - release_end) / max_time), damping.running_ratio(),
-                      damping.resets(), false);
-      if (result.at_rest) {
-        break;
-      }
-    }
+    run_time_loop(model, s, dt_previous, checks, observers);
   } catch (const InstabilityError& error) {
     // As run_explicit: the history up to the stop and, when the positions are finite, one last
     // frame of the state at the stop.
@@ -441,6 +486,8 @@ DynamicRelaxationResult run_dynamic_relaxation(const Model& model, SolutionState
         output ? output->write_stop_state(model, s, last_frame_time) : std::string();
     throw InstabilityError(error.what() + last_frame);
   }
+  result.at_rest = flags.at_rest;
+  const bool reached_stop = flags.reached_stop;
 
   result.cycles = s.cycle - first_cycle;
   result.relaxation_time = std::max(0.0, s.time - release_end);

@@ -7,6 +7,8 @@
 
 #include "core/errors.hpp"
 #include "core/exact_sums.hpp"
+#include "model/operation_plan.hpp"
+#include "solver/operation_sequence.hpp"
 
 namespace sf {
 
@@ -28,7 +30,7 @@ double kinetic_energy(const Model& model, const SolutionState& s) {
 // value the prescription gave it).
 void half_kick_rate(const Model& model, const SolutionState& s, Eigen::Index i, double inverse_mass,
                     double inverse_inertia, Vec3& u, Vec3& u_omega) {
-  const double c = model.loads.damping;
+  const double c = damping_in_effect(model, s);
   u = inverse_mass * (s.f_ext.col(i) + s.f_contact.col(i) - s.f_int.col(i)) - c * s.v.col(i);
   u_omega = inverse_inertia * (s.m_ext.col(i) - s.m_int.col(i)) - c * s.omega.col(i);
   const NodalConstraints& constraints = model.constraints;
@@ -131,7 +133,7 @@ void account_step_energies(const Model& model, SolutionState& s,
   Energies& e = s.energies;
   const StepNodeSums sums = sum_over_nodes(model, s, dt);
   e.external_work += sums.load_work + prescribed_work;
-  e.damping += model.loads.damping * sums.damping_power * dt;
+  e.damping += damping_in_effect(model, s) * sums.damping_power * dt;
   const double hourglass_work = element_result.hourglass_work;
   e.plastic_work += element_result.plastic_work;
   e.hourglass += hourglass_work;
@@ -154,20 +156,23 @@ void account_step_energies(const Model& model, SolutionState& s,
       // dissipates c M v^2 dt (on v(n+1/2), as for the blank); its kinetic energy is taken at
       // the step end, like the blank's.
       const double travel_step = dt * tool.velocity;
-      e.external_work +=
-          0.5 * (driven->applied_force(time_before) + driven->applied_force(s.time)) * travel_step;
+      e.external_work += 0.5 *
+                         (driven->applied_force(time_before, tool.travel - travel_step) +
+                          driven->applied_force(s.time, tool.travel)) *
+                         travel_step;
       e.damping += driven->damping() * driven->mass() * tool.velocity * tool.velocity * dt;
-      tool.speed = driven->whole_step_velocity(s.time, tool.force, tool.velocity, dt);
+      tool.speed = driven->whole_step_velocity(s.time, tool.force, tool.velocity, dt, tool.travel);
       tool_kinetic += 0.5 * driven->mass() * tool.speed * tool.speed;
     } else {
       // The press holds the tool against F on its prescribed path: it does -F . du of work.
       e.external_work -= reaction_work;
-      tool.speed = model_tool.motion.speed(s.time);
+      tool.speed = speed_in_effect(model, static_cast<int>(t), tool.origin, s.time);
     }
     // A moving tool's peak is its largest push against its motion; a fixed tool's direction is
     // only the default axis, so its peak is the largest force along that axis either way.
     const double pushing = -tool.force.dot(model_tool.direction());
-    const bool fixed = !tool.held && !model_tool.force_control && !model_tool.motion.moves();
+    const bool fixed = !tool.held && !model_tool.force_control &&
+                       !motion_in_effect(model, static_cast<int>(t), tool.origin).moves();
     tool.peak_force = std::max(tool.peak_force, fixed ? std::abs(pushing) : pushing);
   }
   e.kinetic = sums.kinetic.kinetic + tool_kinetic;
@@ -184,12 +189,12 @@ void check_energy_blowup(const Model& model, const SolutionState& s, double ener
   const double reference = std::max(e.supplied(), energy_scale);
   if (reference > 0.0 && e.total() > ratio * reference) {
     // Mass-proportional damping applied explicitly (on v(n-1/2)) amplifies for c dt > 2.
-    const double c_dt = model.loads.damping * s.dt;
+    const double c_dt = damping_in_effect(model, s) * s.dt;
     const std::string remedy =
         c_dt >= 2.0 ? fmt::format(
                           "control.damping = {} 1/s times the step {:.4e} s is {:.3g}, "
                           "beyond the explicit damping's stability limit 2: lower it",
-                          model.loads.damping, s.dt, c_dt)
+                          damping_in_effect(model, s), s.dt, c_dt)
                     : std::string(remedy_text);
     throw InstabilityError(fmt::format(
         "energy blow-up{} at t = {:.6e} s, cycle {}: total energy {:.6e} N mm exceeds {} x "

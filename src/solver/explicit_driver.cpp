@@ -13,12 +13,15 @@
 #include "solver/case_digest.hpp"
 #include "solver/checkpoint.hpp"
 #include "solver/formed_part.hpp"
+#include "solver/frame_observer.hpp"
 #include "solver/frame_output.hpp"
+#include "solver/operation_sequence.hpp"
 #include "solver/output_schedule.hpp"
 #include "solver/progress.hpp"
 #include "solver/springback.hpp"
 #include "solver/state_gather.hpp"
 #include "solver/stop_request.hpp"
+#include "solver/time_loop.hpp"
 #include "solver/time_step_control.hpp"
 
 namespace sf {
@@ -159,6 +162,227 @@ void start_from_formed_part(const Model& model, SolutionState& s, LoopMark& loop
            placed.empty() ? "none" : fmt::format("{}", fmt::join(placed, ", ")));
 }
 
+// The record of the operation starting now (its end is filled in when it ends).
+OperationRecord start_record(const OperationSequence& operations, const SolutionState& s,
+                             const FrameOutput* output) {
+  OperationRecord r;
+  r.name = operations.name(s.operation.index);
+  r.kind = operations.kind(s.operation.index);
+  r.start_time = s.operation.start_time;
+  r.start_cycle = s.operation.start_cycle;
+  // The frame of its start: the previous operation's last (-1 after a restart inside it, whose
+  // frames before the restart this process does not know)
+  r.first_frame = output && s.cycle == s.operation.start_cycle ? output->frame_count() - 1 : -1;
+  return r;
+}
+
+void log_operation_start(const Model& model, const OperationSequence& operations,
+                         const SolutionState& s) {
+  if (model.operations.empty()) {
+    return;  // a case without [[operations]] says nothing of them
+  }
+  const int k = s.operation.index;
+  const Operation& op = model.operations[static_cast<std::size_t>(k)];
+  std::string in_play;
+  for (std::size_t t = 0; t < model.tools.size(); ++t) {
+    if (op.in_play[t]) {
+      in_play += fmt::format("{}{}", in_play.empty() ? "" : ", ", model.tools[t].name);
+    }
+  }
+  log_info("Operation   {}/{} '{}' ({}) starts at t = {:.6e} s, cycle {}; tools in play: {}\n",
+           k + 1, operations.count(), op.name, operations.kind(k), s.time, s.cycle,
+           in_play.empty() ? "none" : in_play);
+}
+
+// Writes the ended operation's record and its formed part (the state gathered already).
+void record_operation(const Model& model, const RunOptions& options, const SolutionState& s,
+                      FrameOutput* output, OperationRecord& r) {
+  if (output) {
+    r.last_frame = output->frame_count() - 1;
+    output->write_operation(s.operation.index, r);
+    write_formed_part(operation_formed_part_path(options.output_directory, r.name), model, s);
+  }
+  log_info("Operation   '{}' ended at t = {:.6e} s, cycle {} ({}), {:.1f} s of wall time\n", r.name,
+           s.time, s.cycle, r.ended_by, r.wall_seconds);
+}
+
+// An operation before the last of the loop ended: a history row and a frame of its end, its
+// record and formed part. Collective (the gather).
+void end_operation(const Model& model, const RunOptions& options, SolutionState& s,
+                   FrameOutput* output, LoopMark& loop, OperationRecord& r) {
+  if (options.write_results) {
+    gather_formed_part_to_root(s);  // its fields include every output field
+  }
+  if (output) {
+    output->append_history(model, s);
+    if (loop.last_frame_time != s.time) {
+      output->write_frame(model, s);
+      loop.last_frame_time = s.time;
+    }
+  }
+  record_operation(model, options, s, output, r);
+}
+
+// Energy scale below which the blow-up check is silent: the blank's kinetic energy at the
+// fastest tool speed, a thousandth of it (0 without moving tools).
+double blowup_energy_scale(const Model& model, const SolutionState& s) {
+  std::vector<const RigidToolMotion*> motions;
+  for (const Tool& t : model.tools) {
+    motions.push_back(&t.motion);
+  }
+  for (const Operation& op : model.operations) {
+    for (const auto& m : op.motions) {
+      if (m) {
+        motions.push_back(&*m);
+      }
+    }
+  }
+  double max_speed = 0.0;
+  for (const RigidToolMotion* m : motions) {
+    for (int k = 0; k <= 100; ++k) {
+      max_speed = std::max(max_speed, std::abs(m->speed(model.time.end_time * k / 100.0)));
+    }
+  }
+  return 1e-3 * 0.5 * s.mass.sum() * max_speed * max_speed;
+}
+
+// The press line's operations on the loop: before each step, whether the one in progress has
+// ended (then its end is written and the next one begins, or the loop ends with it); the last
+// one's stroke or time end bounds the step.
+class OperationObserver final : public LoopObserver {
+ public:
+  OperationObserver(const Model& model, const RunOptions& options,
+                    const OperationSequence& operations, FrameOutput* output, LoopMark& loop,
+                    std::vector<OperationRecord> records, const SolutionState& s)
+      : model_(model),
+        options_(options),
+        operations_(operations),
+        output_(output),
+        loop_(loop),
+        records_(std::move(records)),
+        current_(start_record(operations, s, output)),
+        wall_start_(std::chrono::steady_clock::now()) {}
+
+  bool before_step(SolutionState& s) override {
+    while (operations_.ended(s)) {
+      current_.end_time = s.time;
+      current_.end_cycle = s.cycle;
+      current_.ended_by = operations_.ended_by(s);
+      current_.wall_seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count();
+      const int next = s.operation.index + 1;
+      if (next >= operations_.count() || operations_.is_springback(next)) {
+        return true;  // the loop's last operation ends after the loop (its checkpoint first)
+      }
+      end_operation(model_, options_, s, output_, loop_, current_);
+      records_.push_back(current_);
+      operations_.begin(next, s);
+      log_operation_start(model_, operations_, s);
+      current_ = start_record(operations_, s, output_);
+      wall_start_ = std::chrono::steady_clock::now();
+    }
+    return false;
+  }
+  // Land exactly on the end time (the last operation's stroke or time end). Frames are written
+  // at the first step end at or past each frame time, not by cutting the step to it: a step cut
+  // short and the full one after it change the amplitude of the modes near the stability limit
+  // (the contact springs, capped at w dt = 0.87), and frame after frame that pumped energy into
+  // the flange's contact chatter (the U-channel's energy balance grew 2x per frame, to 1.5e-4 at
+  // 10 mm). An operation before the last ends at its first whole step at or past its end, so
+  // that a draw split in two operations is the same draw.
+  double bound_step(const SolutionState& s, double dt) override {
+    return std::min(dt, operations_.landing_time(s) - s.time);
+  }
+  bool after_step(SolutionState& /*s*/) override { return false; }
+
+  std::vector<OperationRecord> take_records() { return std::move(records_); }
+  const OperationRecord& current() const { return current_; }
+
+ private:
+  const Model& model_;
+  const RunOptions& options_;
+  const OperationSequence& operations_;
+  FrameOutput* output_;
+  LoopMark& loop_;
+  std::vector<OperationRecord> records_;
+  OperationRecord current_;
+  std::chrono::steady_clock::time_point wall_start_;
+};
+
+// The run's own watch on itself: the largest kinetic / internal energy ratio after the first
+// tenth of the run, and a warning (once) when mass scaling has added more than 5 % of the mass.
+class RunChecksObserver final : public LoopObserver {
+ public:
+  RunChecksObserver(const Model& model, LoopMark& loop) : model_(model), loop_(loop) {}
+
+  bool after_step(SolutionState& s) override {
+    if (s.time > 0.1 * model_.time.end_time) {
+      s.peak_kinetic_ratio = std::max(s.peak_kinetic_ratio, s.energies.kinetic_ratio());
+    }
+    warn_about_added_mass(s);
+    return false;
+  }
+
+  void warn_about_added_mass(const SolutionState& s) {
+    constexpr double warn_fraction = 0.05;
+    const double fraction = s.scaling.added_mass / model_.blank.physical_mass;
+    if (!loop_.warned_added_mass && fraction > warn_fraction) {
+      loop_.warned_added_mass = true;
+      log_warning(
+          "mass scaling has added {:.2f} % of the blank's mass by t = {:.6e} s, cycle {} ({} "
+          "elements scaled); check that the inertia forces stay small (kinetic / internal energy) "
+          "or set control.mass_scaling_max_added\n",
+          100.0 * fraction, s.time, s.cycle, s.scaling.scaled_elements);
+    }
+  }
+
+ private:
+  const Model& model_;
+  LoopMark& loop_;
+};
+
+class ProgressObserver final : public LoopObserver {
+ public:
+  ProgressObserver(const Model& model, Progress& progress) : model_(model), progress_(progress) {}
+  bool after_step(SolutionState& s) override {
+    progress_.report(model_, s, false);
+    return false;
+  }
+
+ private:
+  const Model& model_;
+  Progress& progress_;
+};
+
+// Requests by signal (stop, checkpoint), by the checkpoint interval and by --stop-at-cycle,
+// agreed by every process after each step.
+class RequestObserver final : public LoopObserver {
+ public:
+  RequestObserver(const Model& model, const RunOptions& options, FrameOutput* output,
+                  Checkpoints& checkpoints, LoopMark& loop)
+      : model_(model), options_(options), output_(output), checkpoints_(checkpoints), loop_(loop) {}
+
+  bool after_step(SolutionState& s) override {
+    const int asked = s.domain->agree_flags(take_run_requests() |
+                                            (checkpoints_.due(s.cycle) ? request_checkpoint : 0) |
+                                            (s.cycle == options_.stop_at_cycle ? request_stop : 0));
+    if (asked & request_stop) {
+      stop_cleanly(model_, s, output_, checkpoints_, loop_);
+    }
+    if (asked & request_checkpoint) {
+      checkpoints_.write(model_, s, output_, loop_);
+    }
+    return false;
+  }
+
+ private:
+  const Model& model_;
+  const RunOptions& options_;
+  FrameOutput* output_;
+  Checkpoints& checkpoints_;
+  LoopMark& loop_;
+};
+
 }  // namespace
 
 RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionState* final_state) {
@@ -173,6 +397,11 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
     s.tools[t].travel = model.tools[t].motion.travel(0.0);
     s.tools[t].speed = model.tools[t].motion.speed(0.0);
   }
+  const OperationSequence operations(model);
+  const bool fresh = options.restart_file.empty();
+  if (fresh) {
+    operations.begin(0, s);  // before the first forces: a tool out of play has no contact
+  }
   compute_forces(model, s, 0.0);
 
   RunRequestScope requests;
@@ -181,13 +410,15 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
                           model.output.history_interval);
   LoopMark loop;
   std::unique_ptr<FrameOutput> output;
-  if (options.restart_file.empty() && !model.blank.formed_part.empty()) {
+  if (fresh && !model.blank.formed_part.empty()) {
     start_from_formed_part(model, s, loop);
+    operations.begin(0, s);                // the first operation starts where the part's run ended
     schedule.after_step(s.time, s.cycle);  // the frame times the part's run passed
   }
-  if (!options.restart_file.empty()) {
+  if (!fresh) {
     const CheckpointInfo info = resume_state(model, options, checkpoints.digest(), s);
     loop = info.loop;
+    operations.resume(s);
     if (options.write_results && root) {
       output = std::make_unique<FrameOutput>(model, options.output_directory, info.output);
     }
@@ -202,89 +433,35 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
     if (output) {
       output->write_frame(model, s);
       output->append_history(model, s);
+      loop.last_frame_time = s.time;
     }
   }
-
-  // Energy scale below which the blow-up check is silent: the blank's kinetic energy at the
-  // fastest tool speed, a thousandth of it (0 without moving tools).
-  double max_speed = 0.0;
-  for (const Tool& t : model.tools) {
-    for (int k = 0; k <= 100; ++k) {
-      max_speed = std::max(max_speed, std::abs(t.motion.speed(model.time.end_time * k / 100.0)));
-    }
+  if (fresh) {
+    log_operation_start(model, operations, s);
   }
-  const double energy_scale = 1e-3 * 0.5 * s.mass.sum() * max_speed * max_speed;
 
-  const double initial_dt = model.time.time_step;
   Progress progress(model, model.time.progress_interval);
-  // Added mass above this share of the physical mass is worth a warning (once).
-  constexpr double warn_fraction = 0.05;
-  auto warn_about_added_mass = [&]() {
-    const double fraction = s.scaling.added_mass / model.blank.physical_mass;
-    if (!loop.warned_added_mass && fraction > warn_fraction) {
-      loop.warned_added_mass = true;
-      log_warning(
-          "mass scaling has added {:.2f} % of the blank's mass by t = {:.6e} s, cycle {} ({} "
-          "elements scaled); check that the inertia forces stay small (kinetic / internal energy) "
-          "or set control.mass_scaling_max_added\n",
-          100.0 * fraction, s.time, s.cycle, s.scaling.scaled_elements);
-    }
-  };
-  warn_about_added_mass();
-
+  // The operations ended before a checkpoint a restart goes on from are in results.h5.
+  OperationObserver operation_steps(model, options, operations, output.get(), loop,
+                                    !fresh && output && !model.operations.empty()
+                                        ? output->read_operations(s.operation.index)
+                                        : std::vector<OperationRecord>{},
+                                    s);
+  RunChecksObserver run_checks(model, loop);
+  run_checks.warn_about_added_mass(s);
+  FrameObserver frames(model, schedule, output.get(), options.write_results, false,
+                       loop.last_frame_time);
+  ProgressObserver progress_lines(model, progress);
+  RequestObserver requests_and_checkpoints(model, options, output.get(), checkpoints, loop);
+  LoopObserver* const observers[] = {&operation_steps, &run_checks, &frames, &progress_lines,
+                                     &requests_and_checkpoints};
+  const LoopChecks checks{
+      .where = "",
+      .energy_scale = blowup_energy_scale(model, s),
+      .blowup_where = "",
+      .blowup_remedy = "reduce the time-step safety factor or the penalty scale"};
   try {
-    while (s.time < model.time.end_time * (1.0 - 1e-12)) {
-      double dt = compute_time_step(model, s);
-      if (dt < 1e-3 * initial_dt) {
-        throw InstabilityError(fmt::format(
-            "time step collapsed to {:.3e} s (from {:.3e} s) at t = {:.6e} s, cycle {}: an "
-            "element is being crushed",
-            dt, initial_dt, s.time, s.cycle));
-      }
-      // Land exactly on the end time. Frames are written at the first step end at or past each
-      // frame time, not by cutting the step to it: a step cut short and the full one after it
-      // change the amplitude of the modes near the stability limit (the contact springs, capped
-      // at w dt = 0.87), and frame after frame that pumped energy into the flange's contact
-      // chatter (the U-channel's energy balance grew 2x per frame, to 1.5e-4 at 10 mm).
-      if (model.time.land_on_end) {
-        dt = std::min(dt, model.time.end_time - s.time);
-      }
-      check_step_advances(s, dt, "");
-      advance_one_step(model, s, dt, loop.dt_previous);
-      loop.dt_previous = dt;
-      if (s.time > 0.1 * model.time.end_time) {
-        s.peak_kinetic_ratio = std::max(s.peak_kinetic_ratio, s.energies.kinetic_ratio());
-      }
-      check_energy_blowup(model, s, energy_scale, "",
-                          "reduce the time-step safety factor or the penalty scale");
-      warn_about_added_mass();
-
-      // A history row every history_interval cycles and at every frame (the frame's added mass,
-      // time step, energies).
-      const PhaseTimer output_timer(s.times.output);
-      const OutputSchedule::Due due = schedule.after_step(s.time, s.cycle);
-      if (options.write_results && (due.history || due.frame)) {
-        gather_state_to_root(s);  // every process: the schedule is the same on all
-      }
-      if (output && due.history) {
-        output->append_history(model, s);
-      }
-      if (output && due.frame) {
-        output->write_frame(model, s);
-        loop.last_frame_time = s.time;
-      }
-      progress.report(model, s, false);
-      // Requests by signal or by the checkpoint interval, agreed by every process.
-      const int asked = s.domain->agree_flags(
-          take_run_requests() | (checkpoints.due(s.cycle) ? request_checkpoint : 0) |
-          (s.cycle == options.stop_at_cycle ? request_stop : 0));
-      if (asked & request_stop) {
-        stop_cleanly(model, s, output.get(), checkpoints, loop);
-      }
-      if (asked & request_checkpoint) {
-        checkpoints.write(model, s, output.get(), loop);
-      }
-    }
+    run_time_loop(model, s, loop.dt_previous, checks, observers);
   } catch (const InstabilityError& error) {
     // Keep what a user needs to see the failure: the history up to the stop and, when the nodes
     // still have finite positions, one last frame of the state at the stop (for a NaN, the state
@@ -298,6 +475,8 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
         output ? output->write_stop_state(model, s, loop.last_frame_time) : std::string();
     throw InstabilityError(error.what() + last_frame);
   }
+  std::vector<OperationRecord> records = operation_steps.take_records();
+  OperationRecord current = operation_steps.current();
   // The end of the forming: a checkpoint that a restart with a longer stroke or end time goes on
   // from (before the last history row, which such a restart does not repeat).
   checkpoints.write(model, s, output.get(), loop);
@@ -306,14 +485,23 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
   gather_formed_part_to_root(s);
   if (output) {
     output->append_history(model, s);
+    if (!model.operations.empty() && loop.last_frame_time != s.time) {
+      output->write_frame(model, s);  // the last operation's end (a force, gap or rest end)
+      loop.last_frame_time = s.time;
+    }
     output->flush();
     // the blank as it stands, for the next operation
     write_formed_part(formed_part_path(options.output_directory), model, s);
+  }
+  if (!model.operations.empty()) {
+    record_operation(model, options, s, output.get(), current);
+    records.push_back(current);
   }
   progress.report(model, s, true);
   const double wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   RunSummary summary = make_run_summary(model, s, wall_seconds);
+  summary.operations = records;
   summary.ranks = s.domain->processes();
   const PhaseTimes& t = s.times;
   const double mine[6] = {t.elements, t.contact, t.time_step,
@@ -342,9 +530,33 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
   }
   if (model.springback) {
     restore_default_signal_actions();
+    const bool as_operation = !model.operations.empty();
+    OperationRecord springback_record;
+    const auto springback_start = std::chrono::steady_clock::now();
+    if (as_operation) {
+      operations.begin(operations.count() - 1, s);
+      log_operation_start(model, operations, s);
+      springback_record = start_record(operations, s, output.get());
+    }
     summary.springback = run_springback(model, s, output.get());
     if (output) {
       output->flush();
+    }
+    if (as_operation) {
+      springback_record.end_time = s.time;
+      springback_record.end_cycle = s.cycle;
+      springback_record.ended_by = operations.ended_by(s);
+      springback_record.wall_seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - springback_start)
+              .count();
+      if (output) {
+        springback_record.last_frame = output->frame_count() - 1;
+        output->write_operation(s.operation.index, springback_record);
+        // the part as it sprang back (the output process has the whole state here)
+        write_formed_part(
+            operation_formed_part_path(options.output_directory, springback_record.name), model, s);
+      }
+      summary.operations.push_back(springback_record);
     }
   }
   if (final_state) {

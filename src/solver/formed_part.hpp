@@ -28,6 +28,22 @@ inline std::filesystem::path formed_part_path(const std::filesystem::path& resul
   return results_folder / "formed_part.h5";
 }
 
+/// The formed part at the end of operation `name` of the press line (results folder).
+inline std::filesystem::path operation_formed_part_path(const std::filesystem::path& results_folder,
+                                                        const std::string& name) {
+  return results_folder / ("formed_part." + name + ".h5");
+}
+
+/// Whether `file` is one of a run's formed parts (or its temporary): formed_part.h5,
+/// formed_part.NAME.h5.
+inline bool is_formed_part_file(const std::filesystem::path& file) {
+  std::string name = file.filename().string();
+  if (name.size() > 4 && name.ends_with(".tmp")) {
+    name.resize(name.size() - 4);
+  }
+  return name.starts_with("formed_part.") && name.ends_with(".h5");
+}
+
 /// A formed part as read from its file.
 struct FormedPart {
   std::string file;          ///< where it was read from (for messages)

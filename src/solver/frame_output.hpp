@@ -57,6 +57,16 @@ class FrameOutput {
   /// these coordinates (mm) rather than the current ones: a linear analysis refers its stresses
   /// to the undeformed geometry (null = the current coordinates again).
   void set_stress_geometry(const Matrix3X* x) { stress_geometry_ = x; }
+  /// Frames written so far.
+  int frame_count() const { return writer_->frame_count(); }
+  /// Writes operation number `index`'s record (results.h5 /operations/<index>).
+  void write_operation(int index, const OperationRecord& record) {
+    writer_->write_operation(index, record);
+  }
+  /// The records of the operations before operation `count` (a restart inside it).
+  std::vector<OperationRecord> read_operations(int count) const {
+    return writer_->read_operations(count);
+  }
   /// The search audits run with the frames and history rows (contact pairs with audit = true).
   const SearchAuditRecorder& search_audits() const { return audits_; }
 

@@ -15,6 +15,61 @@
 namespace sf {
 namespace {
 
+// The press line, one line per operation: what it is, the tools in play, what ends it and when
+// the plan expects that (a force, gap or rest end: the latest it may take).
+void report_operations(const Model& model, const UnitSystem& units) {
+  using End = OperationConfig::End;
+  const auto tool_name = [&](int t) { return model.tools[static_cast<std::size_t>(t)].name; };
+  for (std::size_t k = 0; k < model.operations.size(); ++k) {
+    const Operation& op = model.operations[k];
+    static constexpr const char* kinds[] = {"gravity", "closing", "forming", "springback"};
+    std::string in_play;
+    std::string redefined;
+    for (std::size_t t = 0; t < model.tools.size(); ++t) {
+      if (op.in_play[t]) {
+        in_play += fmt::format("{}{}", in_play.empty() ? "" : ", ", model.tools[t].name);
+      }
+      if (op.motions[t]) {
+        redefined += fmt::format("{}{}", redefined.empty() ? "" : ", ", model.tools[t].name);
+      }
+    }
+    std::string end;
+    switch (op.end) {
+      case End::stroke:
+        end = fmt::format("stroke {:g} {} of '{}', at t = {:.6e} {}", op.stroke, units.length,
+                          tool_name(op.tool), op.planned_end, units.time);
+        break;
+      case End::time:
+        end = fmt::format("time {:g} {}, at t = {:.6e} {}", op.time, units.time, op.planned_end,
+                          units.time);
+        break;
+      case End::force:
+        end = fmt::format("push {:g} {} on '{}', within {:g} {}", op.force, units.force,
+                          tool_name(op.tool), op.time, units.time);
+        break;
+      case End::gap:
+        end = fmt::format(
+            "gap {:g} {} from '{}' to '{}' ({:.4g} {} at the start of the meshes), "
+            "within {:g} {}",
+            op.gap, units.length, tool_name(op.tool), tool_name(op.gap_to), op.reference_clearance,
+            units.length, op.time, units.time);
+        break;
+      case End::rest:
+        end = fmt::format("rest (kinetic energy below {:g} of its peak), within {:g} {}", op.rest,
+                          op.time, units.time);
+        break;
+      case End::none:
+        end = "converged";
+        break;
+    }
+    log_info("Operation   {}/{} '{}' ({}): tools in play: {}{}; damping {:g} 1/{}; ends by {}\n",
+             k + 1, model.operations.size(), op.name, kinds[static_cast<int>(op.kind)],
+             in_play.empty() ? "none" : in_play,
+             redefined.empty() ? std::string() : fmt::format(" (motions given: {})", redefined),
+             op.damping, units.time, end);
+  }
+}
+
 std::string format_vector(const Vec3& v) {
   return fmt::format("({:.4g}, {:.4g}, {:.4g})", v.x(), v.y(), v.z());
 }
@@ -283,6 +338,17 @@ void print_tools(const Model& model, const UnitSystem& units) {
   }
 }
 
+// The tools moved to touch the blank (position = "touch"), with the distance.
+void print_tool_positions(const CaseConfig& config, const Model& model, const UnitSystem& units) {
+  for (std::size_t i = 0; i < model.tools.size() && i < config.tools.size(); ++i) {
+    if (config.tools[i].position == ToolConfig::Position::touch) {
+      const Tool& t = model.tools[i];
+      log_info("Position    '{}' moved {:.6g} {} along {} to touch the blank\n", t.name,
+               t.touch_shift, units.length, format_vector(t.direction()));
+    }
+  }
+}
+
 std::string describe_friction(const ContactConfig& c, const UnitSystem& units) {
   if (!(c.friction_static > 0.0)) {
     return "frictionless";
@@ -360,6 +426,7 @@ void print_time_control(const CaseConfig& config, const Model& model, const Unit
            control.stroke > 0.0 ? fmt::format(" (stroke {} {} of '{}')", control.stroke,
                                               units.length, control.stroke_tool)
                                 : std::string());
+  report_operations(model, units);
   log_info("Cycles      about {:.0f}\n", model.time.end_time / model.time.time_step);
   log_info("Output      {} frames, a history row every {} cycles\n", control.output_frames,
            control.history_interval);
@@ -421,6 +488,7 @@ void print_model(const CaseConfig& config, const Model& model) {
   print_boundaries(config, model, units);
   print_loads(config, model, units);
   print_tools(model, units);
+  print_tool_positions(config, model, units);
   print_contacts(config, model, units);
   print_history_groups(config, model);
   print_time_control(config, model, units);

@@ -8,6 +8,7 @@
 
 #include "core/errors.hpp"
 #include "core/exact_sums.hpp"  // kMinParallelIndices
+#include "solver/operation_sequence.hpp"
 
 namespace sf {
 namespace {
@@ -20,7 +21,7 @@ bool add_force_kicks(const Model& model, SolutionState& s, double weight) {
   // The nodes this process keeps (all of them in a serial run).
   const std::span<const int> held = s.domain->held_nodes();
   const Eigen::Index n = held.empty() ? s.v.cols() : static_cast<Eigen::Index>(held.size());
-  const double c = model.loads.damping;
+  const double c = damping_in_effect(model, s);
   bool finite = true;
 #pragma omp parallel for schedule(static) reduction(&& : finite) if (n >= kMinParallelIndices)
   for (Eigen::Index k = 0; k < n; ++k) {

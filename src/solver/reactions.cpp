@@ -4,6 +4,7 @@
 
 #include "core/dof_names.hpp"
 #include "model/constraint_assembly.hpp"
+#include "solver/operation_sequence.hpp"
 
 namespace sf {
 
@@ -34,7 +35,7 @@ void compute_reactions(const Model& model, const SolutionState& s, Matrix3X& for
   force.setZero(3, n);
   moment.setZero(3, n);
   const NodalConstraints& c = model.constraints;
-  const double damping = s.dt > 0.0 ? model.loads.damping : 0.0;
+  const double damping = s.dt > 0.0 ? damping_in_effect(model, s) : 0.0;
   for (Eigen::Index i = 0; i < n; ++i) {
     const unsigned bits = c.constrained_bits(static_cast<std::size_t>(i));
     if (bits == 0) {

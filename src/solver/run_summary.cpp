@@ -128,7 +128,7 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
     ts.peak_force = s.tools[t].peak_force;
     if (const auto& driven = model.tools[t].force_control) {
       ts.force_controlled = true;
-      ts.applied_force = driven->applied_force(s.time);
+      ts.applied_force = driven->applied_force(s.time, s.tools[t].travel);
     }
     r.tools.push_back(ts);
   }
@@ -269,6 +269,35 @@ void add_energy_lines(const RunSummary& r, const UnitSystem& u, const Add& add) 
                   r.scaled_elements));
 }
 
+template <class Add>
+void add_operation_lines(const RunSummary& r, const UnitSystem& u, const Add& add) {
+  for (std::size_t k = 0; k < r.operations.size(); ++k) {
+    const OperationRecord& o = r.operations[k];
+    add(
+        fmt::format("  operation {}         '{}' ({}): t = {:.4e} to {:.4e} {}, cycles {} to {}, "
+                    "{:.1f} s of wall time; ended by {}",
+                    k + 1, o.name, o.kind, o.start_time, o.end_time, u.time, o.start_cycle,
+                    o.end_cycle, o.wall_seconds, o.ended_by));
+  }
+}
+
+nlohmann::json operations_json(const RunSummary& r) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const OperationRecord& o : r.operations) {
+    list.push_back({{"name", o.name},
+                    {"kind", o.kind},
+                    {"ended_by", o.ended_by},
+                    {"start_time_s", o.start_time},
+                    {"end_time_s", o.end_time},
+                    {"start_cycle", o.start_cycle},
+                    {"end_cycle", o.end_cycle},
+                    {"first_frame", o.first_frame},
+                    {"last_frame", o.last_frame},
+                    {"wall_seconds", o.wall_seconds}});
+  }
+  return list;
+}
+
 std::string format_run_summary(const RunSummary& r) {
   std::string text;
   auto add = [&text](const std::string& line) { text += line + "\n"; };
@@ -295,6 +324,7 @@ std::string format_run_summary(const RunSummary& r) {
       add(rank_balance_line(r.phase_seconds_per_rank));
     }
     add_explicit_run_lines(r, u, add);
+    add_operation_lines(r, u, add);
   }
   add_energy_lines(r, u, add);
   add(fmt::format("  thickness           {:.4f} to {:.4f} {}", r.min_thickness, r.max_thickness,
@@ -447,6 +477,9 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
   }
   if (r.springback) {
     j["springback"] = springback_json(*r.springback);
+  }
+  if (!r.operations.empty()) {
+    j["operations"] = operations_json(r);
   }
   std::ofstream out(file);
   if (!out) {

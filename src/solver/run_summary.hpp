@@ -8,6 +8,7 @@
 
 #include "implicit/static_step.hpp"
 #include "model/model.hpp"
+#include "results/results_writer.hpp"
 #include "solver/group_history.hpp"
 #include "solver/reactions.hpp"
 #include "solver/solution_state.hpp"
@@ -100,6 +101,8 @@ struct RunSummary {
   std::string units = "mm-s-tonne-N-MPa";          ///< the case's unit system
   std::optional<ImplicitStepSummary> static_step;  ///< a static analysis
   std::optional<SpringbackSummary> springback;     ///< after an explicit forming run
+  /// The press line's operations as run ([[operations]]; empty for a case without them)
+  std::vector<OperationRecord> operations;
 };
 
 /// The summary of the state at the end of a run; the reactions (per constraint entry and summed

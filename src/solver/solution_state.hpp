@@ -34,6 +34,20 @@ struct ToolState {
   /// Held where it is for the rest of the run (springback by dynamic relaxation): its travel and
   /// displacement stay, its speed is 0, a force-controlled tool no longer follows its force.
   bool held = false;
+  /// Where its motion in effect starts (model/operation_plan.hpp); the case's own from time 0
+  /// unless an operation gave it another or restarted it.
+  ToolMotionOrigin origin;
+};
+
+/// Which operation of the press line the run is in (a case without [[operations]]: 0 always).
+struct OperationState {
+  int index = 0;
+  double start_time = 0.0;  ///< s
+  long start_cycle = 0;
+  /// s, when a stroke or time end is reached (found at the operation's start); otherwise the
+  /// latest it may end, past which the run stops with an error
+  double end_time = 0.0;
+  double peak_kinetic = 0.0;  ///< N mm, the largest kinetic energy in the operation so far
 };
 
 struct SolutionState {
@@ -93,6 +107,7 @@ struct SolutionState {
   std::vector<NodalLoad> released_loads;
   Energies energies;
   double peak_kinetic_ratio = 0.0;  ///< after the first tenth of the run
+  OperationState operation;         ///< the operation of the press line the run is in
   PhaseTimes times;                 ///< wall time per phase of the steps
 };
 

@@ -90,6 +90,18 @@ inline constexpr StateField contact_spring_energy{
 inline constexpr StateField peak_kinetic_ratio{
     "peak_kinetic_ratio", run, "-", kCheckpoint, none, "largest kinetic / internal energy so far"};
 
+// The operation of the press line the run is in (a restart goes on inside it).
+inline constexpr StateField operation_index{"operation/index", run,  "-",
+                                            kCheckpoint,       none, "the operation (0, 1, ...)"};
+inline constexpr StateField operation_start_time{
+    "operation/start_time", run, "s", kCheckpoint, none, "when the operation started"};
+inline constexpr StateField operation_start_cycle{
+    "operation/start_cycle", run, "-", kCheckpoint, none, "the cycle it started at"};
+inline constexpr StateField operation_end_time{
+    "operation/end_time", run, "s", kCheckpoint, none, "its stroke or time end, or its latest"};
+inline constexpr StateField operation_peak_kinetic{
+    "operation/peak_kinetic", run, "N mm", kCheckpoint, none, "largest kinetic energy in it"};
+
 // The blank's nodes.
 inline constexpr StateField x{"x", node, "mm", kShown, interpolate, "coordinates"};
 inline constexpr StateField v{
@@ -210,6 +222,16 @@ inline constexpr StateField tool_previous_displacement{
     "previous_displacement", tool, "mm", kHandedOn, none, "displacement a step ago"};
 inline constexpr StateField tool_previous_force{"previous_force", tool, "N",
                                                 kHandedOn,        none, "force a step ago"};
+// Where the tool's motion in effect starts; the next case's tools follow its own motions.
+inline constexpr StateField tool_origin_operation{
+    "origin_operation", tool, "-",
+    kCheckpoint,        none, "the operation whose motion it follows (-1: the case's)"};
+inline constexpr StateField tool_origin_start{
+    "origin_start", tool, "s", kCheckpoint, none, "the time its motion counts from"};
+inline constexpr StateField tool_origin_travel{
+    "origin_travel", tool, "mm", kCheckpoint, none, "the travel its motion adds to"};
+inline constexpr StateField tool_origin_displacement{
+    "origin_displacement", tool, "mm", kCheckpoint, none, "the displacement it adds to"};
 
 // The contact pairs' history. The stick forces are handed on with their pair's tool (a pair of
 // the next case with a tool of that name takes them); the distance bounds are only a shortcut
@@ -257,6 +279,12 @@ void visit_state_fields(Visitor& v, State& s) {
   v(f::element_dt_cycle, "element_dt_cycle", s.element_dt_cycle);
   v(f::contact_spring_energy, "contact_spring_energy", s.contact_spring_energy);
   v(f::peak_kinetic_ratio, "peak_kinetic_ratio", s.peak_kinetic_ratio);
+  v(f::operation_index, std::string(f::operation_index.name), s.operation.index);
+  v(f::operation_start_time, std::string(f::operation_start_time.name), s.operation.start_time);
+  v(f::operation_start_cycle, std::string(f::operation_start_cycle.name), s.operation.start_cycle);
+  v(f::operation_end_time, std::string(f::operation_end_time.name), s.operation.end_time);
+  v(f::operation_peak_kinetic, std::string(f::operation_peak_kinetic.name),
+    s.operation.peak_kinetic);
   for (const auto& [field, value] : {std::pair{&f::x, &s.x},
                                      {&f::v, &s.v},
                                      {&f::omega, &s.omega},
@@ -330,6 +358,13 @@ void visit_state_fields(Visitor& v, State& s) {
       v(f::tool_previous_displacement, p + "previous_displacement" + k,
         tool.previous_displacement[c]);
       v(f::tool_previous_force, p + "previous_force" + k, tool.previous_force[c]);
+    }
+    v(f::tool_origin_operation, p + "origin_operation", tool.origin.operation);
+    v(f::tool_origin_start, p + "origin_start", tool.origin.start);
+    v(f::tool_origin_travel, p + "origin_travel", tool.origin.travel);
+    for (int c = 0; c < 3; ++c) {
+      v(f::tool_origin_displacement, p + "origin_displacement" + std::to_string(c),
+        tool.origin.displacement[c]);
     }
   }
   for (std::size_t c = 0; c < s.contacts.size(); ++c) {

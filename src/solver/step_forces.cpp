@@ -143,6 +143,11 @@ void compute_contact_forces(const Model& model, SolutionState& s, double dt) {
   for (std::size_t k = 0; k < pairs; ++k) {
     const ContactInterface& c = model.contacts[k];
     const ToolState& tool = s.tools[static_cast<std::size_t>(c.tool)];
+    if (tool.held) {  // out of play: an operation leaves it out (or springback holds it)
+      size_contact_state(c.pair, s.contacts[k], static_cast<int>(s.x.cols()));
+      std::fill_n(sums.data() + kContactSums * k, kContactSums, ExactSum());
+      continue;
+    }
     // s.v is the mid-step velocity of the step dt just taken (dt = 0 on the first call).
     const Vec3 tool_step =
         dt > 0.0 ? Vec3(tool.displacement - tool.previous_displacement) : Vec3::Zero();

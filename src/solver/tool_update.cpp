@@ -1,5 +1,7 @@
 #include "solver/tool_update.hpp"
 
+#include "model/operation_plan.hpp"
+
 namespace sf {
 
 // A force-controlled tool's travel at t(n+1) is found in the same cycle as the blank's positions,
@@ -17,8 +19,9 @@ void move_tools(const Model& model, SolutionState& s, double time_before, double
       driven->step(time_before, tool.force, weight, dt, tool.velocity, tool.travel);
       tool.displacement = tool.travel * driven->direction();
     } else {
-      tool.travel = model.tools[t].motion.travel(s.time);
-      tool.displacement = model.tools[t].motion.displacement(s.time);
+      const int index = static_cast<int>(t);
+      tool.travel = travel_in_effect(model, index, tool.origin, s.time);
+      tool.displacement = displacement_in_effect(model, index, tool.origin, s.time);
     }
   }
 }

@@ -76,6 +76,36 @@ TEST(ForceControlledTool, OnASpringItIsExactlyCentralDifference) {
   }
 }
 
+// A gas spring (force_of = "travel"): the force F(s) = F0 - k s of the tool's own travel, no
+// blank. The scheme is the same central difference as on the blank's spring above, with the
+// force taken at the travel s(n) of the step: s(n) = s_eq (1 - cos(n theta)), s_eq = F0 / k,
+// cos(theta) = 1 - (w dt)^2 / 2, w^2 = k / M; 1e-11 of s_eq over 2000 steps. The curve runs to
+// s = 2 s_eq, past the largest travel, so F stays linear. stiffness() is the slope, k.
+TEST(ForceControlledTool, AForceOfTheTravelIsASpring) {
+  const double f0 = 1000.0, mass = 1e-5, k = 2e6;  // N, tonne, N/mm
+  const double s_eq = f0 / k;
+  const sf::ForceControlledTool tool(sf::Vec3(0.0, 0.0, -1.0),
+                                     sf::LoadCurve({0.0, 2.0 * s_eq}, {f0, f0 - 2.0 * s_eq * k}),
+                                     mass, 0.0, true);
+  EXPECT_TRUE(tool.of_travel());
+  EXPECT_DOUBLE_EQ(tool.stiffness(), k);
+  EXPECT_DOUBLE_EQ(tool.applied_force(123.0, 0.5 * s_eq), 0.5 * f0);  // the time plays no part
+  const double w_dt = 0.7;
+  const double dt = w_dt / std::sqrt(k / mass);
+  const double theta = std::acos(1.0 - 0.5 * w_dt * w_dt);
+  double velocity = 0.0, travel = 0.0, worst = 0.0;
+  for (int n = 0; n < 2000; ++n) {
+    tool.step(n * dt, sf::Vec3::Zero(), n == 0 ? 0.5 * dt : dt, dt, velocity, travel);
+    worst = std::max(worst, std::abs(travel - s_eq * (1.0 - std::cos((n + 1) * theta))));
+  }
+  EXPECT_LT(worst, 1e-11 * s_eq);
+  // A force of the time has no stiffness.
+  EXPECT_EQ(sf::ForceControlledTool(sf::Vec3(0.0, 0.0, -1.0), sf::LoadCurve({0.0, 1.0}, {0.0, 9.0}),
+                                    mass, 0.0)
+                .stiffness(),
+            0.0);
+}
+
 TEST(ForceControlledTool, RateHasTheForceTheReactionAndTheDamping) {
   const sf::ForceControlledTool tool(sf::Vec3(1.0, 0.0, 0.0),
                                      sf::LoadCurve({0.0, 1.0}, {0.0, 100.0}), 2.0, 3.0);

@@ -4,7 +4,8 @@
 # 2-core machine) and 2 ranks x 2 threads. The square cup (steel) on a 1.875 mm blank to 0.5 mm of
 # stroke (force-controlled holder, friction, the cached search, quads), then the same blank as
 # triangles (assumed strain, the modified search); the U-channel to 4 mm with its implicit
-# springback (on rank 0 after the gather). Then what a distributed run refuses or stops with:
+# springback (on rank 0 after the gather); a closing then a draw as two operations (issue 32) at
+# 2 ranks. Then what a distributed run refuses or stops with:
 # mass scaling (exit 2, the key named), more ranks than elements (exit 2), an energy blow-up
 # (exit 3, said once, the results readable up to the stop), and an element failure met by one
 # rank (exit 3, the serial run's message on every rank count).
@@ -51,6 +52,33 @@ run_variant triangles "$work/case_triangles/case.toml" -- "${cup[@]}" \
 grep -q '"springback"' "$work/uch-2/summary.json" || fail "U-channel at 2 ranks: no springback"
 /usr/bin/python3 "$src/scripts/compare_results.py" "$work/uch-serial" "$work/uch-2" ||
   fail "U-channel at 2 ranks: not the serial bits"
+
+# The press line over ranks (issue 32, item 8): a closing with the punch out of play, ended by the
+# holder's push, then the draw; 2 ranks give the serial bits, and the operations' records agree.
+close='{name="close", kind="closing", tools=["holder", "die"], end="force", tool="holder", '
+close+='force=4000.0, time=0.002}'
+ops=(--set control.stroke=0 --set blank.element_size=1.875
+     --set "operations=[$close, {name=\"draw\", kind=\"forming\", stroke=0.4}]")
+"$sheetform" run "$work/case/case.toml" -q -o "$work/ops-serial" "${ops[@]}" \
+  > "$work/ops-serial.log" 2>&1 || { fail "operations serial:"; tail -5 "$work/ops-serial.log"; }
+"$mpiexec" -np 2 --bind-to none "$sheetform" run "$work/case/case.toml" -q -o "$work/ops-2" \
+  "${ops[@]}" > "$work/ops-2.log" 2>&1 || { fail "operations at 2 ranks:"; tail -5 "$work/ops-2.log"; }
+/usr/bin/python3 "$src/scripts/compare_results.py" "$work/ops-serial" "$work/ops-2" ||
+  fail "operations at 2 ranks: not the serial bits"
+/usr/bin/python3 - "$work/ops-serial" "$work/ops-2" <<'PY' || fail "operations at 2 ranks: the records or formed parts differ"
+import sys, h5py, numpy as np
+a, b = sys.argv[1], sys.argv[2]
+with h5py.File(a + "/results.h5") as fa, h5py.File(b + "/results.h5") as fb:
+    for k in ("0", "1"):
+        for name in ("name", "end_time", "end_cycle", "last_frame"):
+            assert fa["operations"][k].attrs[name] == fb["operations"][k].attrs[name], (k, name)
+for part in ("formed_part.close.h5", "formed_part.h5"):
+    with h5py.File(a + "/" + part) as fa, h5py.File(b + "/" + part) as fb:
+        keys = []
+        fa["state"].visit(lambda n: keys.append(n) if isinstance(fa["state"][n], h5py.Dataset) else None)
+        for k in keys:
+            assert fa["state"][k][()].tobytes() == fb["state"][k][()].tobytes(), (part, k)
+PY
 
 # Refused: mass scaling, more ranks than elements (exit 2, a message naming the cause, once).
 "$mpiexec" -np 2 "$sheetform" run "$work/case/case.toml" --stroke 0.1 -q -o "$work/ms" \

@@ -17,6 +17,7 @@
 #include "solver/formed_part.hpp"
 #include "solver/initial_state.hpp"
 #include "solver/state_fields.hpp"
+#include "support/state_bytes.hpp"
 
 namespace sf {
 namespace {
@@ -47,19 +48,7 @@ SolutionState run(const Model& model, const fs::path& folder) {
 
 // Every handed-on field's key and bytes.
 std::map<std::string, std::string> handed_on_bytes(const SolutionState& s) {
-  std::map<std::string, std::string> bytes;
-  auto record = [&](const StateField&, const std::string& key, const auto& value) {
-    using T = std::remove_cvref_t<decltype(value)>;
-    if constexpr (std::is_arithmetic_v<T>) {  // as the file keeps it: a double
-      const double as_double = static_cast<double>(value);
-      bytes[key] = std::string(reinterpret_cast<const char*>(&as_double), sizeof(double));
-    } else {
-      bytes[key] = std::string(reinterpret_cast<const char*>(value.data()),
-                               sizeof(double) * static_cast<std::size_t>(value.size()));
-    }
-  };
-  visit_state_fields_with(field_role::formed_part, record, s);
-  return bytes;
+  return test::state_field_bytes(s, field_role::formed_part);
 }
 
 TEST(FormedPart, ChainOfTwoCasesGivesTheBitsOfOneRun) {

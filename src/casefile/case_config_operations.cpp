@@ -1,0 +1,377 @@
+#include "casefile/case_config_operations.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <array>
+
+#include "casefile/case_fields.hpp"
+
+namespace sf {
+namespace {
+
+using Op = OperationConfig;
+using Kind = OperationConfig::Kind;
+using End = OperationConfig::End;
+
+constexpr std::array<Choice<Kind>, 4> kKinds{{
+    {Kind::gravity, "gravity",
+     "the blank settles under control.gravity onto the tools in play until at rest; first only"},
+    {Kind::closing, "closing", "a tool (the binder) closes, by its motion or its force"},
+    {Kind::forming, "forming", "tools draw the blank"},
+    {Kind::springback, "springback",
+     "the case's [springback] (its defaults when absent) on the part as it stands; last only"},
+}};
+
+constexpr std::array<Choice<End>, 6> kEnds{{
+    {End::stroke, "stroke", "`tool`'s travel since the case's start reaches `stroke`"},
+    {End::time, "time", "after `time`"},
+    {End::force, "force", "`tool`'s push against its motion reaches `force`"},
+    {End::gap, "gap", "the clearance from `tool` to `gap_to` along `tool`'s motion is `gap`"},
+    {End::rest, "rest",
+     "the kinetic energy falls below `rest` × its peak in the operation and the out-of-balance "
+     "force below √`rest` × the applied force"},
+    {End::none, "none", "springback only: it ends when it has converged"},
+}};
+
+End default_end(Kind kind) {
+  switch (kind) {
+    case Kind::gravity:
+      return End::rest;
+    case Kind::closing:
+      return End::gap;
+    case Kind::forming:
+      return End::stroke;
+    case Kind::springback:
+      break;
+  }
+  return End::none;
+}
+
+bool moves(const Op& o) {
+  return o.kind != Kind::springback;
+}
+bool ends_by(const Op& o, std::initializer_list<End> ends) {
+  return std::find(ends.begin(), ends.end(), o.end) != ends.end();
+}
+
+void read_tool_list(const TomlSection& s, Op& o, Presence) {
+  const toml::node* node = s.find("tools");
+  if (!node) {
+    return;
+  }
+  const toml::array* array = node->as_array();
+  if (!array) {
+    s.fail_value("tools", "an array of tool names");
+  }
+  o.all_tools = false;
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const auto* text = array->get(i)->as_string();
+    if (!text) {
+      s.fail_value("tools", "an array of tool names (strings)");
+    }
+    o.tools.push_back(text->get());
+  }
+}
+
+void write_tool_list(TomlWriter& w, const Op& o) {
+  if (o.all_tools) {
+    w.comment("tools: all");
+    return;
+  }
+  std::string names;
+  for (const std::string& name : o.tools) {
+    names += fmt::format("{}{}", names.empty() ? "" : ", ", quote_toml_string(name));
+  }
+  w.raw("tools", "[" + names + "]");
+}
+
+FieldTable<Op> make_operation_fields() {
+  FieldTable<Op> t;
+  t.push_back(name_field<Op>("name", &Op::name,
+                             "unique among operations, e.g. `\"OP10-draw\"`; names its results "
+                             "group and its summary entry")
+                  .required());
+  t.push_back(choice_field<Op, Kind>("kind", &Op::kind, kKinds, "").required());
+  t.push_back(custom_field<Op>({"tools",
+                                "array of strings",
+                                "all tools",
+                                {},
+                                "the tools in play: their contact acts and they move. A tool "
+                                "left out stands still where it is, out of contact"},
+                               read_tool_list, write_tool_list)
+                  .when(moves, "not for `\"springback\"`", "springback has no tools in play"));
+  Field<Op> end = choice_field<Op, End>("end", &Op::end, kEnds, "")
+                      .shown_default(
+                          "by kind: gravity `\"rest\"`, closing `\"gap\"`, forming "
+                          "`\"stroke\"`, springback `\"none\"`");
+  end.read = [](const TomlSection& s, Op& o, Presence) {
+    o.end = default_end(o.kind);
+    s.read_choice<End>("end", o.end, kEnds);
+  };
+  t.push_back(std::move(end));
+  t.push_back(string_field<Op>("tool", &Op::tool,
+                               "the tool whose travel, push or clearance ends the operation; a "
+                               "stroke's default is control.stroke_tool")
+                  .shown_default("stroke: `control.stroke_tool`; required for force and gap")
+                  .when(
+                      [](const Op& o) {
+                        return ends_by(o, {End::stroke, End::force, End::gap});
+                      },
+                      "end `\"stroke\"`, `\"force\"`, `\"gap\"`",
+                      "only a stroke, force or gap end names a tool"));
+  t.push_back(number_field<Op>("stroke", &Op::stroke, greater_than(0.0, "mm"),
+                               "`tool`'s travel counted from the case's start (not from the "
+                               "operation's)")
+                  .required()
+                  .when([](const Op& o) { return o.end == End::stroke; }, "end `\"stroke\"` only",
+                        "only a stroke end has a stroke"));
+  t.push_back(number_field<Op>("time", &Op::time, greater_than(0.0, "s"),
+                               "end `\"time\"`: the operation's duration; force, gap and rest: the "
+                               "longest it may take (the run stops with an error past it)")
+                  .required()
+                  .when([](const Op& o) { return moves(o) && o.end != End::stroke; },
+                        "not for a stroke end or springback",
+                        "a stroke end's time follows from the tool's motion"));
+  t.push_back(number_field<Op>("force", &Op::force, greater_than(0.0, "N"), "")
+                  .required()
+                  .when([](const Op& o) { return o.end == End::force; }, "end `\"force\"` only",
+                        "only a force end has a force"));
+  t.push_back(number_field<Op>("gap", &Op::gap, at_least(0.0, "mm"),
+                               "e.g. the blank's thickness: the binder has closed on it")
+                  .required()
+                  .when([](const Op& o) { return o.end == End::gap; }, "end `\"gap\"` only",
+                        "only a gap end has a gap"));
+  t.push_back(string_field<Op>("gap_to", &Op::gap_to, "the tool the gap is measured to (the die)")
+                  .required()
+                  .when([](const Op& o) { return o.end == End::gap; }, "end `\"gap\"` only",
+                        "only a gap end has a gap"));
+  t.push_back(number_field<Op>("rest", &Op::rest, interval(0.0, true, 1.0, true), "")
+                  .when([](const Op& o) { return o.end == End::rest; }, "end `\"rest\"` only",
+                        "only a rest end has a rest ratio"));
+  t.push_back(custom_field<Op>(
+                  {"damping", "float", "`control.damping`", "1/s",
+                   ">= 0, mass-proportional damping during the operation (a gravity operation "
+                   "needs some to come to rest: of the order of the blank's lowest bending "
+                   "frequency, rad/s)"},
+                  [](const TomlSection& s, Op& o, Presence) {
+                    double damping = 0.0;
+                    if (s.read_number("damping", damping, at_least(0.0, "1/s"))) {
+                      o.damping = damping;
+                    }
+                  },
+                  [](TomlWriter& w, const Op& o) {
+                    if (o.damping) {
+                      w.number("damping", *o.damping, "1/s");
+                    } else {
+                      w.comment("damping: control.damping");
+                    }
+                  })
+                  .when(moves, "not for `\"springback\"`", "springback is implicit"));
+  return t;
+}
+
+FieldTable<OperationMotionConfig> make_operation_motion_fields() {
+  using M = OperationMotionConfig;
+  FieldTable<M> t;
+  t.push_back(string_field<M>("tool", &M::tool,
+                              "a tool in play in the operation, not force-controlled; its "
+                              "motion's time counts from the operation's start and its travel "
+                              "adds to where it stands")
+                  .required());
+  for (Field<M>& f : embed_fields<M>(motion_fields(), &M::motion)) {
+    t.push_back(std::move(f));
+  }
+  return t;
+}
+
+const FieldTable<OperationMotionConfig>& operation_motion_fields_impl() {
+  static const FieldTable<OperationMotionConfig> table = make_operation_motion_fields();
+  return table;
+}
+
+const ToolConfig& named_tool(const TomlSection& s, std::string_view key, const std::string& name,
+                             const CaseConfig& config) {
+  const ToolConfig* tool = config.find_tool(name);
+  if (!tool) {
+    std::string names;
+    for (const auto& t : config.tools) {
+      names += fmt::format("{}{}", names.empty() ? "" : ", ", quote_toml_string(t.name));
+    }
+    s.fail_value(key, fmt::format("the name of a [[tools]] entry ({})",
+                                  names.empty() ? "none defined" : names));
+  }
+  return *tool;
+}
+
+bool in_play(const Op& o, const std::string& tool) {
+  return o.all_tools || std::find(o.tools.begin(), o.tools.end(), tool) != o.tools.end();
+}
+
+void check_tools(const TomlSection& s, const Op& o, const CaseConfig& config) {
+  for (std::size_t i = 0; i < o.tools.size(); ++i) {
+    named_tool(s, "tools", o.tools[i], config);
+    if (std::find(o.tools.begin(), o.tools.begin() + static_cast<std::ptrdiff_t>(i), o.tools[i]) !=
+        o.tools.begin() + static_cast<std::ptrdiff_t>(i)) {
+      s.fail_value("tools", fmt::format("distinct tool names ({} is given twice)",
+                                        quote_toml_string(o.tools[i])));
+    }
+  }
+  if (o.end == End::stroke && o.tool.empty()) {
+    return;  // control.stroke_tool, checked by read_operations
+  }
+  if (ends_by(o, {End::stroke, End::force, End::gap})) {
+    if (o.tool.empty()) {
+      s.fail_missing("tool", "the name of the tool whose push or clearance ends the operation");
+    }
+    named_tool(s, "tool", o.tool, config);
+    if (!in_play(o, o.tool)) {
+      s.fail_value("tool", "a tool in play in this operation (listed in `tools`)");
+    }
+  }
+  if (o.end == End::gap) {
+    named_tool(s, "gap_to", o.gap_to, config);
+    if (o.gap_to == o.tool) {
+      s.fail_value("gap_to", "another tool than `tool`");
+    }
+  }
+}
+
+void read_motions(const TomlSection& s, const CaseConfig& config, Op& o) {
+  for (const TomlSection& m : s.table_array("motion")) {
+    OperationMotionConfig motion;
+    read_table(m, operation_motion_fields_impl(), motion);
+    const ToolConfig& tool = named_tool(m, "tool", motion.tool, config);
+    if (!in_play(o, motion.tool)) {
+      m.fail_value("tool", "a tool in play in this operation (listed in the operation's `tools`)");
+    }
+    if (tool.motion.type == MotionConfig::Type::force ||
+        motion.motion.type == MotionConfig::Type::force) {
+      m.fail_value("type",
+                   "a prescribed motion (\"velocity\", \"displacement\" or \"fixed\") of a tool "
+                   "that is not force-controlled: a force-controlled tool keeps its force in "
+                   "every operation");
+    }
+    for (const auto& other : o.motions) {
+      if (other.tool == motion.tool) {
+        m.fail_value("tool", "a tool whose motion this operation has not redefined already");
+      }
+    }
+    o.motions.push_back(std::move(motion));
+  }
+}
+
+// A stroke end needs a tool with a prescribed motion (its own or the operation's).
+void check_stroke_tool(const TomlSection& s, const Op& o, const CaseConfig& config) {
+  if (o.end != End::stroke) {
+    return;
+  }
+  const bool redefined = std::any_of(o.motions.begin(), o.motions.end(),
+                                     [&](const auto& m) { return m.tool == o.tool; });
+  if (!redefined && config.find_tool(o.tool)->motion.type == MotionConfig::Type::force) {
+    s.fail_at(s.has("tool") ? *s.find("tool") : s.table(), s.key_path("tool"),
+              fmt::format("tool {} is force-controlled: its travel follows from the force, so it "
+                          "cannot give a stroke end; expected a tool with a prescribed motion",
+                          quote_toml_string(o.tool)));
+  }
+}
+
+void check_sequence(const TomlSection& top, const std::vector<TomlSection>& sections,
+                    const CaseConfig& config) {
+  const auto& ops = config.operations;
+  for (std::size_t i = 0; i < ops.size(); ++i) {
+    const TomlSection& s = sections[i];
+    for (std::size_t j = 0; j < i; ++j) {
+      if (ops[j].name == ops[i].name) {
+        s.fail_value("name", fmt::format("a name not used by operations[{}]", j));
+      }
+    }
+    if (ops[i].kind == Kind::springback && i + 1 != ops.size()) {
+      s.fail_value("kind",
+                   "\"springback\" only for the last operation (a trimmed part's "
+                   "springback comes with trimming, docs/process-chain.md)");
+    }
+    if (ops[i].kind == Kind::gravity && i != 0) {
+      s.fail_value("kind",
+                   "\"gravity\" only for the first operation (gravity then acts in "
+                   "every operation after it)");
+    }
+    if (ops[i].kind == Kind::gravity &&
+        config.control.gravity == std::array<double, 3>{0.0, 0.0, 0.0}) {
+      s.fail_value("kind",
+                   "\"gravity\" with control.gravity set, e.g. gravity = [0, 0, -9810] "
+                   "(mm/s^2)");
+    }
+  }
+  if (ops.size() == 1 && ops[0].kind == Kind::springback) {
+    sections[0].fail_value("kind", "a springback after an operation that forms the blank");
+  }
+  if (config.springback && ops.back().kind != Kind::springback) {
+    top.fail_at(top.table(), "springback",
+                "[springback] with [[operations]] sets up a springback operation: expected the "
+                "last operation to be of kind \"springback\"");
+  }
+  if (config.control.end_time > 0.0 || config.control.stroke > 0.0) {
+    top.fail_at(top.table(), "control",
+                "control.end_time and control.stroke are for a case without [[operations]]: "
+                "each operation gives its own end (and --stroke, --end-time do not apply)");
+  }
+}
+
+}  // namespace
+
+const FieldTable<OperationConfig>& operation_fields() {
+  static const FieldTable<OperationConfig> table = make_operation_fields();
+  return table;
+}
+
+const FieldTable<OperationMotionConfig>& operation_motion_fields() {
+  return operation_motion_fields_impl();
+}
+
+void read_operations(const TomlSection& top, CaseConfig& config) {
+  const std::vector<TomlSection> sections = top.table_array("operations");
+  for (const TomlSection& s : sections) {
+    Op o;
+    read_table(s, operation_fields(), o, {"motion"});
+    check_tools(s, o, config);
+    if (o.end == End::stroke && o.tool.empty()) {
+      o.tool = config.control.stroke_tool;
+      if (o.tool.empty()) {
+        s.fail_missing("tool",
+                       "the tool whose travel is the stroke (no tool has a prescribed "
+                       "motion to be control.stroke_tool)");
+      }
+    }
+    if (o.kind == Kind::springback && o.end != End::none) {
+      s.fail_value("end", "\"none\" for a springback (it ends when it has converged)");
+    }
+    if (o.kind != Kind::springback && o.end == End::none) {
+      s.fail_value("end",
+                   "an end for an operation that moves tools (stroke, time, force, gap "
+                   "or rest)");
+    }
+    if (o.kind == Kind::springback && s.has("motion")) {
+      s.fail_forbidden("motion", "springback has no tools in play");
+    }
+    read_motions(s, config, o);
+    check_stroke_tool(s, o, config);
+    config.operations.push_back(std::move(o));
+  }
+  if (!sections.empty()) {
+    check_sequence(top, sections, config);
+  }
+}
+
+void write_operations(TomlWriter& w, const CaseConfig& config) {
+  for (const Op& o : config.operations) {
+    w.array_header("operations");
+    write_fields(operation_fields(), w, o);
+    for (const auto& m : o.motions) {
+      w.array_header("operations.motion");
+      write_fields(operation_motion_fields(), w, m);
+    }
+  }
+}
+
+}  // namespace sf

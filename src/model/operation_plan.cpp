@@ -1,0 +1,204 @@
+#include "model/operation_plan.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/errors.hpp"
+#include "model/tool_clearance.hpp"
+
+namespace sf {
+namespace {
+
+using End = OperationConfig::End;
+using Kind = OperationConfig::Kind;
+
+int tool_index(const Model& model, const std::string& name) {
+  for (std::size_t t = 0; t < model.tools.size(); ++t) {
+    if (model.tools[t].name == name) {
+      return static_cast<int>(t);
+    }
+  }
+  return -1;
+}
+
+Operation make_operation(const CaseConfig& config, const Model& model, std::size_t k) {
+  const OperationConfig& c = config.operations[k];
+  Operation op;
+  op.name = c.name;
+  op.entry = fmt::format("operations[{}] ('{}')", k, c.name);
+  op.kind = c.kind;
+  op.end = c.end;
+  const std::size_t n = model.tools.size();
+  op.in_play.assign(n, c.kind == Kind::springback ? 0 : (c.all_tools ? 1 : 0));
+  for (const std::string& name : c.tools) {
+    op.in_play[static_cast<std::size_t>(tool_index(model, name))] = 1;
+  }
+  op.motions.resize(n);
+  for (const OperationMotionConfig& m : c.motions) {
+    op.motions[static_cast<std::size_t>(tool_index(model, m.tool))] = RigidToolMotion(m.motion);
+  }
+  op.tool = c.tool.empty() ? -1 : tool_index(model, c.tool);
+  op.gap_to = c.gap_to.empty() ? -1 : tool_index(model, c.gap_to);
+  op.stroke = c.stroke;
+  op.time = c.time;
+  op.force = c.force;
+  op.gap = c.gap;
+  op.rest = c.rest;
+  op.damping = c.damping.value_or(config.control.damping);
+  return op;
+}
+
+void set_reference_clearance(const CaseConfig& config, const Model& model, Operation& op) {
+  const Tool& tool = model.tools[static_cast<std::size_t>(op.tool)];
+  const Tool& other = model.tools[static_cast<std::size_t>(op.gap_to)];
+  const std::optional<double> clearance =
+      clearance_along(tool.surface, other.surface, tool.direction());
+  if (!clearance) {
+    const Vec3& d = tool.direction();
+    throw InputError(fmt::format(
+        "{}: {}.gap_to: tool '{}' never meets tool '{}' moving along its direction ({:g}, {:g}, "
+        "{:g}) from their positions in the meshes: expected a tool beneath it",
+        config.file.string(), op.entry, other.name, tool.name, d.x(), d.y(), d.z()));
+  }
+  op.reference_clearance = *clearance;
+}
+
+// The planned end of operation k starting at t0, its stroke tool's origin `origin`.
+double planned_end(const CaseConfig& config, const Model& model, const Operation& op,
+                   const ToolMotionOrigin& origin, double t0) {
+  if (op.end == End::time) {
+    return t0 + op.time;
+  }
+  if (op.end != End::stroke) {
+    return t0 + op.time;  // the longest it may take
+  }
+  const double travel_now = travel_in_effect(model, op.tool, origin, t0);
+  const std::optional<double> end = stroke_end_time(model, op, origin);
+  if (op.stroke <= travel_now || !end || !(*end > t0)) {
+    throw InputError(fmt::format(
+        "{}: {}.stroke = {} mm: tool '{}' stands at a travel of {:.6g} mm when the operation "
+        "starts (at t = {:.6g} s as planned) and its motion {} (the stroke counts from the "
+        "case's start)",
+        config.file.string(), op.entry, op.stroke,
+        model.tools[static_cast<std::size_t>(op.tool)].name, travel_now, t0,
+        end ? "has passed that travel already" : "never reaches it"));
+  }
+  return *end;
+}
+
+}  // namespace
+
+const RigidToolMotion& motion_in_effect(const Model& model, int tool,
+                                        const ToolMotionOrigin& origin) {
+  const auto t = static_cast<std::size_t>(tool);
+  if (origin.operation >= 0) {
+    return *model.operations[static_cast<std::size_t>(origin.operation)].motions[t];
+  }
+  return model.tools[t].motion;
+}
+
+// The case's motion from time 0 is taken as it is (no origin added), so that a case without
+// operations keeps its bits (0.0 + -0.0 would be +0.0).
+double travel_in_effect(const Model& model, int tool, const ToolMotionOrigin& origin, double t) {
+  const RigidToolMotion& motion = motion_in_effect(model, tool, origin);
+  if (origin.operation < 0 && origin.start == 0.0) {
+    return motion.travel(t);
+  }
+  return origin.travel + motion.travel(t - origin.start);
+}
+
+Vec3 displacement_in_effect(const Model& model, int tool, const ToolMotionOrigin& origin,
+                            double t) {
+  const RigidToolMotion& motion = motion_in_effect(model, tool, origin);
+  if (origin.operation < 0 && origin.start == 0.0) {
+    return motion.displacement(t);
+  }
+  return origin.displacement + motion.displacement(t - origin.start);
+}
+
+double speed_in_effect(const Model& model, int tool, const ToolMotionOrigin& origin, double t) {
+  return motion_in_effect(model, tool, origin).speed(t - origin.start);
+}
+
+std::optional<double> stroke_end_time(const Model& model, const Operation& op,
+                                      const ToolMotionOrigin& origin) {
+  const RigidToolMotion& motion = motion_in_effect(model, op.tool, origin);
+  const bool from_start = origin.operation < 0 && origin.start == 0.0;
+  const std::optional<double> since =
+      motion.time_at_travel(from_start ? op.stroke : op.stroke - origin.travel);
+  if (!since) {
+    return std::nullopt;
+  }
+  return from_start ? *since : origin.start + *since;
+}
+
+ToolMotionOrigin origin_at_start(const Model& model, int k, int tool,
+                                 const ToolMotionOrigin& before, bool moved, double t0,
+                                 double travel, const Vec3& displacement) {
+  const Operation& op = model.operations[static_cast<std::size_t>(k)];
+  if (op.motions[static_cast<std::size_t>(tool)]) {
+    return {k, t0, travel, displacement};
+  }
+  if (moved) {
+    return before;
+  }
+  return {-1, t0, travel, displacement};
+}
+
+void build_operations(const CaseConfig& config, Model& model) {
+  if (config.operations.empty()) {
+    return;
+  }
+  const std::size_t n = model.tools.size();
+  for (std::size_t k = 0; k < config.operations.size(); ++k) {
+    model.operations.push_back(make_operation(config, model, k));
+    Operation& op = model.operations.back();
+    if (op.end == End::gap) {
+      set_reference_clearance(config, model, op);
+    }
+  }
+  // The plan: each operation starts where the one before ends as planned; the tools with a
+  // prescribed motion follow the rule of operation_plan.hpp.
+  std::vector<ToolMotionOrigin> origin(n);
+  std::vector<unsigned char> moved(n, 0);
+  std::vector<double> travel(n, 0.0);  // where each tool stands at an operation's start
+  std::vector<Vec3> displacement(n, Vec3::Zero());
+  double t = 0.0;
+  for (std::size_t k = 0; k < model.operations.size(); ++k) {
+    Operation& op = model.operations[k];
+    if (op.kind == Kind::springback) {
+      op.planned_end = t;
+      break;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      const int ti = static_cast<int>(i);
+      if (model.tools[i].force_control) {
+        continue;
+      }
+      if (moved[i] || k == 0) {
+        travel[i] = travel_in_effect(model, ti, origin[i], t);
+        displacement[i] = displacement_in_effect(model, ti, origin[i], t);
+      }
+      if (op.in_play[i] && (k > 0 || op.motions[i])) {
+        origin[i] = origin_at_start(model, static_cast<int>(k), ti, origin[i], moved[i] != 0, t,
+                                    travel[i], displacement[i]);
+      }
+    }
+    const ToolMotionOrigin stroke_origin =
+        op.tool >= 0 ? origin[static_cast<std::size_t>(op.tool)] : ToolMotionOrigin{};
+    op.planned_end = planned_end(config, model, op, stroke_origin, t);
+    for (std::size_t i = 0; i < n; ++i) {
+      moved[i] = op.in_play[i];
+    }
+    t = op.planned_end;
+  }
+  model.time.end_time = t;
+  if (!config.operations.empty() && config.operations.back().kind == Kind::springback &&
+      !model.springback) {
+    model.springback = SpringbackConfig{};  // the case's [springback] defaults
+  }
+}
+
+}  // namespace sf
