@@ -363,6 +363,10 @@ void read_operations(const TomlSection& top, CaseConfig& config) {
   }
 }
 
+std::string_view operation_kind_name(OperationConfig::Kind kind) {
+  return choice_name<Kind>(kKinds, kind);
+}
+
 void write_operations(TomlWriter& w, const CaseConfig& config) {
   for (const Op& o : config.operations) {
     w.array_header("operations");

@@ -66,26 +66,15 @@ void set_reference_clearance(const CaseConfig& config, const Model& model, Opera
 }
 
 // The planned end of operation k starting at t0, its stroke tool's origin `origin`.
-double planned_end(const CaseConfig& config, const Model& model, const Operation& op,
-                   const ToolMotionOrigin& origin, double t0) {
+double planned_end(const Model& model, const Operation& op, const ToolMotionOrigin& origin,
+                   double t0) {
   if (op.end == End::time) {
     return t0 + op.time;
   }
   if (op.end != End::stroke) {
     return t0 + op.time;  // the longest it may take
   }
-  const double travel_now = travel_in_effect(model, op.tool, origin, t0);
-  const std::optional<double> end = stroke_end_time(model, op, origin);
-  if (op.stroke <= travel_now || !end || !(*end > t0)) {
-    throw InputError(fmt::format(
-        "{}: {}.stroke = {} mm: tool '{}' stands at a travel of {:.6g} mm when the operation "
-        "starts (at t = {:.6g} s as planned) and its motion {} (the stroke counts from the "
-        "case's start)",
-        config.file.string(), op.entry, op.stroke,
-        model.tools[static_cast<std::size_t>(op.tool)].name, travel_now, t0,
-        end ? "has passed that travel already" : "never reaches it"));
-  }
-  return *end;
+  return checked_stroke_end(model, op, origin, t0, travel_in_effect(model, op.tool, origin, t0));
 }
 
 }  // namespace
@@ -132,6 +121,20 @@ std::optional<double> stroke_end_time(const Model& model, const Operation& op,
     return std::nullopt;
   }
   return from_start ? *since : origin.start + *since;
+}
+
+double checked_stroke_end(const Model& model, const Operation& op, const ToolMotionOrigin& origin,
+                          double t0, double travel_now) {
+  const std::optional<double> end = stroke_end_time(model, op, origin);
+  if (op.stroke <= travel_now || !end || !(*end > t0)) {
+    throw InputError(fmt::format(
+        "{}: {}.stroke = {} mm: tool '{}' stands at a travel of {:.6g} mm when the operation "
+        "starts (t = {:.6g} s) and its motion {} (the stroke counts from the case's start)",
+        model.case_file.string(), op.entry, op.stroke,
+        model.tools[static_cast<std::size_t>(op.tool)].name, travel_now, t0,
+        end ? "has passed that travel already" : "never reaches it"));
+  }
+  return *end;
 }
 
 ToolMotionOrigin origin_at_start(const Model& model, int k, int tool,
@@ -188,7 +191,7 @@ void build_operations(const CaseConfig& config, Model& model) {
     }
     const ToolMotionOrigin stroke_origin =
         op.tool >= 0 ? origin[static_cast<std::size_t>(op.tool)] : ToolMotionOrigin{};
-    op.planned_end = planned_end(config, model, op, stroke_origin, t);
+    op.planned_end = planned_end(model, op, stroke_origin, t);
     for (std::size_t i = 0; i < n; ++i) {
       moved[i] = op.in_play[i];
     }

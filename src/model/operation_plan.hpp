@@ -32,6 +32,11 @@ double speed_in_effect(const Model& model, int tool, const ToolMotionOrigin& ori
 std::optional<double> stroke_end_time(const Model& model, const Operation& op,
                                       const ToolMotionOrigin& origin);
 
+/// s, stroke_end_time, or InputError naming the operation when the tool, at `travel_now` (mm) at
+/// the operation's start t0 (s), has passed the stroke already or never reaches it.
+double checked_stroke_end(const Model& model, const Operation& op, const ToolMotionOrigin& origin,
+                          double t0, double travel_now);
+
 /// The origin of tool `tool`'s motion in operation `k` starting at time t0 (s), the tool then at
 /// `travel` (mm) and `displacement` (mm), its origin before `before`, `moved`: whether it moved
 /// in the operation before (in play there). Meaningless for a tool not in play in k.

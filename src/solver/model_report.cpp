@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "casefile/case_config_operations.hpp"
 #include "core/log.hpp"
 #include "material/anisotropy_fit.hpp"
 #include "model/constraint_assembly.hpp"
@@ -22,7 +23,6 @@ void report_operations(const Model& model, const UnitSystem& units) {
   const auto tool_name = [&](int t) { return model.tools[static_cast<std::size_t>(t)].name; };
   for (std::size_t k = 0; k < model.operations.size(); ++k) {
     const Operation& op = model.operations[k];
-    static constexpr const char* kinds[] = {"gravity", "closing", "forming", "springback"};
     std::string in_play;
     std::string redefined;
     for (std::size_t t = 0; t < model.tools.size(); ++t) {
@@ -63,7 +63,7 @@ void report_operations(const Model& model, const UnitSystem& units) {
         break;
     }
     log_info("Operation   {}/{} '{}' ({}): tools in play: {}{}; damping {:g} 1/{}; ends by {}\n",
-             k + 1, model.operations.size(), op.name, kinds[static_cast<int>(op.kind)],
+             k + 1, model.operations.size(), op.name, operation_kind_name(op.kind),
              in_play.empty() ? "none" : in_play,
              redefined.empty() ? std::string() : fmt::format(" (motions given: {})", redefined),
              op.damping, units.time, end);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "casefile/case_config_operations.hpp"
 #include "core/errors.hpp"
 #include "core/exact_sum.hpp"
 #include "model/operation_plan.hpp"
@@ -16,20 +17,6 @@ namespace {
 
 using End = OperationConfig::End;
 using Kind = OperationConfig::Kind;
-
-const char* kind_name(Kind kind) {
-  switch (kind) {
-    case Kind::gravity:
-      return "gravity";
-    case Kind::closing:
-      return "closing";
-    case Kind::forming:
-      return "forming";
-    case Kind::springback:
-      return "springback";
-  }
-  return "forming";
-}
 
 // The contact pairs with tool t start afresh: no stick forces, and a full search first.
 void reset_pairs_of(const Model& model, std::size_t t, SolutionState& s) {
@@ -59,7 +46,8 @@ std::string OperationSequence::name(int k) const {
 
 std::string OperationSequence::kind(int k) const {
   return model_.operations.empty() ? "forming"
-                                   : kind_name(model_.operations[static_cast<std::size_t>(k)].kind);
+                                   : std::string(operation_kind_name(
+                                         model_.operations[static_cast<std::size_t>(k)].kind));
 }
 
 void OperationSequence::hold(std::size_t t, SolutionState& s) const {
@@ -106,16 +94,7 @@ void OperationSequence::begin(int k, SolutionState& s) const {
   }
   if (op.end == End::stroke) {
     const ToolState& tool = s.tools[static_cast<std::size_t>(op.tool)];
-    const std::optional<double> end = stroke_end_time(model_, op, tool.origin);
-    if (!end || !(*end > s.time)) {
-      throw InputError(fmt::format(
-          "{}: {}.stroke = {} mm: tool '{}' stands at a travel of {:.6g} mm when the operation "
-          "starts (t = {:.6g} s) and its motion {} (the stroke counts from the case's start)",
-          model_.case_file.string(), op.entry, op.stroke,
-          model_.tools[static_cast<std::size_t>(op.tool)].name, tool.travel, s.time,
-          end ? "has passed that travel already" : "never reaches it"));
-    }
-    s.operation.end_time = *end;
+    s.operation.end_time = checked_stroke_end(model_, op, tool.origin, s.time, tool.travel);
   } else {
     s.operation.end_time = s.time + op.time;
   }
