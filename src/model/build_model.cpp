@@ -148,15 +148,33 @@ GmshModel load_mesh_source(const CaseConfig& config, const MeshSourceConfig& mes
   }
 }
 
-void read_blank(const CaseConfig& config, Model& model) {
+// A node group of the blank: a physical group of its mesh file, or of the given mesh.
+NodeGroup blank_group(const GmshModel* gmsh_model, const BlankMesh* given, const PartMesh& mesh,
+                      const std::string& name) {
+  if (!given) {
+    return extract_node_group(*gmsh_model, mesh, name);
+  }
+  for (const NodeGroup& g : given->groups) {
+    if (g.name == name) {
+      return g;
+    }
+  }
+  throw InputError(fmt::format("no node group '{}' in {}", name, given->source));
+}
+
+void read_blank(const CaseConfig& config, Model& model, const BlankMesh* given) {
   const BlankConfig& bc = config.blank;
   // "quad": a .geo is meshed with every surface recombined (quads wherever gmsh can make them);
   // "as_meshed": the .geo's own Recombine commands decide. Either way the blank takes quads,
   // triangles or both (a .msh is read as it is).
-  const GmshModel gmsh_model =
-      load_mesh_source(config, bc.mesh, "blank", bc.element == BlankMeshing::quad);
+  std::optional<GmshModel> gmsh_model;
   Blank& blank = model.blank;
-  blank.mesh = extract_part_mesh(gmsh_model, bc.mesh.group, "blank");
+  if (given) {
+    blank.mesh = given->mesh;
+  } else {
+    gmsh_model = load_mesh_source(config, bc.mesh, "blank", bc.element == BlankMeshing::quad);
+    blank.mesh = extract_part_mesh(*gmsh_model, bc.mesh.group, "blank");
+  }
   if (blank.mesh.quads.cols() + blank.mesh.triangles.cols() == 0) {
     throw InputError(fmt::format("{}: group '{}' holds no quadrilaterals or triangles",
                                  bc.mesh.file.string(), bc.mesh.group));
@@ -173,7 +191,11 @@ void read_blank(const CaseConfig& config, Model& model) {
   for (std::size_t i = 0; i < config.node_groups.size(); ++i) {
     const NodeGroupConfig& g = config.node_groups[i];
     const std::string where = fmt::format("{}: node_group[{}]", at_line(g.line), i);
-    if (gmsh_model.find_group(g.name) != nullptr) {
+    const bool also_in_mesh =
+        given ? std::any_of(given->groups.begin(), given->groups.end(),
+                            [&](const NodeGroup& h) { return h.name == g.name; })
+              : gmsh_model->find_group(g.name) != nullptr;
+    if (also_in_mesh) {
       throw InputError(fmt::format(
           "{}.name: '{}' is also a physical group of '{}'; give the node group another name", where,
           g.name, bc.mesh.file.string()));
@@ -222,7 +244,8 @@ void read_blank(const CaseConfig& config, Model& model) {
                                   [&](const NodeGroup& g) { return g.name == wanted; });
     if (!seen) {
       try {
-        blank.groups.push_back(extract_node_group(gmsh_model, blank.mesh, name));
+        blank.groups.push_back(
+            blank_group(gmsh_model ? &*gmsh_model : nullptr, given, blank.mesh, name));
       } catch (const InputError& error) {
         std::string own;  // the case's [[node_group]] names, which a typo may have meant
         for (const NodeGroupConfig& g : config.node_groups) {
@@ -677,10 +700,10 @@ CaseConfig resolve_case(const CaseConfig& config, const Model& model) {
   return resolved;
 }
 
-Model build_model(const CaseConfig& config) {
+Model build_model(const CaseConfig& config, const BlankMesh* blank) {
   Model model;
   copy_plans(config, model);
-  read_blank(config, model);
+  read_blank(config, model, blank);
   read_tools(config, model);
   const ShellState state = make_shell_state(
       element_count(model.blank.part), config.blank.integration_points, config.blank.thickness);

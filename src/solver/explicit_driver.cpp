@@ -143,8 +143,8 @@ CheckpointInfo resume_state(const Model& model, const RunOptions& options,
 // integration-point state, and the tools of the same name where it left them; the case's other
 // tools stand where their motion puts them at that time. A contact pair with a placed tool takes
 // its stick forces; the distance bounds (a shortcut of the search) start afresh.
-void start_from_formed_part(const Model& model, SolutionState& s, LoopMark& loop) {
-  const FormedPart part = read_formed_part(model.blank.formed_part);
+void start_from_formed_part(const Model& model, const FormedPart& part, SolutionState& s,
+                            LoopMark& loop) {
   const std::vector<std::string> placed = apply_formed_part(part, model, s);
   for (std::size_t t = 0; t < s.tools.size(); ++t) {
     if (std::find(placed.begin(), placed.end(), model.tools[t].name) == placed.end()) {
@@ -157,6 +157,11 @@ void start_from_formed_part(const Model& model, SolutionState& s, LoopMark& loop
     contact.distance_bounds.resize(contact.distance_bounds.node_count());  // zero: search
   }
   loop.dt_previous = s.dt;  // the step the part's run took last
+  if (!part.fields.contains("f_int")) {
+    // A trimmed part: the forces (and masses, offsets) are this mesh's, made again from the
+    // state (a pass at dt = 0 changes no stress).
+    compute_forces(model, s, 0.0);
+  }
   log_info("Starts from {} at t = {:.6e} s, cycle {} (tools placed where it left them: {})\n",
            part.file, s.time, s.cycle,
            placed.empty() ? "none" : fmt::format("{}", fmt::join(placed, ", ")));
@@ -410,8 +415,10 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
                           model.output.history_interval);
   LoopMark loop;
   std::unique_ptr<FrameOutput> output;
-  if (fresh && !model.blank.formed_part.empty()) {
-    start_from_formed_part(model, s, loop);
+  if (fresh && (options.start_part || !model.blank.formed_part.empty())) {
+    start_from_formed_part(
+        model, options.start_part ? *options.start_part : read_formed_part(model.blank.formed_part),
+        s, loop);
     operations.begin(0, s);                // the first operation starts where the part's run ended
     schedule.after_step(s.time, s.cycle);  // the frame times the part's run passed
   }

@@ -6,6 +6,7 @@
 
 #include "model/model.hpp"
 #include "solver/explicit_step.hpp"
+#include "solver/formed_part.hpp"
 #include "solver/run_summary.hpp"
 #include "solver/solution_state.hpp"
 
@@ -25,6 +26,9 @@ struct RunOptions {
   bool checkpoints = true;
   /// Stop cleanly at the end of this cycle, as on SIGTERM (-1: no such stop).
   long stop_at_cycle = -1;
+  /// A formed part to start from instead of the case's blank.formed_part file (a trimmed part,
+  /// solver/trim.hpp, whose mesh the model was built from); null: the file, if any.
+  std::shared_ptr<const FormedPart> start_part;
 };
 
 /// Runs the model from time 0 (or from a checkpoint) to its end time, writing frames and history

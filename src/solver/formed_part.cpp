@@ -354,7 +354,16 @@ class FieldCopy {
       }
       part_key = key.substr(0, first) + std::to_string(in_part) + key.substr(slash);
     }
-    const std::vector<double>& data = part_.fields.at(part_key);
+    const auto found = part_.fields.find(part_key);
+    if (found == part_.fields.end()) {
+      if (field.mapping == FieldMapping::recompute || field.mapping == FieldMapping::reset ||
+          field.place == FieldPlace::contact) {
+        return;  // left out by a trim: the model's own, recomputed (solver/trim.hpp)
+      }
+      throw InputError(
+          fmt::format("{}: no entry /state/{} (a damaged formed part)", part_.file, part_key));
+    }
+    const std::vector<double>& data = found->second;
     if constexpr (!std::is_arithmetic_v<T>) {
       if (field.place == FieldPlace::contact &&
           data.size() != static_cast<std::size_t>(value.size())) {
