@@ -341,6 +341,13 @@ int run(const Arguments& args, const sf::MpiSession& mpi) {
   }
   sf::RunOptions options;
   options.domain = make_domain(mpi, model, loaded.config.file.string());
+  // After a trim: the model built on the trimmed part, split over the ranks afresh.
+  options.rebuild.model = [&loaded](const sf::BlankMesh& blank) {
+    return sf::build_model(loaded.config, &blank);
+  };
+  options.rebuild.domain = [&mpi, &loaded](const sf::Model& trimmed) {
+    return make_domain(mpi, trimmed, loaded.config.file.string());
+  };
   sf::print_model(loaded.config, model);
   sf::print_run_estimate(loaded.estimate, model);
   sf::report_tool_meshes(loaded.config, model);

@@ -115,15 +115,24 @@ class ResultsError(Exception):
     """A results file lacks what is needed (the message names the file and the object)."""
 
 
-def read_blank(h5file, part="blank"):
+def read_blank(h5file, part="blank", frame=None):
     """(reference [n][3], quads [nq][4] or None, triangles [nt][3] or None) of a part of an open
     results.h5 (h5py.File), following its `nodes_per_cell` attribute (4 quadrilaterals,
     3 triangles, 0 mixed: `connectivity` holds the quadrilaterals and `triangle_connectivity`
-    the triangles, which follow them in the cell order). See docs/results-format.md."""
-    where = f"{h5file.filename}: /parts/{part}"
-    if f"parts/{part}" not in h5file:
+    the triangles, which follow them in the cell order). With `frame` (a frame group's key,
+    "000012"), the mesh of that frame: after a trim, the trimmed mesh its attribute `topology`
+    names (/parts/<part>/topologies/<m>). See docs/results-format.md."""
+    path = f"parts/{part}"
+    if path not in h5file:
+        raise ResultsError(f"{h5file.filename}: /{path}: no such group")
+    if frame is not None and f"{path}/frames/{frame}" in h5file:
+        topology = h5file[f"{path}/frames/{frame}"].attrs.get("topology")
+        if topology is not None:
+            path = f"{path}/topologies/{int(topology)}"
+    where = f"{h5file.filename}: /{path}"
+    if path not in h5file:
         raise ResultsError(f"{where}: no such group")
-    group = h5file[f"parts/{part}"]
+    group = h5file[path]
     for name in ("reference_coordinates", "connectivity"):
         if name not in group:
             raise ResultsError(f"{where}/{name}: missing")

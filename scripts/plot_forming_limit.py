@@ -53,10 +53,6 @@ def read_frame(h5_path, part, frame):
     if not os.path.isfile(h5_path):
         raise InputProblem(f"{h5_path}: no such file (not a sheetform results folder?)")
     with h5py.File(h5_path, "r") as f:
-        try:
-            reference, quads, triangles = forming_strains.read_blank(f, part)
-        except forming_strains.ResultsError as error:
-            raise InputProblem(str(error)) from None
         frames_path = f"parts/{part}/frames"
         keys = sorted(f[frames_path]) if frames_path in f else []
         if not keys:
@@ -65,6 +61,10 @@ def read_frame(h5_path, part, frame):
             raise InputProblem(f"{h5_path}: no frame {frame}: the file has frames 0 to "
                                f"{len(keys) - 1} (or -1 to -{len(keys)} from the end)")
         key = keys[frame]
+        try:
+            reference, quads, triangles = forming_strains.read_blank(f, part, key)  # its mesh
+        except forming_strains.ResultsError as error:
+            raise InputProblem(str(error)) from None
         group = f[f"{frames_path}/{key}"]
         if "coordinates" not in group:
             raise InputProblem(f"{h5_path}: /{frames_path}/{key}/coordinates: missing")

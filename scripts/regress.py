@@ -100,12 +100,18 @@ def load_reference(case_dir):
 
 
 def check_length_table(path, length, table):
-    allowed = {"stroke", "end_time", "blessed", "metrics", "note"}
+    allowed = {"stroke", "end_time", "set", "blessed", "metrics", "note"}
     for key in table:
         if key not in allowed:
             raise ReferenceFileError(f"{path}: unknown key '{length}.{key}' (expected {sorted(allowed)})")
     if "stroke" in table and "end_time" in table:
         raise ReferenceFileError(f"{path}: {length}: give stroke or end_time, not both")
+    overrides = table.get("set", [])
+    if not isinstance(overrides, list) or not all(isinstance(o, str) and "=" in o for o in overrides):
+        raise ReferenceFileError(f"{path}: {length}.set: expected a list of \"KEY=VALUE\" strings "
+                                 "(sheetform run --set), e.g. [\"operations[0].stroke=10.0\"]")
+    if overrides and length != "short":
+        raise ReferenceFileError(f"{path}: {length}.set: only the short version changes the case")
     metrics = table.get("metrics", {})
     if not metrics:
         raise ReferenceFileError(f"{path}: [{length}.metrics] has no metric")
@@ -259,6 +265,8 @@ def run_case(sheetform, case_dir, search, length, table, work, verbose):
         command += ["--stroke", repr(float(table["stroke"]))]
     if length == "short" and "end_time" in table:
         command += ["--end-time", repr(float(table["end_time"]))]
+    for override in table.get("set", []) if length == "short" else []:
+        command += ["--set", override]
     if verbose:
         print("$", " ".join(command), flush=True)
     start = time.monotonic()

@@ -68,11 +68,14 @@ def main():
     case = tomllib.loads((args.results / "case.resolved.toml").read_text())["springback"]["u_channel"]
     with h5py.File(args.results / "results.h5", "r") as h5:
         blank = h5["parts/blank"]
-        ref = blank["reference_coordinates"][:]
         frames = blank["frames"]
         keys = sorted(frames.keys())
         springback = [k for k in keys if np.abs(frames[k]["springback_displacement"][:]).max() > 0.0]
         formed_key = keys[keys.index(springback[0]) - 1]
+        # the mesh of the formed frame (after a trim: the trimmed mesh, docs/results-format.md)
+        topology = frames[formed_key].attrs.get("topology")
+        mesh = blank if topology is None else blank["topologies"][str(int(topology))]
+        ref = mesh["reference_coordinates"][:]
         formed3 = frames[formed_key]["coordinates"][:]
         final3 = frames[keys[-1]]["coordinates"][:]
     section = np.flatnonzero(np.abs(ref[:, 1]) < 1e-9)

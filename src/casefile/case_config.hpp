@@ -214,7 +214,9 @@ struct OperationMotionConfig {
 /// One operation of the press line ([[operations]], docs/process-chain.md), run in the case's
 /// order on one time loop; time runs on across them.
 struct OperationConfig {
-  enum class Kind { gravity, closing, forming, springback };
+  enum class Kind { gravity, closing, forming, trim, springback };
+  /// Which side of a trim line stays: what projects inside it, or outside.
+  enum class Keep { inside, outside };
   /// What ends it: the stroke tool's travel, a duration, the push on a tool, the clearance left
   /// between two tools, or the blank at rest (kinetic energy fallen below `rest` x its peak).
   enum class End { stroke, time, force, gap, rest, none };
@@ -232,6 +234,11 @@ struct OperationConfig {
   double rest = 1e-3;   ///< -, kinetic energy / its peak in the operation
   std::optional<double> damping;  ///< 1/s, mass-proportional; absent = control.damping
   std::vector<OperationMotionConfig> motions;
+  /// mm, a trim's line: a closed polyline (the last point joins the first), projected along
+  /// `direction` onto the part as it stands
+  std::vector<std::array<double, 3>> line;
+  std::array<double, 3> direction{0.0, 0.0, -1.0};  ///< -, a trim's projection (normalised)
+  Keep keep = Keep::inside;
 };
 
 struct ContactConfig {

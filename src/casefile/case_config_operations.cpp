@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <optional>
 
 #include "casefile/case_fields.hpp"
 
@@ -14,11 +16,14 @@ using Op = OperationConfig;
 using Kind = OperationConfig::Kind;
 using End = OperationConfig::End;
 
-constexpr std::array<Choice<Kind>, 4> kKinds{{
+constexpr std::array<Choice<Kind>, 5> kKinds{{
     {Kind::gravity, "gravity",
      "the blank settles under control.gravity onto the tools in play until at rest; first only"},
     {Kind::closing, "closing", "a tool (the binder) closes, by its motion or its force"},
     {Kind::forming, "forming", "tools draw the blank"},
+    {Kind::trim, "trim",
+     "the elements on the scrap side of `line` are removed from the part as it stands (no time "
+     "passes); the operations after it go on with the trimmed part"},
     {Kind::springback, "springback",
      "the case's [springback] (its defaults when absent) on the part as it stands; last only"},
 }};
@@ -31,7 +36,8 @@ constexpr std::array<Choice<End>, 6> kEnds{{
     {End::rest, "rest",
      "the kinetic energy falls below `rest` × its peak in the operation and the out-of-balance "
      "force below √`rest` × the applied force"},
-    {End::none, "none", "springback only: it ends when it has converged"},
+    {End::none, "none",
+     "springback and trim only: a springback ends when it has converged, a trim at once"},
 }};
 
 End default_end(Kind kind) {
@@ -42,6 +48,7 @@ End default_end(Kind kind) {
       return End::gap;
     case Kind::forming:
       return End::stroke;
+    case Kind::trim:
     case Kind::springback:
       break;
   }
@@ -49,7 +56,56 @@ End default_end(Kind kind) {
 }
 
 bool moves(const Op& o) {
-  return o.kind != Kind::springback;
+  return o.kind != Kind::springback && o.kind != Kind::trim;
+}
+bool trims(const Op& o) {
+  return o.kind == Kind::trim;
+}
+
+constexpr std::array<Choice<OperationConfig::Keep>, 2> kKeeps{{
+    {OperationConfig::Keep::inside, "inside", "the part inside the line stays"},
+    {OperationConfig::Keep::outside, "outside", "the part outside the line stays (a hole)"},
+}};
+
+// [[x, y, z], ...] or [[x, y], ...] (z = 0): a closed polyline of at least 3 points.
+void read_line(const TomlSection& s, Op& o, Presence presence) {
+  const char* expected = "an array of at least 3 points [x, y] or [x, y, z] (mm)";
+  const toml::node* node = s.find("line");
+  if (!node) {
+    if (presence == Presence::required) {
+      s.fail_missing("line", expected);
+    }
+    return;
+  }
+  const toml::array* points = node->as_array();
+  if (!points || points->size() < 3) {
+    s.fail_value("line", expected);
+  }
+  for (std::size_t i = 0; i < points->size(); ++i) {
+    const toml::array* point = points->get(i)->as_array();
+    if (!point || point->size() < 2 || point->size() > 3) {
+      s.fail_value("line", expected);
+    }
+    std::array<double, 3> p{0.0, 0.0, 0.0};
+    for (std::size_t c = 0; c < point->size(); ++c) {
+      const std::optional<double> v = point->get(c)->value<double>();
+      if (!v || !std::isfinite(*v)) {
+        s.fail_value("line", fmt::format("{}; point {} holds a value that is not a finite number",
+                                         expected, i + 1));
+      }
+      p[c] = *v;
+    }
+    o.line.push_back(p);
+  }
+}
+
+void write_line(TomlWriter& w, const Op& o) {
+  std::string points;
+  for (const auto& p : o.line) {
+    points += fmt::format("{}[{}, {}, {}]", points.empty() ? "" : ", ", format_toml_number(p[0]),
+                          format_toml_number(p[1]), format_toml_number(p[2]));
+  }
+  w.raw("line", "[" + points + "]");
 }
 bool ends_by(const Op& o, std::initializer_list<End> ends) {
   return std::find(ends.begin(), ends.end(), o.end) != ends.end();
@@ -100,11 +156,12 @@ FieldTable<Op> make_operation_fields() {
                                 "the tools in play: their contact acts and they move. A tool "
                                 "left out stands still where it is, out of contact"},
                                read_tool_list, write_tool_list)
-                  .when(moves, "not for `\"springback\"`", "springback has no tools in play"));
+                  .when(moves, "not for `\"springback\"` or `\"trim\"`",
+                        "springback and trim have no tools in play"));
   Field<Op> end = choice_field<Op, End>("end", &Op::end, kEnds, "")
                       .shown_default(
                           "by kind: gravity `\"rest\"`, closing `\"gap\"`, forming "
-                          "`\"stroke\"`, springback `\"none\"`");
+                          "`\"stroke\"`, trim and springback `\"none\"`");
   end.read = [](const TomlSection& s, Op& o, Presence) {
     o.end = default_end(o.kind);
     s.read_choice<End>("end", o.end, kEnds);
@@ -167,7 +224,21 @@ FieldTable<Op> make_operation_fields() {
                       w.comment("damping: control.damping");
                     }
                   })
-                  .when(moves, "not for `\"springback\"`", "springback is implicit"));
+                  .when(moves, "not for `\"springback\"` or `\"trim\"`",
+                        "springback is implicit and a trim takes no time"));
+  t.push_back(custom_field<Op>({"line", "array of [x, y] or [x, y, z]", "", "mm",
+                                "a trim's line: a closed polyline of at least 3 points (the last "
+                                "joins the first) around the part to keep, projected along "
+                                "`direction` onto the part as it stands; an element is kept when "
+                                "its centre projects on the kept side"},
+                               read_line, write_line)
+                  .required()
+                  .when(trims, "`\"trim\"` only", "only a trim has a line"));
+  t.push_back(direction_field<Op>("direction", &Op::direction,
+                                  "a trim's direction of projection (the press direction)")
+                  .when(trims, "`\"trim\"` only", "only a trim has a direction"));
+  t.push_back(choice_field<Op, OperationConfig::Keep>("keep", &Op::keep, kKeeps, "")
+                  .when(trims, "`\"trim\"` only", "only a trim keeps a side"));
   return t;
 }
 
@@ -291,6 +362,9 @@ void check_sequence(const TomlSection& top, const std::vector<TomlSection>& sect
                    "\"springback\" only for the last operation (a trimmed part's "
                    "springback comes with trimming, docs/process-chain.md)");
     }
+    if (ops[i].kind == Kind::trim && i == 0) {
+      s.fail_value("kind", "\"trim\" after an operation that forms the blank, not first");
+    }
     if (ops[i].kind == Kind::gravity && i != 0) {
       s.fail_value("kind",
                    "\"gravity\" only for the first operation (gravity then acts in "
@@ -343,16 +417,16 @@ void read_operations(const TomlSection& top, CaseConfig& config) {
                        "motion to be control.stroke_tool)");
       }
     }
-    if (o.kind == Kind::springback && o.end != End::none) {
-      s.fail_value("end", "\"none\" for a springback (it ends when it has converged)");
+    if ((o.kind == Kind::springback || o.kind == Kind::trim) && o.end != End::none) {
+      s.fail_value("end", "\"none\" for a springback or a trim (they end by themselves)");
     }
-    if (o.kind != Kind::springback && o.end == End::none) {
+    if (moves(o) && o.end == End::none) {
       s.fail_value("end",
                    "an end for an operation that moves tools (stroke, time, force, gap "
                    "or rest)");
     }
-    if (o.kind == Kind::springback && s.has("motion")) {
-      s.fail_forbidden("motion", "springback has no tools in play");
+    if (!moves(o) && s.has("motion")) {
+      s.fail_forbidden("motion", "springback and trim have no tools in play");
     }
     read_motions(s, config, o);
     check_stroke_tool(s, o, config);

@@ -35,6 +35,11 @@ struct Operation {
   /// s, the end the plan expects: a stroke or time end's when the operations before it end as
   /// planned, else its start plus `time` (the model's time.end_time is the last one's)
   double planned_end = 0.0;
+  /// A trim's line (mm, a closed polyline), the direction it is projected along and the side
+  /// kept (solver/trim.hpp).
+  std::vector<Vec3> trim_line;
+  Vec3 trim_direction = Vec3(0.0, 0.0, -1.0);
+  bool keep_inside = true;
 };
 
 /// Where a tool's motion in effect starts: the operation that gave it (-1: the case's own

@@ -31,7 +31,8 @@ Operation make_operation(const CaseConfig& config, const Model& model, std::size
   op.kind = c.kind;
   op.end = c.end;
   const std::size_t n = model.tools.size();
-  op.in_play.assign(n, c.kind == Kind::springback ? 0 : (c.all_tools ? 1 : 0));
+  const bool tools_in_play = c.kind != Kind::springback && c.kind != Kind::trim;
+  op.in_play.assign(n, tools_in_play && c.all_tools ? 1 : 0);
   for (const std::string& name : c.tools) {
     op.in_play[static_cast<std::size_t>(tool_index(model, name))] = 1;
   }
@@ -47,6 +48,11 @@ Operation make_operation(const CaseConfig& config, const Model& model, std::size
   op.gap = c.gap;
   op.rest = c.rest;
   op.damping = c.damping.value_or(config.control.damping);
+  for (const auto& p : c.line) {
+    op.trim_line.emplace_back(p[0], p[1], p[2]);
+  }
+  op.trim_direction = Vec3(c.direction[0], c.direction[1], c.direction[2]);
+  op.keep_inside = c.keep == OperationConfig::Keep::inside;
   return op;
 }
 
@@ -174,6 +180,19 @@ void build_operations(const CaseConfig& config, Model& model) {
     if (op.kind == Kind::springback) {
       op.planned_end = t;
       break;
+    }
+    if (op.kind == Kind::trim) {
+      // No time passes and no tool moves: after it, each tool restarts its motion from where
+      // it stands (as after an operation it stood still in).
+      op.planned_end = t;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!model.tools[i].force_control && (moved[i] || k == 0)) {
+          travel[i] = travel_in_effect(model, static_cast<int>(i), origin[i], t);
+          displacement[i] = displacement_in_effect(model, static_cast<int>(i), origin[i], t);
+        }
+        moved[i] = 0;
+      }
+      continue;
     }
     for (std::size_t i = 0; i < n; ++i) {
       const int ti = static_cast<int>(i);

@@ -44,6 +44,29 @@ std::string part_path(const std::string& part) {
   return "/parts/" + part;
 }
 
+// Where the part's mesh after its `index`-th change (a trim) is kept; the first mesh is the
+// part's own group.
+std::string topology_path(const std::string& part, int index) {
+  return part_path(part) + "/topologies/" + std::to_string(index);
+}
+
+// The grid of a mesh stored at `path` (as write_topology wrote it).
+XdmfPart stored_grid(const h5::File& file, const std::string& name, const std::string& path) {
+  XdmfPart grid;
+  grid.name = name;
+  grid.nodes_per_cell = file.read_attribute_int(path, "nodes_per_cell");
+  grid.node_count = file.shape(path + "/reference_coordinates").at(0);
+  grid.cell_count = file.shape(path + "/connectivity").at(0);
+  grid.connectivity_dataset = path + "/connectivity";
+  if (grid.nodes_per_cell == 0) {
+    grid.nodes_per_cell = 4;
+    grid.cell_count += file.shape(path + "/triangle_connectivity").at(0);
+    grid.connectivity_dataset = path + "/mixed_connectivity";
+    grid.mixed_connectivity_size = file.shape(grid.connectivity_dataset).at(0);
+  }
+  return grid;
+}
+
 std::string frame_path(const std::string& part, int index) {
   return part_path(part) + "/frames/" + frame_group_name(index);
 }
@@ -182,21 +205,26 @@ void ResultsWriter::check_layout(const std::vector<PartTopology>& parts,
   }
 }
 
-ResultsWriter::PartRecord ResultsWriter::describe_part(const PartTopology& part) {
-  const std::string path = part_path(part.name);
+XdmfPart ResultsWriter::describe_grid(const PartTopology& part, const std::string& path) {
   const auto cells = static_cast<std::size_t>(part.cells.cols());
   const auto triangles = static_cast<std::size_t>(part.triangles.cols());
-  PartRecord record;
-  record.grid.name = part.name;
-  record.grid.nodes_per_cell = part.nodes_per_cell;
-  record.grid.node_count = static_cast<std::size_t>(part.reference_nodes.cols());
-  record.grid.cell_count = cells + triangles;
-  record.grid.connectivity_dataset = path + "/connectivity";
+  XdmfPart grid;
+  grid.name = part.name;
+  grid.nodes_per_cell = part.nodes_per_cell;
+  grid.node_count = static_cast<std::size_t>(part.reference_nodes.cols());
+  grid.cell_count = cells + triangles;
+  grid.connectivity_dataset = path + "/connectivity";
   if (triangles > 0) {
     // Mixed: the flat XDMF "Mixed" array (type code, then the nodes, per cell).
-    record.grid.connectivity_dataset = path + "/mixed_connectivity";
-    record.grid.mixed_connectivity_size = 5 * cells + 4 * triangles;
+    grid.connectivity_dataset = path + "/mixed_connectivity";
+    grid.mixed_connectivity_size = 5 * cells + 4 * triangles;
   }
+  return grid;
+}
+
+ResultsWriter::PartRecord ResultsWriter::describe_part(const PartTopology& part) {
+  PartRecord record;
+  record.grid = describe_grid(part, part_path(part.name));
   return record;
 }
 
@@ -242,40 +270,7 @@ void ResultsWriter::create_file(const std::vector<PartTopology>& parts,
     file.write_attribute("/parts", frames_attribute, 0);
     for (const PartTopology& part : parts) {
       const std::string path = part_path(part.name);
-      const hsize_t cells = to_hsize(part.cells.cols());
-      const hsize_t nodes = to_hsize(part.reference_nodes.cols());
-      file.write(
-          path + "/connectivity",
-          std::span<const int>(part.cells.data(), static_cast<std::size_t>(part.cells.size())),
-          {cells, static_cast<hsize_t>(part.nodes_per_cell)});
-      file.write(path + "/reference_coordinates",
-                 std::span<const double>(part.reference_nodes.data(),
-                                         static_cast<std::size_t>(part.reference_nodes.size())),
-                 {nodes, 3});
-      const hsize_t triangles = to_hsize(part.triangles.cols());
-      if (triangles > 0) {
-        file.write(path + "/triangle_connectivity",
-                   std::span<const int>(part.triangles.data(),
-                                        static_cast<std::size_t>(part.triangles.size())),
-                   {triangles, 3});
-        std::vector<int> mixed;
-        mixed.reserve(static_cast<std::size_t>(5 * cells + 4 * triangles));
-        for (Eigen::Index e = 0; e < part.cells.cols(); ++e) {
-          mixed.push_back(kXdmfQuadrilateral);
-          for (int a = 0; a < 4; ++a) {
-            mixed.push_back(part.cells(a, e));
-          }
-        }
-        for (Eigen::Index k = 0; k < part.triangles.cols(); ++k) {
-          mixed.push_back(kXdmfTriangle);
-          for (int a = 0; a < 3; ++a) {
-            mixed.push_back(part.triangles(a, k));
-          }
-        }
-        file.write(path + "/mixed_connectivity", std::span<const int>(mixed), {mixed.size()});
-      }
-      // 4 quadrilaterals, 3 triangles, 0 mixed (quadrilaterals, then triangles).
-      file.write_attribute(path, "nodes_per_cell", triangles > 0 ? 0 : part.nodes_per_cell);
+      write_topology(file, path, part);
       file.create_group(path + "/frames");
     }
     file.create_group("/history");
@@ -295,6 +290,63 @@ void ResultsWriter::create_file(const std::vector<PartTopology>& parts,
   } catch (const h5::Error& e) {
     throw InputError("cannot write results in '" + directory_.string() + "': " + e.what());
   }
+}
+
+void ResultsWriter::write_topology(h5::File& file, const std::string& path,
+                                   const PartTopology& part) {
+  const hsize_t cells = to_hsize(part.cells.cols());
+  const hsize_t nodes = to_hsize(part.reference_nodes.cols());
+  file.write(path + "/connectivity",
+             std::span<const int>(part.cells.data(), static_cast<std::size_t>(part.cells.size())),
+             {cells, static_cast<hsize_t>(part.nodes_per_cell)});
+  file.write(path + "/reference_coordinates",
+             std::span<const double>(part.reference_nodes.data(),
+                                     static_cast<std::size_t>(part.reference_nodes.size())),
+             {nodes, 3});
+  const hsize_t triangles = to_hsize(part.triangles.cols());
+  if (triangles > 0) {
+    file.write(path + "/triangle_connectivity",
+               std::span<const int>(part.triangles.data(),
+                                    static_cast<std::size_t>(part.triangles.size())),
+               {triangles, 3});
+    std::vector<int> mixed;
+    mixed.reserve(static_cast<std::size_t>(5 * cells + 4 * triangles));
+    for (Eigen::Index e = 0; e < part.cells.cols(); ++e) {
+      mixed.push_back(kXdmfQuadrilateral);
+      for (int a = 0; a < 4; ++a) {
+        mixed.push_back(part.cells(a, e));
+      }
+    }
+    for (Eigen::Index k = 0; k < part.triangles.cols(); ++k) {
+      mixed.push_back(kXdmfTriangle);
+      for (int a = 0; a < 3; ++a) {
+        mixed.push_back(part.triangles(a, k));
+      }
+    }
+    file.write(path + "/mixed_connectivity", std::span<const int>(mixed), {mixed.size()});
+  }
+  // 4 quadrilaterals, 3 triangles, 0 mixed (quadrilaterals, then triangles).
+  file.write_attribute(path, "nodes_per_cell", triangles > 0 ? 0 : part.nodes_per_cell);
+}
+
+void ResultsWriter::change_topology(const PartTopology& part) {
+  check_layout({part}, {});
+  PartRecord& record = parts_[part_index(part.name)];
+  const int topology = record.topology + 1;
+  const std::string path = topology_path(part.name, topology);
+  writing(directory_, [&] {
+    run_detached([&] {
+      h5::File file(results_file(), h5::FileMode::read_write);
+      if (file.exists(path)) {
+        file.remove(path);  // left by a run a restart goes on from
+      }
+      write_topology(file, path, part);
+      file.write_attribute(path, "first_frame", frame_count_);
+      file.close();
+    });
+  });
+  record.topology = topology;
+  record.current_grid = std::make_shared<const XdmfPart>(describe_grid(part, path));
 }
 
 ResultsWriter::ResultsWriter(const std::filesystem::path& directory,
@@ -346,6 +398,7 @@ void ResultsWriter::read_kept_frames(const h5::File& file, const Resume& resume)
     if (!file.exists(frames)) {
       throw InputError(where + ": has no part '" + record.grid.name + "' (another case's results)");
     }
+    record.grid = stored_grid(file, record.grid.name, part_path(record.grid.name));
     for (int index = 0; index < resume.frames; ++index) {
       const std::string group = frame_path(record.grid.name, index);
       if (index >= committed || !file.exists(group)) {
@@ -367,6 +420,16 @@ void ResultsWriter::read_kept_frames(const h5::File& file, const Resume& resume)
         const std::vector<hsize_t> shape = file.shape(attribute.dataset);
         attribute.components = shape.size() == 2 ? static_cast<int>(shape[1]) : 1;
         frame.attributes.push_back(std::move(attribute));
+      }
+      if (file.has_attribute(group, "topology")) {
+        // a frame after a trim: its own mesh
+        const int topology = file.read_attribute_int(group, "topology");
+        if (topology != record.topology) {
+          record.topology = topology;
+          record.current_grid = std::make_shared<const XdmfPart>(
+              stored_grid(file, record.grid.name, topology_path(record.grid.name, topology)));
+        }
+        frame.grid = record.current_grid;
       }
       last_time_ = frame.time;
       record.frames.push_back(std::move(frame));
@@ -390,6 +453,16 @@ void ResultsWriter::drop_later_output(h5::File& file, const Resume& resume) cons
     for (const std::string& name : file.list(frames)) {
       if (std::stoi(name) >= resume.frames) {
         file.remove(frames + "/" + name);
+      }
+    }
+    // Meshes of trims after the checkpoint: the restart trims again.
+    const std::string topologies = part_path(record.grid.name) + "/topologies";
+    if (file.exists(topologies)) {
+      for (const std::string& name : file.list(topologies)) {
+        const std::string path = topologies + "/" + name;
+        if (file.read_attribute_int(path, "first_frame") >= resume.frames) {
+          file.remove(path);
+        }
       }
     }
   }
@@ -442,10 +515,10 @@ void ResultsWriter::check_frame(double time, const std::vector<PartFrameView>& p
     if (!seen_parts.insert(view.part).second) {
       throw std::invalid_argument(frame + ": part '" + view.part + "' given twice");
     }
-    if (static_cast<std::size_t>(view.coordinates.cols()) != record.grid.node_count) {
+    if (static_cast<std::size_t>(view.coordinates.cols()) != record.now().node_count) {
       throw std::invalid_argument(
           frame + ", part '" + view.part + "': " + std::to_string(view.coordinates.cols()) +
-          " node coordinates, expected " + std::to_string(record.grid.node_count));
+          " node coordinates, expected " + std::to_string(record.now().node_count));
     }
     std::set<std::string> seen_fields;
     for (const FieldView& field : view.fields) {
@@ -476,7 +549,7 @@ void ResultsWriter::check_room(const std::vector<PartFrameView>& parts) const {
   // written only when twice its size and 1 MB fit; a disk filling up stops the run readable.
   double bytes = 8.0 * static_cast<double>(history_buffer_.size()) + 1e6;
   for (const PartFrameView& view : parts) {
-    const XdmfPart& grid = find_part(view.part).grid;
+    const XdmfPart& grid = find_part(view.part).now();
     bytes += 24.0 * static_cast<double>(grid.node_count);
     for (const FieldView& field : view.fields) {
       const std::size_t rows =
@@ -517,6 +590,7 @@ std::vector<XdmfFrame> ResultsWriter::describe_frame(
     frame.time = time;
     frame.cycle = cycle;
     frame.coordinates_dataset = group + "/coordinates";
+    frame.grid = parts_[part_index(view.part)].current_grid;
     for (const FieldView& field : view.fields) {
       frame.attributes.push_back(
           XdmfAttribute{field.name, field.center, field.components, group + "/" + field.name});
@@ -530,7 +604,7 @@ void ResultsWriter::store_frame(const std::vector<XdmfFrame>& frames,
   h5::File file(results_file(), h5::FileMode::read_write);
   for (const PartFrameView& view : parts) {
     const std::size_t index = part_index(view.part);
-    const XdmfPart& grid = parts_[index].grid;
+    const XdmfPart& grid = parts_[index].now();
     const XdmfFrame& frame = frames[index];
     const std::string group = frame_path(view.part, frame_count_);
     if (file.exists(group)) {
@@ -550,6 +624,9 @@ void ResultsWriter::store_frame(const std::vector<XdmfFrame>& frames,
     file.write_attribute(group, "time", frame.time);
     file.write_attribute(group, "cycle", frame.cycle);
     file.write_attribute(group, "fields", field_list(view.fields));
+    if (parts_[index].topology > 0) {
+      file.write_attribute(group, "topology", parts_[index].topology);
+    }
   }
   write_history_rows(file);
   commit_frames(file, frame_count_ + 1);

@@ -121,6 +121,14 @@ class ResultsWriter {
   /// Writes the buffered history rows to results.h5 now (opens and closes the file).
   void flush_history();
 
+  /// From the next frame on, the part named `part.name` has this mesh (a trim removed elements
+  /// and nodes): it is kept in results.h5 as /parts/<name>/topologies/<k> (k = 1, 2, ... per
+  /// change, attribute first_frame) and each later frame group carries the attribute topology =
+  /// k; every frame's .xdmf grid names its own mesh, so ParaView plays through the change.
+  /// Throws std::invalid_argument for an unknown part or a bad mesh, OutputError when the file
+  /// cannot be written.
+  void change_topology(const PartTopology& part);
+
   /// Stores `text` (e.g. the resolved case, the version) as the string dataset /run/<key>,
   /// replacing an earlier one of the same key.
   void write_run_info(const std::string& key, const std::string& text);
@@ -148,13 +156,20 @@ class ResultsWriter {
 
  private:
   struct PartRecord {
-    XdmfPart grid;                  ///< static grid description
-    std::vector<XdmfFrame> frames;  ///< one per frame written
+    XdmfPart grid;                                 ///< the grid of the part's first mesh
+    int topology = 0;                              ///< how many times its mesh changed
+    std::shared_ptr<const XdmfPart> current_grid;  ///< the grid after a change (null: none yet)
+    std::vector<XdmfFrame> frames;                 ///< one per frame written
+    /// The grid of the part's mesh now.
+    const XdmfPart& now() const { return current_grid ? *current_grid : grid; }
   };
 
   static void check_layout(const std::vector<PartTopology>& parts,
                            const std::vector<std::string>& history_columns);
+  static XdmfPart describe_grid(const PartTopology& part, const std::string& path);
   static PartRecord describe_part(const PartTopology& part);
+  /// Writes a mesh's datasets into the group `path`.
+  static void write_topology(h5::File& file, const std::string& path, const PartTopology& part);
   void set_directory(const std::filesystem::path& directory);
   /// Creates results.h5 with the parts' topology, no frames and empty history columns.
   void create_file(const std::vector<PartTopology>& parts,

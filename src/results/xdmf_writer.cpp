@@ -73,16 +73,39 @@ void append_data_item(std::string& out, const std::string& indent, std::size_t r
   throw std::runtime_error(what + " '" + path.string() + "': " + std::strerror(error));
 }
 
+void check_grid(const XdmfPart& grid) {
+  if (grid.mixed_connectivity_size == 0 && grid.nodes_per_cell != 3 && grid.nodes_per_cell != 4) {
+    throw std::invalid_argument("XDMF part '" + grid.name + "': nodes per cell must be 3 or 4");
+  }
+}
+
+void append_topology(std::string& out, const XdmfPart& grid, const std::string& h5_file) {
+  const bool mixed = grid.mixed_connectivity_size > 0;
+  const char* topology = mixed ? "Mixed" : grid.nodes_per_cell == 4 ? "Quadrilateral" : "Triangle";
+  out += "        <Topology TopologyType=\"" + std::string(topology) + "\" NumberOfElements=\"" +
+         std::to_string(grid.cell_count) + "\">\n";
+  if (mixed) {
+    out += "          <DataItem Dimensions=\"" + std::to_string(grid.mixed_connectivity_size) +
+           "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" +
+           escape_xml(h5_file + ":" + grid.connectivity_dataset) + "</DataItem>\n";
+  } else {
+    append_data_item(out, "          ", grid.cell_count, grid.nodes_per_cell, true, h5_file,
+                     grid.connectivity_dataset);
+  }
+  out += "        </Topology>\n";
+}
+
 }  // namespace
 
 std::string make_xdmf(const XdmfPart& part, std::span<const XdmfFrame> frames,
                       const std::string& h5_file) {
-  const bool mixed = part.mixed_connectivity_size > 0;
-  if (!mixed && part.nodes_per_cell != 3 && part.nodes_per_cell != 4) {
-    throw std::invalid_argument("XDMF part '" + part.name + "': nodes per cell must be 3 or 4");
+  check_grid(part);
+  for (const XdmfFrame& frame : frames) {
+    if (frame.grid) {
+      check_grid(*frame.grid);
+    }
   }
   const std::string name = escape_xml(part.name);
-  const char* topology = mixed ? "Mixed" : part.nodes_per_cell == 4 ? "Quadrilateral" : "Triangle";
   std::string out;
   out += "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n";
   out += "<!-- sheetform results of part '" + name + "': " + std::to_string(frames.size()) +
@@ -91,23 +114,14 @@ std::string make_xdmf(const XdmfPart& part, std::span<const XdmfFrame> frames,
   out += "    <Grid Name=\"" + name + "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   for (std::size_t k = 0; k < frames.size(); ++k) {
     const XdmfFrame& frame = frames[k];
+    const XdmfPart& grid = frame.grid ? *frame.grid : part;
     char index[32];
     std::snprintf(index, sizeof(index), "%06zu", k);
     out += "      <Grid Name=\"" + name + "_" + index + "\" GridType=\"Uniform\">\n";
     out += "        <Time Value=\"" + format_double(frame.time) + "\"/>\n";
-    out += "        <Topology TopologyType=\"" + std::string(topology) + "\" NumberOfElements=\"" +
-           std::to_string(part.cell_count) + "\">\n";
-    if (mixed) {
-      out += "          <DataItem Dimensions=\"" + std::to_string(part.mixed_connectivity_size) +
-             "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" +
-             escape_xml(h5_file + ":" + part.connectivity_dataset) + "</DataItem>\n";
-    } else {
-      append_data_item(out, "          ", part.cell_count, part.nodes_per_cell, true, h5_file,
-                       part.connectivity_dataset);
-    }
-    out += "        </Topology>\n";
+    append_topology(out, grid, h5_file);
     out += "        <Geometry GeometryType=\"XYZ\">\n";
-    append_data_item(out, "          ", part.node_count, 3, false, h5_file,
+    append_data_item(out, "          ", grid.node_count, 3, false, h5_file,
                      frame.coordinates_dataset);
     out += "        </Geometry>\n";
     for (const XdmfAttribute& attribute : frame.attributes) {
@@ -115,7 +129,7 @@ std::string make_xdmf(const XdmfPart& part, std::span<const XdmfFrame> frames,
       out += "        <Attribute Name=\"" + escape_xml(attribute.name) + "\" Center=\"" +
              (on_nodes ? "Node" : "Cell") + "\" AttributeType=\"" +
              attribute_type(attribute.components) + "\">\n";
-      append_data_item(out, "          ", on_nodes ? part.node_count : part.cell_count,
+      append_data_item(out, "          ", on_nodes ? grid.node_count : grid.cell_count,
                        attribute.components, false, h5_file, attribute.dataset);
       out += "        </Attribute>\n";
     }

@@ -4,6 +4,7 @@
 // Xdmf3ReaderS reads as a time series (see docs/results-format.md).
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
@@ -22,15 +23,20 @@ struct XdmfAttribute {
   std::string dataset;  ///< absolute HDF5 path of the data
 };
 
+struct XdmfPart;
+
 /// One output frame of a part.
 struct XdmfFrame {
   double time = 0.0;                ///< s (case units)
   int cycle = 0;                    ///< explicit cycle number
   std::string coordinates_dataset;  ///< HDF5 path of the [nodes][3] current coordinates
   std::vector<XdmfAttribute> attributes;
+  /// The frame's own grid where the part's mesh changed (a trim, solver/trim.hpp); null: the
+  /// part's grid given to make_xdmf.
+  std::shared_ptr<const XdmfPart> grid;
 };
 
-/// The static description of a part's grid.
+/// The description of a part's grid.
 struct XdmfPart {
   std::string name;        ///< part name, also the collection's name
   int nodes_per_cell = 4;  ///< 3 (Triangle) or 4 (Quadrilateral); ignored for a mixed part

@@ -10,6 +10,7 @@ namespace sf {
 /// Draw-in (mm) of `draw_in` at the blank node positions `x` (mm, column per node): the mean over
 /// the group's nodes of (x - reference) . direction (the direction is unit length, read from the
 /// case). Positive when the edge moves inward, as the case's direction points inward.
+/// NaN when a trim removed every node of the group.
 double measure_draw_in(const Model& model, const DrawInConfig& draw_in, const Matrix3X& x);
 
 }  // namespace sf

@@ -23,6 +23,7 @@
 #include "solver/stop_request.hpp"
 #include "solver/time_loop.hpp"
 #include "solver/time_step_control.hpp"
+#include "solver/trim.hpp"
 
 namespace sf {
 
@@ -159,8 +160,11 @@ void start_from_formed_part(const Model& model, const FormedPart& part, Solution
   loop.dt_previous = s.dt;  // the step the part's run took last
   if (!part.fields.contains("f_int")) {
     // A trimmed part: the forces (and masses, offsets) are this mesh's, made again from the
-    // state (a pass at dt = 0 changes no stress).
+    // state. The pass at dt = 0 may move a stress by a unit in the last place (the plane-stress
+    // update of a zero increment), so the part's own point state is put back after it.
+    const auto shell = s.shell;
     compute_forces(model, s, 0.0);
+    s.shell = shell;
   }
   log_info("Starts from {} at t = {:.6e} s, cycle {} (tools placed where it left them: {})\n",
            part.file, s.time, s.cycle,
@@ -258,7 +262,8 @@ class OperationObserver final : public LoopObserver {
  public:
   OperationObserver(const Model& model, const RunOptions& options,
                     const OperationSequence& operations, FrameOutput* output, LoopMark& loop,
-                    std::vector<OperationRecord> records, const SolutionState& s)
+                    std::vector<OperationRecord> records, const SolutionState& s,
+                    std::string first_ended_by)
       : model_(model),
         options_(options),
         operations_(operations),
@@ -266,6 +271,7 @@ class OperationObserver final : public LoopObserver {
         loop_(loop),
         records_(std::move(records)),
         current_(start_record(operations, s, output)),
+        first_ended_by_(std::move(first_ended_by)),
         wall_start_(std::chrono::steady_clock::now()) {}
 
   bool before_step(SolutionState& s) override {
@@ -273,10 +279,15 @@ class OperationObserver final : public LoopObserver {
       current_.end_time = s.time;
       current_.end_cycle = s.cycle;
       current_.ended_by = operations_.ended_by(s);
+      if (!first_ended_by_.empty()) {
+        current_.ended_by = std::move(first_ended_by_);  // a trim's report
+        first_ended_by_.clear();
+      }
       current_.wall_seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count();
       const int next = s.operation.index + 1;
-      if (next >= operations_.count() || operations_.is_springback(next)) {
+      if (next >= operations_.count() || operations_.is_springback(next) ||
+          operations_.is_trim(next)) {
         return true;  // the loop's last operation ends after the loop (its checkpoint first)
       }
       end_operation(model_, options_, s, output_, loop_, current_);
@@ -311,6 +322,7 @@ class OperationObserver final : public LoopObserver {
   LoopMark& loop_;
   std::vector<OperationRecord> records_;
   OperationRecord current_;
+  std::string first_ended_by_;  ///< what ended the first operation, when known before it ends
   std::chrono::steady_clock::time_point wall_start_;
 };
 
@@ -388,10 +400,88 @@ class RequestObserver final : public LoopObserver {
   LoopMark& loop_;
 };
 
+// What a trim removed and left, in words.
+std::string trim_report(const TrimSummary& t) {
+  std::string pieces;
+  if (t.piece_elements.size() > 1) {
+    pieces = fmt::format("; {} pieces of {} elements", t.piece_elements.size(),
+                         fmt::join(t.piece_elements, ", "));
+  }
+  return fmt::format("trimmed: {} of {} elements and {} nodes removed{}", t.elements_removed,
+                     t.elements_before, t.nodes_removed, pieces);
+}
+
+// Before any work: a trim needs the results folder (the part goes through it) and a way to
+// build the model again on the trimmed mesh.
+void refuse_trim_without_rebuild(const Model& model, const RunOptions& options) {
+  for (const Operation& op : model.operations) {
+    if (op.kind == OperationConfig::Kind::trim &&
+        (!options.rebuild.model || !options.write_results)) {
+      throw InputError(fmt::format(
+          "{}: a trim needs a run that writes its results and can build the model again on the "
+          "trimmed part (sheetform run does both)",
+          op.entry));
+    }
+  }
+}
+
+// The run after a trim: every process reads the part as the operation before left it (the
+// output process wrote it), trims it, builds the model again on the trimmed mesh, and runs it
+// on from the trim, in the same results. Collective.
+RunSummary go_on_after_trim(const Model& model, const RunOptions& options, const SolutionState& s,
+                            const OperationSequence& operations,
+                            std::vector<OperationRecord> records, const OutputMark& mark,
+                            std::chrono::steady_clock::time_point wall_start,
+                            SolutionState* final_state) {
+  const int trim = s.operation.index + 1;
+  const Operation& op = model.operations[static_cast<std::size_t>(trim)];
+  s.domain->agree_flags(0);  // the part is on the disk before any process reads it
+  const FormedPart part = read_formed_part(
+      operation_formed_part_path(options.output_directory, operations.name(trim - 1)));
+  TrimSummary summary;
+  const auto trimmed = std::make_shared<const FormedPart>(trim_by_removal(
+      part, TrimOutline{op.trim_line, op.trim_direction, op.keep_inside}, &summary));
+  const std::string report = trim_report(summary);
+  log_info("Trim        '{}' at t = {:.6e} s: {}\n", op.name, s.time, report);
+  if (summary.piece_elements.size() > 1) {
+    log_warning(
+        "{}: the trimmed part falls into {} pieces; a piece that no tool or constraint holds "
+        "floats free in the operations after it\n",
+        op.entry, summary.piece_elements.size());
+  }
+  const Model next = options.rebuild.model(blank_mesh_of(*trimmed));
+  RunOptions on = options;
+  on.start_part = trimmed;
+  on.restart_file.clear();
+  on.checkpoints = false;  // a restart goes on from the last checkpoint before the trim
+  on.domain = options.rebuild.domain ? options.rebuild.domain(next) : nullptr;
+  auto continuation = std::make_shared<RunContinuation>();
+  continuation->operation = trim;
+  continuation->output = mark;
+  continuation->records = std::move(records);
+  continuation->trim_report = report;
+  continuation->times = s.times;
+  continuation->peak_kinetic_ratio = s.peak_kinetic_ratio;
+  const RunContinuation* before = options.continuation.get();
+  const double cycles = static_cast<double>(s.cycle - (before ? before->cycle : 0));
+  continuation->element_cycles =
+      (before ? before->element_cycles : 0.0) + cycles * element_count(model.blank.part);
+  continuation->node_cycles = (before ? before->node_cycles : 0.0) +
+                              cycles * static_cast<double>(model.blank.mesh.nodes.cols());
+  continuation->cycle = s.cycle;
+  continuation->wall_start = wall_start;
+  on.continuation = continuation;
+  return run_explicit(next, on, final_state);
+}
+
 }  // namespace
 
 RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionState* final_state) {
-  const auto wall_start = std::chrono::steady_clock::now();
+  const RunContinuation* const continuation = options.continuation.get();
+  const auto wall_start =
+      continuation ? continuation->wall_start : std::chrono::steady_clock::now();
+  const int first_operation = continuation ? continuation->operation : 0;
+  refuse_trim_without_rebuild(model, options);
   SolutionState s = make_initial_state(model);
   if (options.domain) {
     s.domain = options.domain;
@@ -405,7 +495,8 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
   const OperationSequence operations(model);
   const bool fresh = options.restart_file.empty();
   if (fresh) {
-    operations.begin(0, s);  // before the first forces: a tool out of play has no contact
+    operations.begin(first_operation, s);  // before the first forces: a tool out of play has no
+                                           // contact
   }
   compute_forces(model, s, 0.0);
 
@@ -419,7 +510,11 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
     start_from_formed_part(
         model, options.start_part ? *options.start_part : read_formed_part(model.blank.formed_part),
         s, loop);
-    operations.begin(0, s);                // the first operation starts where the part's run ended
+    operations.begin(first_operation, s);  // it starts where the part's run ended
+    if (continuation) {
+      s.times = continuation->times;
+      s.peak_kinetic_ratio = continuation->peak_kinetic_ratio;
+    }
     schedule.after_step(s.time, s.cycle);  // the frame times the part's run passed
   }
   if (!fresh) {
@@ -430,6 +525,13 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
       output = std::make_unique<FrameOutput>(model, options.output_directory, info.output);
     }
     schedule.after_step(s.time, s.cycle);  // the frame times passed before the checkpoint
+  } else if (continuation) {
+    // after a trim: the results go on, with the trimmed mesh from the next frame on
+    if (options.write_results && root) {
+      output = std::make_unique<FrameOutput>(model, options.output_directory, continuation->output,
+                                             true);
+    }
+    loop.last_frame_time = s.time;  // the frame of the operation before the trim
   } else {
     if (options.write_results && root) {
       output = std::make_unique<FrameOutput>(model, options.output_directory);
@@ -449,11 +551,15 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
 
   Progress progress(model, model.time.progress_interval);
   // The operations ended before a checkpoint a restart goes on from are in results.h5.
+  std::vector<OperationRecord> records_before;
+  if (continuation) {
+    records_before = continuation->records;
+  } else if (!fresh && output && !model.operations.empty()) {
+    records_before = output->read_operations(s.operation.index);
+  }
   OperationObserver operation_steps(model, options, operations, output.get(), loop,
-                                    !fresh && output && !model.operations.empty()
-                                        ? output->read_operations(s.operation.index)
-                                        : std::vector<OperationRecord>{},
-                                    s);
+                                    std::move(records_before), s,
+                                    continuation ? continuation->trim_report : std::string());
   RunChecksObserver run_checks(model, loop);
   run_checks.warn_about_added_mass(s);
   FrameObserver frames(model, schedule, output.get(), options.write_results, false,
@@ -504,10 +610,23 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
     record_operation(model, options, s, output.get(), current);
     records.push_back(current);
   }
+  if (const int next = s.operation.index + 1;
+      next < operations.count() && operations.is_trim(next)) {
+    const OutputMark mark = output ? output->mark() : OutputMark{};
+    output.reset();  // results.h5 closed: the next model's output takes it up
+    return go_on_after_trim(model, options, s, operations, std::move(records), mark, wall_start,
+                            final_state);
+  }
   progress.report(model, s, true);
   const double wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   RunSummary summary = make_run_summary(model, s, wall_seconds);
+  if (continuation) {
+    const double cycles = static_cast<double>(s.cycle - continuation->cycle);
+    set_per_unit_costs(
+        summary, s.times, continuation->element_cycles + cycles * element_count(model.blank.part),
+        continuation->node_cycles + cycles * static_cast<double>(model.blank.mesh.nodes.cols()));
+  }
   summary.operations = records;
   summary.ranks = s.domain->processes();
   const PhaseTimes& t = s.times;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <type_traits>
 
 #include "core/build_info.hpp"
@@ -77,24 +78,80 @@ class FieldWriter {
   int n_elements_;
 };
 
+// The fields the part's state should hold, by key: the formed-part fields of a state with
+// `tools` tools and `contacts` contact pairs.
+std::map<std::string, StateField> expected_fields(std::size_t tools, std::size_t contacts) {
+  SolutionState s;
+  s.tools.resize(tools);
+  s.contacts.resize(contacts);
+  std::map<std::string, StateField> fields;
+  auto record = [&](const StateField& field, const std::string& key, const auto&) {
+    fields.emplace(key, field);
+  };
+  visit_state_fields_with(field_role::formed_part, record, s);
+  return fields;
+}
+
+// A field a part may lack: one the next model makes again from its mesh (a trimmed part's
+// forces, masses and offsets) or starts afresh (a contact pair's history).
+bool may_be_left_out(const std::string& key, const StateField& field) {
+  return key.starts_with("contacts/") || field.mapping == FieldMapping::recompute ||
+         field.mapping == FieldMapping::reset;
+}
+
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> items;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    items.push_back(text.substr(start, comma - start));
+    start = comma + 1;
+  }
+  return items;
+}
+
+void write_header(h5::File& out) {
+  out.write_attribute("/", "format", std::string(kFormat));
+  out.write_attribute("/", "format_version", kFormatVersion);
+  out.write_attribute("/", "git_hash", std::string(build_info::git_hash));
+  out.write_attribute("/", "units", std::string(kUnits));
+}
+
+void write_mesh(h5::File& out, const Matrix3X& nodes, std::span<const double> tags,
+                const QuadConn& quads, const TriConn& triangles,
+                std::span<const double> initial_thickness,
+                const std::map<std::string, std::vector<int>>& groups) {
+  out.write("/mesh/reference_nodes",
+            std::span<const double>(nodes.data(), static_cast<std::size_t>(nodes.size())),
+            {static_cast<hsize_t>(nodes.cols()), 3});
+  out.write("/mesh/node_tags", tags, {tags.size()});
+  out.write("/mesh/quads", row_major(quads), {static_cast<hsize_t>(quads.cols()), 4});
+  out.write("/mesh/triangles", row_major(triangles), {static_cast<hsize_t>(triangles.cols()), 3});
+  out.write("/mesh/initial_thickness", initial_thickness, {initial_thickness.size()});
+  out.create_group("/mesh/groups");
+  for (const auto& [name, group] : groups) {
+    out.write("/mesh/groups/" + name, group, {group.size()});
+  }
+}
+
+void write_section(h5::File& out, int n_points, const std::string& rule, const std::string& law) {
+  out.create_group("/section");
+  out.write_attribute("/section", "n_points", n_points);
+  out.write_attribute("/section", "rule", rule);
+  out.create_group("/material");
+  out.write_attribute("/material", "law", law);
+}
+
 void write_mesh(h5::File& out, const Model& model) {
   const PartMesh& mesh = model.blank.mesh;
-  const auto n = static_cast<hsize_t>(mesh.nodes.cols());
-  out.write("/mesh/reference_nodes",
-            std::span<const double>(mesh.nodes.data(), static_cast<std::size_t>(mesh.nodes.size())),
-            {n, 3});
-  std::vector<double> tags(mesh.gmsh_node_tags.begin(), mesh.gmsh_node_tags.end());
-  out.write("/mesh/node_tags", tags, {tags.size()});
-  out.write("/mesh/quads", row_major(mesh.quads), {static_cast<hsize_t>(mesh.quads.cols()), 4});
-  out.write("/mesh/triangles", row_major(mesh.triangles),
-            {static_cast<hsize_t>(mesh.triangles.cols()), 3});
+  const std::vector<double> tags(mesh.gmsh_node_tags.begin(), mesh.gmsh_node_tags.end());
   const std::vector<double> t0(static_cast<std::size_t>(element_count(model.blank.part)),
                                model.initial.thickness);
-  out.write("/mesh/initial_thickness", t0, {t0.size()});
-  out.create_group("/mesh/groups");
+  std::map<std::string, std::vector<int>> groups;
   for (const NodeGroup& g : model.blank.groups) {
-    out.write("/mesh/groups/" + g.name, g.nodes, {g.nodes.size()});
+    groups[g.name] = g.nodes;
   }
+  write_mesh(out, mesh.nodes, tags, mesh.quads, mesh.triangles, t0, groups);
 }
 
 }  // namespace
@@ -119,19 +176,13 @@ std::string material_law_kind(const Material& material) {
 void write_formed_part(const std::filesystem::path& file, const Model& model,
                        const SolutionState& state) {
   write_hdf5_atomically(file, "formed part", [&](h5::File& out) {
-    out.write_attribute("/", "format", std::string(kFormat));
-    out.write_attribute("/", "format_version", kFormatVersion);
-    out.write_attribute("/", "git_hash", std::string(build_info::git_hash));
-    out.write_attribute("/", "units", std::string(kUnits));
+    write_header(out);
     write_mesh(out, model);
     const ShellPart& part = model.blank.part;
-    out.create_group("/section");
-    out.write_attribute("/section", "n_points", part.section.n_points);
-    out.write_attribute("/section", "rule",
-                        std::string(choice_name<ThroughThicknessRule>(kThroughThicknessRuleNames,
-                                                                      part.section.rule)));
-    out.create_group("/material");
-    out.write_attribute("/material", "law", material_law_kind(part.material));
+    write_section(out, part.section.n_points,
+                  std::string(choice_name<ThroughThicknessRule>(kThroughThicknessRuleNames,
+                                                                part.section.rule)),
+                  material_law_kind(part.material));
     FieldWriter writer(out, state.shell.n_elements);
     visit_state_fields_with(field_role::formed_part, writer, state);
     for (std::size_t t = 0; t < model.tools.size(); ++t) {
@@ -140,6 +191,57 @@ void write_formed_part(const std::filesystem::path& file, const Model& model,
     for (std::size_t c = 0; c < model.contacts.size(); ++c) {
       out.write_attribute("/state/contacts/" + std::to_string(c), "tool",
                           model.tools[static_cast<std::size_t>(model.contacts[c].tool)].name);
+    }
+  });
+}
+
+void write_formed_part(const std::filesystem::path& file, const FormedPart& part) {
+  const auto n_nodes = static_cast<std::size_t>(part.reference_nodes.cols());
+  const auto n_elements = static_cast<std::size_t>(part.quads.cols() + part.triangles.cols());
+  write_hdf5_atomically(file, "formed part", [&](h5::File& out) {
+    write_header(out);
+    write_mesh(out, part.reference_nodes, part.node_tags, part.quads, part.triangles,
+               part.initial_thickness, part.groups);
+    write_section(out, part.n_points, part.rule, part.law);
+    std::string left_out;
+    for (const auto& [key, field] : expected_fields(part.tools.size(), part.contact_tools.size())) {
+      const auto found = part.fields.find(key);
+      if (found == part.fields.end()) {
+        left_out += (left_out.empty() ? "" : ",") + key;
+        continue;
+      }
+      const std::vector<double>& v = found->second;
+      const std::string path = "/state/" + key;
+      std::vector<hsize_t> shape{v.size()};
+      if (field.place == FieldPlace::node && v.size() == 3 * n_nodes) {
+        shape = {n_nodes, 3};
+      } else if ((field.place == FieldPlace::element || field.place == FieldPlace::point) &&
+                 n_elements > 0 && !v.empty() && v.size() % n_elements == 0) {
+        shape = {n_elements, v.size() / n_elements};
+      }
+      out.write(path, v, shape);
+      out.write_attribute(path, "place", std::string(place_name(field.place)));
+      out.write_attribute(path, "unit", std::string(field.unit));
+    }
+    // The groups a part left without fields (a contact pair's) still name their tool.
+    auto group = [&out](const std::string& path) {
+      std::string so_far;
+      for (std::size_t slash = 1; slash != std::string::npos;) {
+        slash = path.find('/', slash + 1);
+        so_far = path.substr(0, slash);
+        if (!out.exists(so_far)) {
+          out.create_group(so_far);
+        }
+      }
+      return path;
+    };
+    out.write_attribute(group("/state"), "left_out", left_out);
+    for (std::size_t t = 0; t < part.tools.size(); ++t) {
+      out.write_attribute(group("/state/tools/" + std::to_string(t)), "name", part.tools[t]);
+    }
+    for (std::size_t c = 0; c < part.contact_tools.size(); ++c) {
+      out.write_attribute(group("/state/contacts/" + std::to_string(c)), "tool",
+                          part.contact_tools[c]);
     }
   });
 }
@@ -200,19 +302,6 @@ Conn read_connectivity(const PartReader& r, const std::string& path, int nodes_p
   Conn conn(nodes_per_element, static_cast<Eigen::Index>(shape[0]));
   std::copy(v.begin(), v.end(), conn.data());
   return conn;
-}
-
-// The keys the part's state should hold: the formed-part fields of a state with `tools` tools.
-std::vector<std::string> expected_keys(std::size_t tools, std::size_t contacts) {
-  SolutionState s;
-  s.tools.resize(tools);
-  s.contacts.resize(contacts);
-  std::vector<std::string> keys;
-  auto record = [&](const StateField&, const std::string& key, const auto&) {
-    keys.push_back(key);
-  };
-  visit_state_fields_with(field_role::formed_part, record, s);
-  return keys;
 }
 
 FormedPart read_checked_part(const std::filesystem::path& file) {
@@ -276,7 +365,16 @@ FormedPart read_checked_part(const std::filesystem::path& file) {
       part.contact_tools.push_back(
           in.read_attribute_string("/state/contacts/" + std::to_string(c), "tool"));
     }
-    for (const std::string& key : expected_keys(tools, contacts)) {
+    // A part trimmed (solver/trim.hpp) lists the fields the next model makes again.
+    const std::vector<std::string> left_out =
+        in.has_attribute("/state", "left_out")
+            ? split_list(in.read_attribute_string("/state", "left_out"))
+            : std::vector<std::string>{};
+    for (const auto& [key, field] : expected_fields(tools, contacts)) {
+      if (!in.exists("/state/" + key) && may_be_left_out(key, field) &&
+          std::find(left_out.begin(), left_out.end(), key) != left_out.end()) {
+        continue;
+      }
       part.fields[key] = r.doubles("/state/" + key, limit);
     }
     return part;

@@ -68,6 +68,12 @@ struct FormedPart {
 void write_formed_part(const std::filesystem::path& file, const Model& model,
                        const SolutionState& state);
 
+/// Writes `file` from a part held in memory (a trimmed part, solver/trim.hpp): its mesh and
+/// fields, with the formed-part fields it lacks (those the next model makes again from the mesh:
+/// forces, masses, offsets, contact pairs' history) listed in the attribute left_out of /state,
+/// which read_formed_part accepts. Throws OutputError naming the file.
+void write_formed_part(const std::filesystem::path& file, const FormedPart& part);
+
 /// Reads `file`; throws InputError naming the file and the entry when it is not a formed part,
 /// of another format version, or damaged.
 FormedPart read_formed_part(const std::filesystem::path& file);

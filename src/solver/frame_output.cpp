@@ -107,9 +107,10 @@ FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& direct
 }
 
 FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& directory,
-                         const OutputMark& mark)
+                         const OutputMark& mark, bool blank_mesh_changed)
     : audits_(model) {
   std::vector<PartTopology> parts = set_up(model);
+  const PartTopology blank = parts.front();
   std::vector<std::string> names;
   for (HistoryColumn& column : history_columns(model)) {
     names.push_back(std::move(column.name));
@@ -118,6 +119,9 @@ FrameOutput::FrameOutput(const Model& model, const std::filesystem::path& direct
   writer_ = std::make_unique<ResultsWriter>(
       directory, std::move(parts), std::move(names),
       ResultsWriter::Resume{mark.frames, mark.history_rows, mark.run_id});
+  if (blank_mesh_changed) {
+    writer_->change_topology(blank);
+  }
   // The case may have a later end (an extended stroke): the results say which case made them.
   writer_->write_run_info("resolved_case", model.output.resolved_case);
   last_history_cycle_ = mark.last_history_cycle;

@@ -36,8 +36,11 @@ class FrameOutput {
   /// Creates the results directory's files, and writes the resolved case and build information.
   FrameOutput(const Model& model, const std::filesystem::path& directory);
   /// Takes up the results a run wrote in `directory` up to its checkpoint `mark` (a restart):
-  /// what it wrote after the checkpoint is dropped, to be written again.
-  FrameOutput(const Model& model, const std::filesystem::path& directory, const OutputMark& mark);
+  /// what it wrote after the checkpoint is dropped, to be written again. With
+  /// `blank_mesh_changed` (the model built again on a trimmed part), the blank's frames from
+  /// now on are of the model's mesh (ResultsWriter::change_topology).
+  FrameOutput(const Model& model, const std::filesystem::path& directory, const OutputMark& mark,
+              bool blank_mesh_changed = false);
   /// Writes the buffered history rows and returns where the output stands (for a checkpoint).
   OutputMark mark();
   void write_frame(const Model& model, const SolutionState& state);

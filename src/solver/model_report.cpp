@@ -23,6 +23,15 @@ void report_operations(const Model& model, const UnitSystem& units) {
   const auto tool_name = [&](int t) { return model.tools[static_cast<std::size_t>(t)].name; };
   for (std::size_t k = 0; k < model.operations.size(); ++k) {
     const Operation& op = model.operations[k];
+    if (op.kind == OperationConfig::Kind::trim) {
+      const Vec3& d = op.trim_direction;
+      log_info(
+          "Operation   {}/{} '{}' (trim): keeps what projects {} a line of {} points along "
+          "({:.3g}, {:.3g}, {:.3g}) (elements whose centre falls there; no time passes)\n",
+          k + 1, model.operations.size(), op.name, op.keep_inside ? "inside" : "outside",
+          op.trim_line.size(), d.x(), d.y(), d.z());
+      continue;
+    }
     std::string in_play;
     std::string redefined;
     for (std::size_t t = 0; t < model.tools.size(); ++t) {

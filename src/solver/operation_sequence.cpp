@@ -39,6 +39,11 @@ bool OperationSequence::is_springback(int k) const {
          model_.operations[static_cast<std::size_t>(k)].kind == Kind::springback;
 }
 
+bool OperationSequence::is_trim(int k) const {
+  return !model_.operations.empty() &&
+         model_.operations[static_cast<std::size_t>(k)].kind == Kind::trim;
+}
+
 std::string OperationSequence::name(int k) const {
   return model_.operations.empty() ? "forming"
                                    : model_.operations[static_cast<std::size_t>(k)].name;
@@ -111,7 +116,8 @@ double OperationSequence::landing_time(const SolutionState& s) const {
     return std::numeric_limits<double>::infinity();
   }
   const int k = s.operation.index;
-  const bool last = k + 1 == count() || is_springback(k + 1);
+  // the loop's last operation: the case's, or the one before a springback or a trim
+  const bool last = k + 1 == count() || is_springback(k + 1) || is_trim(k + 1);
   const bool planned = model_.operations.empty() ||
                        model_.operations[static_cast<std::size_t>(k)].end == End::stroke ||
                        model_.operations[static_cast<std::size_t>(k)].end == End::time;
@@ -220,7 +226,7 @@ std::string OperationSequence::ended_by(const SolutionState& s) const {
     case End::none:
       break;
   }
-  return "springback converged";
+  return op.kind == Kind::trim ? "trimmed" : "springback converged";
 }
 
 double damping_in_effect(const Model& model, const SolutionState& s) {

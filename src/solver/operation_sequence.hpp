@@ -19,6 +19,8 @@ class OperationSequence {
   int count() const;
   /// Whether operation k is the springback (run by the implicit springback, not the loop).
   bool is_springback(int k) const;
+  /// Whether operation k is a trim (run between two models, solver/explicit_driver.cpp).
+  bool is_trim(int k) const;
   /// The operation's name and kind ("forming" for a case without [[operations]]).
   std::string name(int k) const;
   std::string kind(int k) const;
@@ -33,8 +35,9 @@ class OperationSequence {
   /// have changed (--stroke, --end-time).
   void resume(SolutionState& s) const;
 
-  /// s, the time the next step must not pass (the last operation's stroke or time end when the
-  /// case lands on its end; +inf otherwise).
+  /// s, the time the next step must not pass: the stroke or time end of the loop's last
+  /// operation (the case's last, or the one before a springback or a trim) when the case lands
+  /// on its end; +inf otherwise.
   double landing_time(const SolutionState& s) const;
 
   /// After a step: whether the current operation's end is reached (it also keeps the peak kinetic

@@ -78,6 +78,29 @@ std::string rank_balance_line(const std::vector<std::array<double, 6>>& per_rank
 
 }  // namespace
 
+void set_per_unit_costs(RunSummary& r, const PhaseTimes& t, double element_cycles,
+                        double node_cycles) {
+  const double wall_seconds = r.wall_seconds;
+  if (element_cycles > 0.0) {
+    r.ns_per_element_cycle = 1e9 * wall_seconds / element_cycles;
+  }
+  if (wall_seconds > 0.0) {
+    r.element_share = t.elements / wall_seconds;
+    r.contact_share = t.contact / wall_seconds;
+  }
+  if (element_cycles > 0.0 && node_cycles > 0.0) {
+    const double per_element_cycle = 1e9 / element_cycles;
+    r.phase_ns = {t.elements * per_element_cycle,
+                  t.contact * per_element_cycle,
+                  t.time_step * per_element_cycle,
+                  t.nodal * per_element_cycle,
+                  t.output * per_element_cycle,
+                  (wall_seconds - t.elements - t.contact - t.time_step - t.nodal - t.output) *
+                      per_element_cycle};
+    r.contact_ns_per_node_cycle = 1e9 * t.contact / node_cycles;
+  }
+}
+
 RunSummary make_run_summary(const Model& model, const SolutionState& s, double wall_seconds) {
   RunSummary r;
   r.units = model.output.units;
@@ -87,25 +110,8 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
   r.elements = element_count(model.blank.part);
   r.nodes = static_cast<int>(model.blank.mesh.nodes.cols());
   r.threads = omp_get_max_threads();
-  if (r.cycles > 0 && r.elements > 0) {
-    r.ns_per_element_cycle = 1e9 * wall_seconds / (static_cast<double>(r.cycles) * r.elements);
-  }
-  if (wall_seconds > 0.0) {
-    r.element_share = s.times.elements / wall_seconds;
-    r.contact_share = s.times.contact / wall_seconds;
-  }
-  if (r.cycles > 0 && r.elements > 0 && r.nodes > 0) {
-    const double per_element_cycle = 1e9 / (static_cast<double>(r.cycles) * r.elements);
-    const PhaseTimes& t = s.times;
-    r.phase_ns = {t.elements * per_element_cycle,
-                  t.contact * per_element_cycle,
-                  t.time_step * per_element_cycle,
-                  t.nodal * per_element_cycle,
-                  t.output * per_element_cycle,
-                  (wall_seconds - t.elements - t.contact - t.time_step - t.nodal - t.output) *
-                      per_element_cycle};
-    r.contact_ns_per_node_cycle = 1e9 * t.contact / (static_cast<double>(r.cycles) * r.nodes);
-  }
+  set_per_unit_costs(r, s.times, static_cast<double>(r.cycles) * r.elements,
+                     static_cast<double>(r.cycles) * r.nodes);
   r.energies = s.energies;
   r.peak_kinetic_ratio = s.peak_kinetic_ratio;
   r.physical_mass = model.blank.physical_mass;
@@ -339,7 +345,9 @@ std::string format_run_summary(const RunSummary& r) {
                         : std::string()));
   }
   for (const DrawInResult& d : r.draw_ins) {
-    if (d.measured >= 0.0 && !d.comparable) {
+    if (!std::isfinite(d.computed)) {
+      add(fmt::format("  draw-in {:<11} none: a trim removed its nodes", d.name));
+    } else if (d.measured >= 0.0 && !d.comparable) {
       add(fmt::format(
           "  draw-in {:<11} {:7.3f} {}   (measured {:.3f} {} at {:g} {} of stroke; this run "
           "ended at {:.3f} {}: not compared)",

@@ -108,6 +108,12 @@ struct RunSummary {
 /// The summary of the state at the end of a run; the reactions (per constraint entry and summed
 /// over the history groups) from compute_reactions.
 RunSummary make_run_summary(const Model& model, const SolutionState& state, double wall_seconds);
+
+/// The summary's costs per element-cycle and node-cycle (ns) and time shares from the phase
+/// times and the element-cycles and node-cycles run (a run through a trim sums them over its
+/// meshes); make_run_summary counts cycles x the model's elements and nodes.
+void set_per_unit_costs(RunSummary& summary, const PhaseTimes& times, double element_cycles,
+                        double node_cycles);
 /// The end-of-run summary as text for the console.
 std::string format_run_summary(const RunSummary& summary);
 /// Writes summary.json (machine-readable, with the version and git hash).

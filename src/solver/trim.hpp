@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "model/build_model.hpp"
 #include "solver/formed_part.hpp"
 
 namespace sf {
@@ -39,5 +40,8 @@ struct TrimSummary {
 /// misses the part (nothing removed) or leaves no part.
 FormedPart trim_by_removal(const FormedPart& part, const TrimOutline& outline,
                            TrimSummary* summary = nullptr);
+
+/// The part's mesh and node groups, for build_model to build the next model on.
+BlankMesh blank_mesh_of(const FormedPart& part);
 
 }  // namespace sf

@@ -5,7 +5,7 @@
 # stroke (force-controlled holder, friction, the cached search, quads), then the same blank as
 # triangles (assumed strain, the modified search); the U-channel to 4 mm with its implicit
 # springback (on rank 0 after the gather); a closing then a draw as two operations (issue 32) at
-# 2 ranks. Then what a distributed run refuses or stops with:
+# 2 ranks, and a draw, a trim and a draw on at 2 ranks. Then what a distributed run refuses or stops with:
 # mass scaling (exit 2, the key named), more ranks than elements (exit 2), an energy blow-up
 # (exit 3, said once, the results readable up to the stop), and an element failure met by one
 # rank (exit 3, the serial run's message on every rank count).
@@ -78,6 +78,25 @@ for part in ("formed_part.close.h5", "formed_part.h5"):
         fa["state"].visit(lambda n: keys.append(n) if isinstance(fa["state"][n], h5py.Dataset) else None)
         for k in keys:
             assert fa["state"][k][()].tobytes() == fb["state"][k][()].tobytes(), (part, k)
+PY
+
+# A trim between two draws (issue 32, item 3): every rank trims the part the output process wrote,
+# the model is built again on the trimmed mesh and split over the ranks afresh; 2 ranks give the
+# serial bits, the trimmed mesh's frames included.
+trim=(--set control.stroke=0 --set blank.element_size=1.875
+      --set "operations=[{name=\"draw\", kind=\"forming\", stroke=0.3}, {name=\"trim\", kind=\"trim\", line=[[-1, -1], [50, -1], [50, 50], [-1, 50]]}, {name=\"on\", kind=\"forming\", stroke=0.5}]")
+"$sheetform" run "$work/case/case.toml" -q -o "$work/trim-serial" "${trim[@]}" \
+  > "$work/trim-serial.log" 2>&1 || { fail "trim serial:"; tail -5 "$work/trim-serial.log"; }
+"$mpiexec" -np 2 --bind-to none "$sheetform" run "$work/case/case.toml" -q -o "$work/trim-2" \
+  "${trim[@]}" > "$work/trim-2.log" 2>&1 || { fail "trim at 2 ranks:"; tail -5 "$work/trim-2.log"; }
+/usr/bin/python3 "$src/scripts/compare_results.py" "$work/trim-serial" "$work/trim-2" ||
+  fail "trim at 2 ranks: not the serial bits"
+/usr/bin/python3 - "$work/trim-2" <<'PY' || fail "trim at 2 ranks: no trimmed mesh in the results"
+import sys, h5py
+with h5py.File(sys.argv[1] + "/results.h5") as f:
+    assert f["operations/1"].attrs["kind"] == "trim"
+    trimmed = f["parts/blank/topologies/1/connectivity"].shape[0]
+    assert 0 < trimmed < f["parts/blank/connectivity"].shape[0], trimmed
 PY
 
 # Refused: mass scaling, more ranks than elements (exit 2, a message naming the cause, once).

@@ -194,6 +194,13 @@ class MixedMesh(unittest.TestCase):
                 b.attrs["nodes_per_cell"] = np.int32(0)
                 b["reference_coordinates"] = self.reference
                 b["connectivity"] = self.quads.astype(np.int32)
+                # a trim: frame 1 is of the first quadrilateral alone (its 4 nodes)
+                g.create_group("frames/000000")
+                g.create_group("frames/000001").attrs["topology"] = np.int32(1)
+                m = g.create_group("topologies/1")
+                m.attrs["nodes_per_cell"] = np.int32(4)
+                m["reference_coordinates"] = self.reference[self.quads[0]]
+                m["connectivity"] = np.array([[0, 1, 2, 3]], dtype=np.int32)
             with h5py.File(path, "r") as f:
                 reference, quads, triangles = fs.read_blank(f)
                 np.testing.assert_array_equal(quads, self.quads)
@@ -203,6 +210,12 @@ class MixedMesh(unittest.TestCase):
                 np.testing.assert_array_equal(triangles, self.triangles)
                 with self.assertRaisesRegex(fs.ResultsError, "triangle_connectivity: missing"):
                     fs.read_blank(f, "bad")
+                reference, quads, triangles = fs.read_blank(f, "blank", "000000")
+                np.testing.assert_array_equal(quads, self.quads)
+                reference, quads, triangles = fs.read_blank(f, "blank", "000001")
+                np.testing.assert_array_equal(quads, [[0, 1, 2, 3]])
+                np.testing.assert_array_equal(reference, self.reference[self.quads[0]])
+                self.assertIsNone(triangles)
                 with self.assertRaisesRegex(fs.ResultsError, "/parts/punch: no such group"):
                     fs.read_blank(f, "punch")
 

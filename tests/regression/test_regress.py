@@ -123,6 +123,21 @@ class ReferenceFile(unittest.TestCase):
                 'searches = ["modified", "standard"]\nci_searches = ["modified"]\n[short]\n' + metric)
             self.assertEqual(regress.load_reference(case)[2], ["modified", "standard"])
 
+    def test_short_overrides_are_key_value_strings(self):
+        metric = '[short.metrics.m]\nfrom = "summary:x"\nvalue = 1.0\nrel = 0.01\nsource = "s"\n'
+        with tempfile.TemporaryDirectory() as tmp:
+            case = pathlib.Path(tmp)
+            (case / "reference.toml").write_text('[short]\nset = ["operations[0].stroke=10.0"]\n' + metric)
+            regress.load_reference(case)
+            for bad in ('set = "operations[0].stroke=10.0"', 'set = ["operations[0].stroke"]', "set = [1]"):
+                (case / "reference.toml").write_text(f"[short]\n{bad}\n" + metric)
+                with self.assertRaisesRegex(regress.ReferenceFileError, "short.set: expected a list"):
+                    regress.load_reference(case)
+            full = metric.replace("short", "full")
+            (case / "reference.toml").write_text('[short]\n' + metric + '[full]\nset = ["a=1"]\n' + full)
+            with self.assertRaisesRegex(regress.ReferenceFileError, "only the short version"):
+                regress.load_reference(case)
+
     def test_bounds(self):
         base = {"from": "summary:x", "source": "s"}
         self.check({**base, "kind": "published", "min": 0.5}, None)

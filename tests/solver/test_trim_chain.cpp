@@ -4,11 +4,18 @@
 // state to 3 mm.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/core.h>
 
 #include "casefile/case_config.hpp"
+#include "core/errors.hpp"
 #include "model/build_model.hpp"
+#include "results/hdf5_file.hpp"
 #include "solver/explicit_driver.hpp"
 #include "solver/formed_part.hpp"
 #include "solver/trim.hpp"
@@ -32,22 +39,6 @@ CaseConfig cup(double stroke) {
       CaseOptions{.set = {"draw_in=[]"}, .stroke = stroke, .end_time = {}, .search = {}});
 }
 
-BlankMesh mesh_of(const FormedPart& part) {
-  BlankMesh b;
-  b.mesh.name = "blank";
-  b.mesh.nodes = part.reference_nodes;
-  for (double tag : part.node_tags) {
-    b.mesh.gmsh_node_tags.push_back(static_cast<std::size_t>(tag));
-  }
-  b.mesh.quads = part.quads;
-  b.mesh.triangles = part.triangles;
-  for (const auto& [name, nodes] : part.groups) {
-    b.groups.push_back({name, nodes});
-  }
-  b.source = part.file;
-  return b;
-}
-
 TEST(TrimChain, ADrawTrimmedAndDrawnOn) {
   const fs::path first = output_folder("draw");
   RunOptions options;
@@ -66,7 +57,7 @@ TEST(TrimChain, ADrawTrimmedAndDrawnOn) {
   auto trimmed = std::make_shared<const FormedPart>(trim_by_removal(part, keep, &summary));
   EXPECT_GT(summary.elements_removed, 0);
   EXPECT_EQ(summary.piece_elements.size(), 1u);
-  const BlankMesh mesh = mesh_of(*trimmed);
+  const BlankMesh mesh = blank_mesh_of(*trimmed);
   const Model model = build_model(cup(3.0), &mesh);
   EXPECT_EQ(model.blank.mesh.nodes.cols(), trimmed->reference_nodes.cols());
   // Uniform sheet: the mass goes with the area kept.
@@ -86,6 +77,149 @@ TEST(TrimChain, ADrawTrimmedAndDrawnOn) {
   for (std::size_t k = 0; k < before.size(); ++k) {
     ASSERT_GE(s.shell.eps_p[k], before[k]) << k;
   }
+}
+
+// The same line as a case's operation: the cup drawn to 2 mm, trimmed, drawn on to 3 mm (the
+// punch restarting its ramp from where it stands, as after any operation it stood still in).
+const std::string kTrimChain =
+    "operations=[{name=\"OP10\", kind=\"forming\", stroke=2.0}, "
+    "{name=\"OP20-trim\", kind=\"trim\", line=[[-1, -1], [60, -1], [60, 60], [-1, 60]]}, "
+    "{name=\"OP30\", kind=\"forming\", stroke=3.0}]";
+
+CaseConfig cup_with(const std::vector<std::string>& set) {
+  return read_case(fs::path(SF_SOURCE_DIR) / "cases/square_cup_aluminium/case.toml",
+                   CaseOptions{.set = set, .stroke = {}, .end_time = {}, .search = {}});
+}
+
+TEST(TrimChain, ATrimOperationTrimsThePartAsItStandsAndTheRunGoesOnInTheSameResults) {
+  const CaseConfig config = cup_with({"control.stroke=0", kTrimChain});
+  const Model model = build_model(config);
+  const fs::path folder = output_folder("in_case");
+  RunOptions options;
+  options.output_directory = folder;
+  options.checkpoints = false;
+  options.rebuild.model = [&config](const BlankMesh& blank) { return build_model(config, &blank); };
+  SolutionState s;
+  const RunSummary summary = run_explicit(model, options, &s);
+
+  // The trimmed part is the first operation's part trimmed by the same line, field for field.
+  const FormedPart drawn = read_formed_part(operation_formed_part_path(folder, "OP10"));
+  const TrimOutline keep{
+      {Vec3(-1.0, -1.0, 0.0), Vec3(60.0, -1.0, 0.0), Vec3(60.0, 60.0, 0.0), Vec3(-1.0, 60.0, 0.0)},
+      Vec3(0.0, 0.0, -1.0),
+      true};
+  TrimSummary removed;
+  const FormedPart expected = trim_by_removal(drawn, keep, &removed);
+  const FormedPart trimmed = read_formed_part(operation_formed_part_path(folder, "OP20-trim"));
+  EXPECT_EQ(trimmed.quads, expected.quads);
+  for (const char* key : {"x", "v", "shell/eps_p", "shell/sxx", "shell/thickness", "time"}) {
+    EXPECT_EQ(trimmed.fields.at(key), expected.fields.at(key)) << key;
+  }
+  // The trimmed part as a file of its own: what it lacks (the forces, masses and offsets the
+  // next model makes, the contact history) listed, and read back as it was.
+  const fs::path by_hand = folder / "trimmed_by_hand.h5";
+  write_formed_part(by_hand, expected);
+  const FormedPart back = read_formed_part(by_hand);
+  EXPECT_EQ(back.fields, expected.fields);
+  EXPECT_EQ(back.quads, expected.quads);
+  EXPECT_EQ(back.groups, expected.groups);
+  EXPECT_FALSE(back.fields.contains("f_int"));
+  {
+    h5::File h5(by_hand, h5::FileMode::read_write);
+    const std::string left_out = h5.read_attribute_string("/state", "left_out");
+    EXPECT_NE(left_out.find("f_int"), std::string::npos) << left_out;
+    EXPECT_NE(left_out.find("contacts/0/stick_force"), std::string::npos) << left_out;
+    h5.write_attribute("/state", "left_out", std::string("mass"));  // the rest unlisted
+  }
+  try {
+    read_formed_part(by_hand);
+    ADD_FAILURE() << "a part lacking an unlisted field was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no entry /state/"), std::string::npos) << e.what();
+  }
+
+  ASSERT_EQ(s.shell.eps_p.size(), expected.fields.at("shell/eps_p").size());
+  for (std::size_t k = 0; k < s.shell.eps_p.size(); ++k) {
+    ASSERT_GE(s.shell.eps_p[k], expected.fields.at("shell/eps_p")[k]) << k;  // drawn on
+  }
+  EXPECT_NEAR(s.tools[0].travel, 3.0, 1e-9);
+
+  // One summary over the three operations; the trim took no time.
+  ASSERT_EQ(summary.operations.size(), 3u);
+  const OperationRecord& trim = summary.operations[1];
+  EXPECT_EQ(trim.kind, "trim");
+  EXPECT_EQ(trim.start_time, trim.end_time);
+  EXPECT_EQ(trim.start_time, summary.operations[0].end_time);
+  EXPECT_NE(trim.ended_by.find(fmt::format("{} of {} elements", removed.elements_removed,
+                                           removed.elements_before)),
+            std::string::npos)
+      << trim.ended_by;
+  EXPECT_LT(std::abs(summary.energies.balance_error()), 1e-3);
+  // The draw-in probes sat on the edge the trim took away.
+  for (const DrawInResult& d : summary.draw_ins) {
+    EXPECT_TRUE(std::isnan(d.computed)) << d.name;
+  }
+
+  // One results file: the frames after the trim have the trimmed mesh.
+  const h5::File file(folder / "results.h5", h5::FileMode::read_only);
+  EXPECT_EQ(file.read_attribute_string("/operations/1", "kind"), "trim");
+  EXPECT_EQ(file.shape("/parts/blank/topologies/1/connectivity").at(0),
+            static_cast<hsize_t>(expected.quads.cols()));
+  const int first_trimmed = file.read_attribute_int("/parts/blank/topologies/1", "first_frame");
+  EXPECT_EQ(first_trimmed, summary.operations[0].last_frame + 1);
+  EXPECT_EQ(
+      file.read_attribute_int(
+          "/parts/blank/frames/" + frame_group_name(summary.operations[2].last_frame), "topology"),
+      1);
+}
+
+TEST(TrimChain, ATrimWithoutAWayToBuildTheModelAgainIsRefused) {
+  const Model model = build_model(cup_with({"control.stroke=0", kTrimChain}));
+  RunOptions options;
+  options.output_directory = output_folder("no_rebuild");
+  options.checkpoints = false;
+  try {
+    run_explicit(model, options);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("operations[1] ('OP20-trim')"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(TrimChain, BadTrimsAreRefusedNamingTheKey) {
+  auto error = [](const std::string& operations) {
+    try {
+      cup_with({"control.stroke=0", operations});
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  const std::string draw = "{name=\"a\", kind=\"forming\", stroke=1.0}";
+  EXPECT_NE(
+      error("operations=[" + draw + ", {name=\"t\", kind=\"trim\"}]").find("operations[1].line"),
+      std::string::npos);
+  EXPECT_NE(error("operations=[" + draw + ", {name=\"t\", kind=\"trim\", line=[[0, 0], [1, 0]]}]")
+                .find("at least 3 points"),
+            std::string::npos);
+  EXPECT_NE(error("operations=[" + draw +
+                  ", {name=\"t\", kind=\"trim\", line=[[0, 0], [1, 0], [\"a\", 1]]}]")
+                .find("not a finite number"),
+            std::string::npos);
+  EXPECT_NE(
+      error("operations=[{name=\"t\", kind=\"trim\", line=[[0, 0], [1, 0], [1, 1]]}, " + draw + "]")
+          .find("not first"),
+      std::string::npos);
+  EXPECT_NE(error("operations=[" + draw +
+                  ", {name=\"t\", kind=\"trim\", line=[[0, 0], [1, 0], [1, 1]], "
+                  "tools=[\"punch\"]}]")
+                .find("operations[1].tools"),
+            std::string::npos);
+  EXPECT_NE(error("operations=[{name=\"a\", kind=\"forming\", stroke=1.0, "
+                  "line=[[0, 0], [1, 0], [1, 1]]}]")
+                .find("operations[0].line"),
+            std::string::npos);
 }
 
 }  // namespace
