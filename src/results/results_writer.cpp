@@ -480,6 +480,16 @@ ResultsWriter::~ResultsWriter() {
   }
 }
 
+int ResultsWriter::first_frame_at_or_after(double time) const {
+  if (parts_.empty()) {
+    return frame_count_;
+  }
+  const std::vector<XdmfFrame>& frames = parts_.front().frames;
+  const auto at = std::find_if(frames.begin(), frames.end(),
+                               [time](const XdmfFrame& f) { return f.time >= time; });
+  return static_cast<int>(at - frames.begin());
+}
+
 std::filesystem::path ResultsWriter::xdmf_file(const std::string& part) const {
   return directory_ / (part + ".xdmf");
 }

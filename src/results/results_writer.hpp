@@ -145,6 +145,8 @@ class ResultsWriter {
   const std::string& run_id() const { return run_id_; }
   /// Number of frames written so far.
   int frame_count() const { return frame_count_; }
+  /// The first frame at or after `time` (s) among those written (frame_count() if none is).
+  int first_frame_at_or_after(double time) const;
   /// History rows written to results.h5 so far (not counting buffered ones).
   std::size_t history_rows_written() const { return history_rows_written_; }
   /// Absolute path of the results directory.

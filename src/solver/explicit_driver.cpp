@@ -55,6 +55,9 @@ class Checkpoints {
 
   const std::filesystem::path& file() const { return file_; }
   const std::string& digest() const { return digest_; }
+  /// After a trim no checkpoint is written: the last is the one before it.
+  bool after_trim() const { return after_trim_; }
+  void set_after_trim() { after_trim_ = true; }
 
   // Whether the case's interval asks for one after this cycle (this process's clock).
   bool due(long cycle) const {
@@ -89,6 +92,7 @@ class Checkpoints {
   int cycles_;
   double seconds_;
   std::chrono::steady_clock::time_point last_;
+  bool after_trim_ = false;
 };
 
 // Reads the checkpoint into the state (every process reads the file) after checking that it
@@ -133,10 +137,14 @@ CheckpointInfo resume_state(const Model& model, const RunOptions& options,
   const std::string file = checkpoints.file().string();
   throw RunStopped(fmt::format(
       "Stopped by {} at t = {:.6e} s, cycle {}: the last frame is the state at the stop, and the "
-      "checkpoint is {}\nContinue with: sheetform run {} --restart {} -o {} (with this run's "
+      "checkpoint is {}{}\nContinue with: sheetform run {} --restart {} -o {} (with this run's "
       "--set, "
       "--search, --stroke or --end-time options)",
       *stop_signal_name() ? stop_signal_name() : "--stop-at-cycle", s.time, s.cycle, file,
+      checkpoints.after_trim()
+          ? " (written before the last trim: no checkpoint is written after a trim, a restart "
+            "trims again and gives the same bits)"
+          : "",
       model.case_file.string(), file, checkpoints.file().parent_path().string()));
 }
 
@@ -179,9 +187,12 @@ OperationRecord start_record(const OperationSequence& operations, const Solution
   r.kind = operations.kind(s.operation.index);
   r.start_time = s.operation.start_time;
   r.start_cycle = s.operation.start_cycle;
-  // The frame of its start: the previous operation's last (-1 after a restart inside it, whose
-  // frames before the restart this process does not know)
-  r.first_frame = output && s.cycle == s.operation.start_cycle ? output->frame_count() - 1 : -1;
+  // The frame of its start: the previous operation's last (after a restart inside it, the first
+  // frame at or after its start among those the results kept)
+  r.first_frame = !output                                  ? -1
+                  : s.cycle == s.operation.start_cycle ? output->frame_count() - 1
+                                                       : output->first_frame_at_or_after(
+                                                             s.operation.start_time);
   return r;
 }
 
@@ -502,6 +513,9 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
 
   RunRequestScope requests;
   Checkpoints checkpoints(model, options);
+  if (continuation) {
+    checkpoints.set_after_trim();
+  }
   OutputSchedule schedule(0.0, model.time.end_time, model.output.frames,
                           model.output.history_interval);
   LoopMark loop;

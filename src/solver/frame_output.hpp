@@ -62,6 +62,8 @@ class FrameOutput {
   void set_stress_geometry(const Matrix3X* x) { stress_geometry_ = x; }
   /// Frames written so far.
   int frame_count() const { return writer_->frame_count(); }
+  /// The first frame at or after `time` (s) among those written.
+  int first_frame_at_or_after(double time) const { return writer_->first_frame_at_or_after(time); }
   /// Writes operation number `index`'s record (results.h5 /operations/<index>).
   void write_operation(int index, const OperationRecord& record) {
     writer_->write_operation(index, record);

@@ -94,7 +94,7 @@ trim=(--set control.stroke=0 --set blank.element_size=1.875
 /usr/bin/python3 - "$work/trim-2" <<'PY' || fail "trim at 2 ranks: no trimmed mesh in the results"
 import sys, h5py
 with h5py.File(sys.argv[1] + "/results.h5") as f:
-    assert f["operations/1"].attrs["kind"] == "trim"
+    assert f["operations/1"].attrs["kind"] in ("trim", b"trim")
     trimmed = f["parts/blank/topologies/1/connectivity"].shape[0]
     assert 0 < trimmed < f["parts/blank/connectivity"].shape[0], trimmed
 PY

@@ -5,7 +5,8 @@
 # cached search, and mass scaling; stopped at the first cycle, at a frame's cycle, twice in a row,
 # restarted on 2 threads, by a real SIGTERM at an arbitrary moment; Yld89 with back stresses; a SIGUSR1 checkpoint that the
 # run goes on from; the U-channel stopped during the forming and restarted, its implicit
-# springback after the restart; at 2 ranks stopped and restarted serially and at 3 ranks. Then
+# springback after the restart; a trim between two draws stopped before and after the trim; at 2
+# ranks stopped and restarted serially and at 3 ranks. Then
 # what a restart refuses (a changed case, another run's folder) and what it allows (a longer
 # stroke), and the results folder of an earlier run (refused without --overwrite).
 #   restart_bitwise.sh SHEETFORM SOURCE_DIR WORK_DIR MPIEXEC
@@ -128,6 +129,21 @@ run uch_stop 5 "${uch[@]}" -o "$work/uch_stop" --stop-at-cycle 3000
 run uch_end 0 "${uch[@]}" -o "$work/uch_stop" --restart "$work/uch_stop/checkpoint.h5"
 grep -q '"springback"' "$work/uch_stop/summary.json" || fail "U-channel restart: no springback"
 same uch "$work/uch" "$work/uch_stop"
+
+# A trim between two draws (issue 32): stopped before the trim, and after it (no checkpoint is
+# written after a trim: the restart goes on from the one before it and trims again); both give
+# the uninterrupted run's bits, the trimmed mesh's frames and the operations' records included.
+trim=(--set control.stroke=0 --set blank.element_size=1.875 -q --threads 1
+      --set "operations=[{name=\"draw\", kind=\"forming\", stroke=0.3}, {name=\"trim\", kind=\"trim\", line=[[-1, -1], [50, -1], [50, 50], [-1, 50]]}, {name=\"on\", kind=\"forming\", stroke=0.5}]")
+run trim 0 "$cup_case" "${trim[@]}" -o "$work/trim"
+for stop in 500 1400; do  # the trim is at cycle 1010 of 1835
+  run "trim_stop_$stop" 5 "$cup_case" "${trim[@]}" -o "$work/trim_$stop" --stop-at-cycle "$stop"
+  run "trim_end_$stop" 0 "$cup_case" "${trim[@]}" -o "$work/trim_$stop" \
+    --restart "$work/trim_$stop/checkpoint.h5"
+  same "trim_$stop" "$work/trim" "$work/trim_$stop"
+done
+grep -q "written before the last trim" "$work/trim_stop_1400.log" ||
+  fail "a stop after the trim does not say its checkpoint is before the trim"
 
 # Ranks: stopped at 2 ranks, restarted serially and at 3 ranks (no mass scaling over ranks).
 ranks=(--stroke 0.5 --set blank.element_size=1.875 -q --threads 1)
