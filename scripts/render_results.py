@@ -1,17 +1,19 @@
 #!/usr/bin/env pvbatch
-"""Renders a sheetform run's blank at its last frame: thinning and plastic strain images.
+"""Renders a sheetform run's blank at a frame (the last by default): thinning and plastic strain images.
 
 Run with ParaView's batch Python, under a virtual display:
 
     xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" pvbatch scripts/render_results.py \
-        RESULTS_DIR [-o OUT_DIR] [--size 1200 800] [--no-tools] [--camera-direction X Y Z]
+        RESULTS_DIR [-o OUT_DIR] [--size 1200 800] [--no-tools] [--camera-direction X Y Z] \
+        [--frame N] [--prefix NAME_]
 
 (`xvfb-run -a pvbatch ...` works too, but Xvfb's default server reset when a client
 disconnects makes about one start in ten fail with "bad X server connection": -noreset avoids
 it; see docs/post-processing.md.)
 
-Opens RESULTS_DIR/blank.xdmf with Xdmf3ReaderS, goes to its last time step and writes, in OUT_DIR
-(default RESULTS_DIR), two PNG images of the requested size in pixels (width height):
+Opens RESULTS_DIR/blank.xdmf with Xdmf3ReaderS, goes to its last time step (or frame N, counted
+from 0, negative from the end) and writes, in OUT_DIR (default RESULTS_DIR), two PNG images of the
+requested size in pixels (width height), their names prefixed by --prefix:
 
 - `thinning.png`: thinning in per cent, 100 (1 - t / t0), from the cell array `thickness` (mm)
   with a Calculator; t0 is the blank's initial thickness, `[blank] thickness` of
@@ -58,6 +60,9 @@ def parse_args():
                         metavar=("X", "Y", "Z"),
                         help="from the blank's centre towards the camera, z up (default "
                              f"{' '.join(map(str, CAMERA_DIRECTION))})")
+    parser.add_argument("--frame", type=int, default=-1,
+                        help="the output frame to show, from 0 (negative: from the end; default -1)")
+    parser.add_argument("--prefix", default="", help="put before each image's file name")
     args = parser.parse_args()
     if args.size[0] < 16 or args.size[1] < 16:
         parser.error(f"--size {args.size[0]} {args.size[1]}: at least 16 x 16 pixels")
@@ -142,7 +147,7 @@ def annotation(simple, case, results_dir, times):
         simple.Delete(reader)
         if travel is not None:
             text += f", {case.stroke_tool} travel {travel:.3f} mm"
-    text += f" (last frame, {len(times) - 1})"
+    text += f" (frame {len(times) - 1})"
     return f"{case.title}\n{text}" if case.title else text
 
 
@@ -205,7 +210,7 @@ def render(simple, view, args, case, blank, times, out_dir):
         bar.AutomaticLabelFormat = 0
         bar.LabelFormat = bar.RangeLabelFormat = "%-#.3g"
         display.SetScalarBarVisibility(view, True)
-        path = os.path.join(out_dir, file_name)
+        path = os.path.join(out_dir, args.prefix + file_name)
         simple.SaveScreenshot(path, view, ImageResolution=list(args.size),
                               TransparentBackground=0)
         display.SetScalarBarVisibility(view, False)
@@ -227,6 +232,9 @@ def main():
 
     simple._DisableFirstRenderCameraReset()
     blank, times = open_blank(simple, blank_file)
+    if not -len(times) <= args.frame < len(times):
+        raise InputProblem(f"{blank_file}: no frame {args.frame}: it has frames 0 to {len(times) - 1}")
+    times = times[: args.frame % len(times) + 1]  # the frame shown is the last of these
     view = simple.CreateView("RenderView")
     try:
         render(simple, view, args, case, blank, times, out_dir)

@@ -99,6 +99,11 @@ expect "render_results.py --size 640 480 -o, no tools" 0 "wrote .*thinning.png" 
 for image in thinning plastic_strain; do png_ok "$image.png 640 x 480" "$work/render/$image.png" 640 480; done
 expect "render_results.py: missing folder" 2 "render_results: $work/nowhere: no such folder" -- \
   "${xvfb[@]}" pvbatch "$src/scripts/render_results.py" "$work/nowhere"
+expect "render_results.py --frame 0 --prefix" 0 "wrote .*first_thinning.png" -- \
+  "${xvfb[@]}" pvbatch "$src/scripts/render_results.py" "$run" -o "$work/render" --size 640 480 \
+  --frame 0 --prefix first_
+expect "render_results.py: no such frame" 2 "no frame 999: it has frames 0 to" -- \
+  "${xvfb[@]}" pvbatch "$src/scripts/render_results.py" "$run" -o "$work/render" --frame 999
 mkdir -p "$work/empty"
 expect "render_results.py: missing blank.xdmf" 2 "$work/empty/blank.xdmf: no such file" -- \
   "${xvfb[@]}" pvbatch "$src/scripts/render_results.py" "$work/empty"
