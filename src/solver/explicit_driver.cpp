@@ -189,10 +189,10 @@ OperationRecord start_record(const OperationSequence& operations, const Solution
   r.start_cycle = s.operation.start_cycle;
   // The frame of its start: the previous operation's last (after a restart inside it, the first
   // frame at or after its start among those the results kept)
-  r.first_frame = !output                                  ? -1
-                  : s.cycle == s.operation.start_cycle ? output->frame_count() - 1
-                                                       : output->first_frame_at_or_after(
-                                                             s.operation.start_time);
+  r.first_frame = !output ? -1
+                  : s.cycle == s.operation.start_cycle
+                      ? output->frame_count() - 1
+                      : output->first_frame_at_or_after(s.operation.start_time);
   return r;
 }
 
