@@ -460,7 +460,10 @@ RunSummary go_on_after_trim(const Model& model, const RunOptions& options, const
         "floats free in the operations after it\n",
         op.entry, summary.piece_elements.size());
   }
+  const auto rebuild_start = std::chrono::steady_clock::now();
   const Model next = options.rebuild.model(blank_mesh_of(*trimmed));
+  log_info("Trim        the model built again on the trimmed mesh in {:.2f} s\n",
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - rebuild_start).count());
   RunOptions on = options;
   on.start_part = trimmed;
   on.restart_file.clear();
