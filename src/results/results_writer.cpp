@@ -16,6 +16,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "core/comma_list.hpp"
 #include "core/errors.hpp"
 #include "core/log.hpp"
 #include "core/result_name.hpp"
@@ -122,17 +123,6 @@ std::string field_list(const std::vector<FieldView>& fields) {
             (field.center == FieldCenter::cell ? "/cell" : "/node");
   }
   return list;
-}
-
-std::vector<std::string> split_list(const std::string& list) {
-  std::vector<std::string> items;
-  std::size_t begin = 0;
-  while (begin < list.size()) {
-    const std::size_t comma = std::min(list.find(',', begin), list.size());
-    items.push_back(list.substr(begin, comma - begin));
-    begin = comma + 1;
-  }
-  return items;
 }
 
 // Flushes `file` to the disk (HDF5 1.10's default driver does not), so that what the commit
@@ -410,7 +400,8 @@ void ResultsWriter::read_kept_frames(const h5::File& file, const Resume& resume)
       frame.time = file.read_attribute_double(group, "time");
       frame.cycle = file.read_attribute_int(group, "cycle");
       frame.coordinates_dataset = group + "/coordinates";
-      for (const std::string& entry : split_list(file.read_attribute_string(group, "fields"))) {
+      for (const std::string& entry :
+           split_comma_list(file.read_attribute_string(group, "fields"))) {
         const std::size_t slash = entry.rfind('/');
         XdmfAttribute attribute;
         attribute.name = entry.substr(0, slash);

@@ -51,13 +51,13 @@ class Checkpoints {
         digest_(case_digest(model)),
         cycles_(model.output.checkpoint_cycles),
         seconds_(60.0 * model.output.checkpoint_minutes),
-        last_(std::chrono::steady_clock::now()) {}
+        last_(std::chrono::steady_clock::now()),
+        after_trim_(options.continuation != nullptr) {}
 
   const std::filesystem::path& file() const { return file_; }
   const std::string& digest() const { return digest_; }
   /// After a trim no checkpoint is written: the last is the one before it.
   bool after_trim() const { return after_trim_; }
-  void set_after_trim() { after_trim_ = true; }
 
   // Whether the case's interval asks for one after this cycle (this process's clock).
   bool due(long cycle) const {
@@ -92,7 +92,7 @@ class Checkpoints {
   int cycles_;
   double seconds_;
   std::chrono::steady_clock::time_point last_;
-  bool after_trim_ = false;
+  bool after_trim_;
 };
 
 // Reads the checkpoint into the state (every process reads the file) after checking that it
@@ -516,9 +516,6 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
 
   RunRequestScope requests;
   Checkpoints checkpoints(model, options);
-  if (continuation) {
-    checkpoints.set_after_trim();
-  }
   OutputSchedule schedule(0.0, model.time.end_time, model.output.frames,
                           model.output.history_interval);
   LoopMark loop;

@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "core/build_info.hpp"
+#include "core/comma_list.hpp"
 #include "core/errors.hpp"
 #include "results/atomic_hdf5_write.hpp"
 #include "results/hdf5_file.hpp"
@@ -94,20 +95,9 @@ std::map<std::string, StateField> expected_fields(std::size_t tools, std::size_t
 
 // A field a part may lack: one the next model makes again from its mesh (a trimmed part's
 // forces, masses and offsets) or starts afresh (a contact pair's history).
-bool may_be_left_out(const std::string& key, const StateField& field) {
-  return key.starts_with("contacts/") || field.mapping == FieldMapping::recompute ||
+bool may_be_left_out(const StateField& field) {
+  return field.place == FieldPlace::contact || field.mapping == FieldMapping::recompute ||
          field.mapping == FieldMapping::reset;
-}
-
-std::vector<std::string> split_list(const std::string& text) {
-  std::vector<std::string> items;
-  std::size_t start = 0;
-  while (start < text.size()) {
-    const std::size_t comma = std::min(text.find(',', start), text.size());
-    items.push_back(text.substr(start, comma - start));
-    start = comma + 1;
-  }
-  return items;
 }
 
 void write_header(h5::File& out) {
@@ -223,25 +213,19 @@ void write_formed_part(const std::filesystem::path& file, const FormedPart& part
       out.write_attribute(path, "place", std::string(place_name(field.place)));
       out.write_attribute(path, "unit", std::string(field.unit));
     }
-    // The groups a part left without fields (a contact pair's) still name their tool.
-    auto group = [&out](const std::string& path) {
-      std::string so_far;
-      for (std::size_t slash = 1; slash != std::string::npos;) {
-        slash = path.find('/', slash + 1);
-        so_far = path.substr(0, slash);
-        if (!out.exists(so_far)) {
-          out.create_group(so_far);
-        }
-      }
-      return path;
-    };
-    out.write_attribute(group("/state"), "left_out", left_out);
+    // The groups a part left without fields (a contact pair's) still name their tool
+    // (create_group makes a missing group and its parents, and leaves one that is there).
+    out.create_group("/state");
+    out.write_attribute("/state", "left_out", left_out);
     for (std::size_t t = 0; t < part.tools.size(); ++t) {
-      out.write_attribute(group("/state/tools/" + std::to_string(t)), "name", part.tools[t]);
+      const std::string tool = "/state/tools/" + std::to_string(t);
+      out.create_group(tool);
+      out.write_attribute(tool, "name", part.tools[t]);
     }
     for (std::size_t c = 0; c < part.contact_tools.size(); ++c) {
-      out.write_attribute(group("/state/contacts/" + std::to_string(c)), "tool",
-                          part.contact_tools[c]);
+      const std::string contact = "/state/contacts/" + std::to_string(c);
+      out.create_group(contact);
+      out.write_attribute(contact, "tool", part.contact_tools[c]);
     }
   });
 }
@@ -368,10 +352,10 @@ FormedPart read_checked_part(const std::filesystem::path& file) {
     // A part trimmed (solver/trim.hpp) lists the fields the next model makes again.
     const std::vector<std::string> left_out =
         in.has_attribute("/state", "left_out")
-            ? split_list(in.read_attribute_string("/state", "left_out"))
+            ? split_comma_list(in.read_attribute_string("/state", "left_out"))
             : std::vector<std::string>{};
     for (const auto& [key, field] : expected_fields(tools, contacts)) {
-      if (!in.exists("/state/" + key) && may_be_left_out(key, field) &&
+      if (!in.exists("/state/" + key) && may_be_left_out(field) &&
           std::find(left_out.begin(), left_out.end(), key) != left_out.end()) {
         continue;
       }
@@ -454,8 +438,7 @@ class FieldCopy {
     }
     const auto found = part_.fields.find(part_key);
     if (found == part_.fields.end()) {
-      if (field.mapping == FieldMapping::recompute || field.mapping == FieldMapping::reset ||
-          field.place == FieldPlace::contact) {
+      if (may_be_left_out(field)) {
         return;  // left out by a trim: the model's own, recomputed (solver/trim.hpp)
       }
       throw InputError(

@@ -53,18 +53,25 @@ grep -q '"springback"' "$work/uch-2/summary.json" || fail "U-channel at 2 ranks:
 /usr/bin/python3 "$src/scripts/compare_results.py" "$work/uch-serial" "$work/uch-2" ||
   fail "U-channel at 2 ranks: not the serial bits"
 
+# serial_and_two_ranks NAME OPTIONS...: the steel cup serially and at 2 ranks ($work/NAME-serial,
+# $work/NAME-2), the same bits.
+serial_and_two_ranks() {
+  local name="$1"; shift
+  "$sheetform" run "$work/case/case.toml" -q -o "$work/$name-serial" "$@" \
+    > "$work/$name-serial.log" 2>&1 || { fail "$name serial:"; tail -5 "$work/$name-serial.log"; }
+  "$mpiexec" -np 2 --bind-to none "$sheetform" run "$work/case/case.toml" -q -o "$work/$name-2" \
+    "$@" > "$work/$name-2.log" 2>&1 || { fail "$name at 2 ranks:"; tail -5 "$work/$name-2.log"; }
+  /usr/bin/python3 "$src/scripts/compare_results.py" "$work/$name-serial" "$work/$name-2" ||
+    fail "$name at 2 ranks: not the serial bits"
+}
+
 # The press line over ranks (issue 32, item 8): a closing with the punch out of play, ended by the
 # holder's push, then the draw; 2 ranks give the serial bits, and the operations' records agree.
 close='{name="close", kind="closing", tools=["holder", "die"], end="force", tool="holder", '
 close+='force=4000.0, time=0.002}'
 ops=(--set control.stroke=0 --set blank.element_size=1.875
      --set "operations=[$close, {name=\"draw\", kind=\"forming\", stroke=0.4}]")
-"$sheetform" run "$work/case/case.toml" -q -o "$work/ops-serial" "${ops[@]}" \
-  > "$work/ops-serial.log" 2>&1 || { fail "operations serial:"; tail -5 "$work/ops-serial.log"; }
-"$mpiexec" -np 2 --bind-to none "$sheetform" run "$work/case/case.toml" -q -o "$work/ops-2" \
-  "${ops[@]}" > "$work/ops-2.log" 2>&1 || { fail "operations at 2 ranks:"; tail -5 "$work/ops-2.log"; }
-/usr/bin/python3 "$src/scripts/compare_results.py" "$work/ops-serial" "$work/ops-2" ||
-  fail "operations at 2 ranks: not the serial bits"
+serial_and_two_ranks ops "${ops[@]}"
 /usr/bin/python3 - "$work/ops-serial" "$work/ops-2" <<'PY' || fail "operations at 2 ranks: the records or formed parts differ"
 import sys, h5py, numpy as np
 a, b = sys.argv[1], sys.argv[2]
@@ -85,12 +92,7 @@ PY
 # serial bits, the trimmed mesh's frames included.
 trim=(--set control.stroke=0 --set blank.element_size=1.875
       --set "operations=[{name=\"draw\", kind=\"forming\", stroke=0.3}, {name=\"trim\", kind=\"trim\", line=[[-1, -1], [50, -1], [50, 50], [-1, 50]]}, {name=\"on\", kind=\"forming\", stroke=0.5}]")
-"$sheetform" run "$work/case/case.toml" -q -o "$work/trim-serial" "${trim[@]}" \
-  > "$work/trim-serial.log" 2>&1 || { fail "trim serial:"; tail -5 "$work/trim-serial.log"; }
-"$mpiexec" -np 2 --bind-to none "$sheetform" run "$work/case/case.toml" -q -o "$work/trim-2" \
-  "${trim[@]}" > "$work/trim-2.log" 2>&1 || { fail "trim at 2 ranks:"; tail -5 "$work/trim-2.log"; }
-/usr/bin/python3 "$src/scripts/compare_results.py" "$work/trim-serial" "$work/trim-2" ||
-  fail "trim at 2 ranks: not the serial bits"
+serial_and_two_ranks trim "${trim[@]}"
 /usr/bin/python3 - "$work/trim-2" <<'PY' || fail "trim at 2 ranks: no trimmed mesh in the results"
 import sys, h5py
 with h5py.File(sys.argv[1] + "/results.h5") as f:
