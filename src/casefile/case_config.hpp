@@ -237,6 +237,17 @@ struct OperationConfig {
   /// mm, a trim's line: a closed polyline (the last point joins the first), projected along
   /// `direction` onto the part as it stands
   std::vector<std::array<double, 3>> line;
+  /// A trim's line from a file (absolute; empty: none): a .geo or .msh file's 1-D physical group
+  /// `line_group`, or a CAD file's curves `line_curves` (all when empty), meshed by gmsh into
+  /// points `line_element_size` apart and joined into one closed line
+  std::filesystem::path line_file;
+  std::string line_group = "trim";
+  std::vector<int> line_curves;
+  double line_element_size = 1.0;  ///< mm
+  /// A trim's line as the outline of this tool (its surface projected along `direction`, where
+  /// the tool stands at the trim) grown by line_offset; empty: none
+  std::string line_tool;
+  double line_offset = 0.0;                         ///< mm, >= 0
   std::array<double, 3> direction{0.0, 0.0, -1.0};  ///< -, a trim's projection (normalised)
   Keep keep = Keep::inside;
 };

@@ -8,10 +8,12 @@
 #include <optional>
 
 #include "casefile/case_fields.hpp"
+#include "meshing/mesh_import.hpp"
 
 namespace sf {
 namespace {
 
+namespace fs = std::filesystem;
 using Op = OperationConfig;
 using Kind = OperationConfig::Kind;
 using End = OperationConfig::End;
@@ -96,6 +98,49 @@ void read_line(const TomlSection& s, Op& o, Presence presence) {
       p[c] = *v;
     }
     o.line.push_back(p);
+  }
+}
+
+// `line_curves`: whole curve tags >= 1.
+void read_curve_tags(const TomlSection& s, Op& o, Presence presence) {
+  std::vector<double> tags;
+  if (s.read_numbers("line_curves", tags, at_least(1.0, "curve tags"), 1, 100000, presence)) {
+    for (const double t : tags) {
+      if (t != std::floor(t) || t > 2147483647.0) {
+        s.fail_value("line_curves", "whole curve tags (integers >= 1)");
+      }
+      o.line_curves.push_back(static_cast<int>(t));
+    }
+  }
+}
+
+// The formats a trim line's file may have: a .geo or .msh with a physical curve, or CAD curves.
+bool is_line_format(const fs::path& file) {
+  const std::optional<MeshFormat> format = find_mesh_format(file);
+  return format && (*format == MeshFormat::geo || *format == MeshFormat::msh || is_cad(*format));
+}
+
+bool line_file_is(const Op& o, bool (*test)(MeshFormat)) {
+  const std::optional<MeshFormat> format = find_mesh_format(o.line_file);
+  return trims(o) && format && test(*format);
+}
+
+bool named_curve_format(MeshFormat f) {
+  return f == MeshFormat::geo || f == MeshFormat::msh;
+}
+
+// A trim's line comes from exactly one of `line`, `line_file` and `line_tool`.
+void check_line_source(const TomlSection& s, const Op& o, const CaseConfig& config) {
+  const int given = !o.line.empty() + !o.line_file.empty() + !o.line_tool.empty();
+  const char* expected = "one of line (a polyline), line_file (a curve of a file) or line_tool";
+  if (given == 0) {
+    s.fail_missing("line", expected);
+  }
+  if (given > 1) {
+    s.fail_value(o.line.empty() ? "line_file" : "line", fmt::format("{}, not more", expected));
+  }
+  if (!o.line_tool.empty() && !config.find_tool(o.line_tool)) {
+    s.fail_value("line_tool", "the name of a [[tools]] entry");
   }
 }
 
@@ -232,8 +277,71 @@ FieldTable<Op> make_operation_fields() {
                                 "`direction` onto the part as it stands; an element is kept when "
                                 "its centre projects on the kept side"},
                                read_line, write_line)
-                  .required()
-                  .when(trims, "`\"trim\"` only", "only a trim has a line"));
+                  .when(trims, "`\"trim\"` only", "only a trim has a line")
+                  .shown_default("one of `line`, `line_file`, `line_tool`")
+                  .write_if([](const Op& o) { return !o.line.empty(); }));
+  t.push_back(custom_field<Op>(
+                  {"line_file",
+                   "string",
+                   "",
+                   {},
+                   "a trim's line from a file, relative to the case file's folder "
+                   "(stored absolute), must exist: a `.geo` or `.msh` file's 1-D "
+                   "physical group `line_group`, or the curves `line_curves` of a "
+                   "CAD file (`.step`, `.stp`, `.iges`, `.igs`, `.brep`); gmsh "
+                   "meshes the curves into points `line_element_size` apart, which "
+                   "join into one closed line (ends within a hundredth of "
+                   "`line_element_size` are one point)"},
+                  [](const TomlSection& s, Op& o, Presence) {
+                    if (s.has("line_file")) {
+                      o.line_file = read_existing_file(
+                          s, "line_file", is_line_format,
+                          "a .geo, .msh, .step, .stp, .iges, .igs or .brep file");
+                    }
+                  },
+                  [](TomlWriter& w, const Op& o) { w.string("line_file", o.line_file.string()); })
+                  .when(trims, "`\"trim\"` only", "only a trim has a line")
+                  .shown_default("none")
+                  .write_if([](const Op& o) { return !o.line_file.empty(); }));
+  t.push_back(string_field<Op>("line_group", &Op::line_group,
+                               "the 1-D physical group (`Physical Curve`) of `line_file` that is "
+                               "the line")
+                  .when([](const Op& o) { return line_file_is(o, named_curve_format); },
+                        "`line_file` `.geo` or `.msh` only",
+                        "a CAD file's curves are chosen by line_curves"));
+  t.push_back(
+      custom_field<Op>({"line_curves",
+                        "array of integers",
+                        "all",
+                        {},
+                        "the CAD file's curve tags that form the line (open the file in "
+                        "the gmsh GUI to see its curve tags)"},
+                       read_curve_tags,
+                       [](TomlWriter& w, const Op& o) {
+                         w.numbers("line_curves",
+                                   std::vector<double>(o.line_curves.begin(), o.line_curves.end()),
+                                   "the CAD file's curve tags");
+                       })
+          .when([](const Op& o) { return line_file_is(o, is_cad); }, "`line_file` CAD only",
+                "a .geo or .msh names its line by line_group")
+          .write_if([](const Op& o) { return !o.line_curves.empty(); }));
+  t.push_back(number_field<Op>("line_element_size", &Op::line_element_size, greater_than(0.0, "mm"),
+                               "the spacing of the line's points along the curves (gmsh's "
+                               "largest element size)")
+                  .when([](const Op& o) { return line_file_is(o, is_meshed); },
+                        "`line_file` `.geo` or CAD only", "a .msh file's line is read as it is"));
+  t.push_back(string_field<Op>("line_tool", &Op::line_tool,
+                               "a trim's line as the outline of this tool: its surface, where it "
+                               "stands at the trim, projected along `direction`; an element is "
+                               "inside when its centre projects within `line_offset` of it")
+                  .when(trims, "`\"trim\"` only", "only a trim has a line")
+                  .shown_default("none")
+                  .write_if([](const Op& o) { return !o.line_tool.empty(); }));
+  t.push_back(number_field<Op>("line_offset", &Op::line_offset, at_least(0.0, "mm"),
+                               "the tool's outline grown outwards by it (a trim at a distance "
+                               "from the punch's outline)")
+                  .when([](const Op& o) { return trims(o) && !o.line_tool.empty(); },
+                        "with `line_tool` only", "only a tool's outline is grown"));
   t.push_back(direction_field<Op>("direction", &Op::direction,
                                   "a trim's direction of projection (the press direction)")
                   .when(trims, "`\"trim\"` only", "only a trim has a direction"));
@@ -430,6 +538,9 @@ void read_operations(const TomlSection& top, CaseConfig& config) {
     }
     read_motions(s, config, o);
     check_stroke_tool(s, o, config);
+    if (trims(o)) {
+      check_line_source(s, o, config);
+    }
     config.operations.push_back(std::move(o));
   }
   if (!sections.empty()) {

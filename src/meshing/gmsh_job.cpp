@@ -77,6 +77,13 @@ void mesh_surfaces(const GmshJob& job, MeshFormat format) {
   });
 }
 
+void mesh_curves(const GmshJob& job, MeshFormat format) {
+  run_gmsh_step(job.file, "meshing in 1-D", [&] {
+    set_sizes(job, format);
+    gmsh::model::mesh::generate(1);
+  });
+}
+
 // What the parent needs before any group is taken: nodes, and named parts.
 void check_not_empty(const std::filesystem::path& file) {
   std::size_t nodes = 0;
@@ -128,13 +135,22 @@ int run_gmsh_job(const GmshJob& job, const std::filesystem::path& scratch,
     check_file_is_whole(job.file, format);
     GmshSession session;
     open_file(job, format, scratch);
-    if (is_meshed(format) && job.element_size > 0.0) {
+    if (job.import.curves_only) {
+      // a curve (a trim line): meshed in 1-D, a few thousand points at most
+      if (is_meshed(format)) {
+        mesh_curves(job, format);
+      }
+      if (is_cad(format)) {
+        run_gmsh_step(job.file, "forming the curve's group",
+                      [&] { group_imported_curves(job.file, job.import); });
+      }
+    } else if (is_meshed(format) && job.element_size > 0.0) {
       check_element_count(job, reporter);
     }
-    if (is_meshed(format)) {
+    if (is_meshed(format) && !job.import.curves_only) {
       mesh_surfaces(job, format);
     }
-    if (is_imported(format)) {
+    if (is_imported(format) && !job.import.curves_only) {
       run_gmsh_step(job.file, "forming the part's group",
                     [&] { group_imported_surfaces(job.file, job.import); });
     }

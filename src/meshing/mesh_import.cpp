@@ -105,6 +105,36 @@ void set_cad_read_options(MeshFormat format, const MeshImportOptions& options) {
   gmsh::option::setNumber("Geometry.OCCImportLabels", 0);  // names are the case's, not the file's
 }
 
+namespace {
+
+// The entities of dimension `dim` (2 surfaces, 1 curves) listed in `tags` (all when empty) made
+// the physical group `name`; InputError naming the file for a tag the file lacks or no entity.
+void group_entities(const std::filesystem::path& file, int dim, const std::vector<int>& tags,
+                    const std::string& name) {
+  const char* kind = dim == 2 ? "surface" : "curve";
+  gmsh::vectorpair entities;
+  gmsh::model::getEntities(entities, dim);
+  std::vector<int> all;
+  for (const auto& [d, tag] : entities) {
+    all.push_back(tag);
+  }
+  std::sort(all.begin(), all.end());
+  if (all.empty()) {
+    throw InputError(fmt::format("'{}': no {}s in the file", file.string(), kind));
+  }
+  const std::vector<int> chosen = tags.empty() ? all : tags;
+  for (const int tag : chosen) {
+    if (!std::binary_search(all.begin(), all.end(), tag)) {
+      throw InputError(fmt::format("'{}': {} {} is not in the file (its {}s: {})", file.string(),
+                                   kind, tag, kind, fmt::join(all, ", ")));
+    }
+  }
+  const int group = gmsh::model::addPhysicalGroup(dim, chosen);
+  gmsh::model::setPhysicalName(dim, group, name);
+}
+
+}  // namespace
+
 void group_imported_surfaces(const std::filesystem::path& file, const MeshImportOptions& options) {
   gmsh::vectorpair groups;
   gmsh::model::getPhysicalGroups(groups);
@@ -125,25 +155,12 @@ void group_imported_surfaces(const std::filesystem::path& file, const MeshImport
     return;
   }
   gmsh::model::removePhysicalGroups();  // unnamed ones (a UNV file's material numbers)
-  gmsh::vectorpair entities;
-  gmsh::model::getEntities(entities, 2);
-  std::vector<int> all;
-  for (const auto& [dim, tag] : entities) {
-    all.push_back(tag);
-  }
-  std::sort(all.begin(), all.end());
-  if (all.empty()) {
-    throw InputError(fmt::format("'{}': no surfaces in the file", file.string()));
-  }
-  const std::vector<int> chosen = options.surfaces.empty() ? all : options.surfaces;
-  for (const int tag : chosen) {
-    if (!std::binary_search(all.begin(), all.end(), tag)) {
-      throw InputError(fmt::format("'{}': surface {} is not in the file (its surfaces: {})",
-                                   file.string(), tag, fmt::join(all, ", ")));
-    }
-  }
-  const int group = gmsh::model::addPhysicalGroup(2, chosen);
-  gmsh::model::setPhysicalName(2, group, options.group);
+  group_entities(file, 2, options.surfaces, options.group);
+}
+
+void group_imported_curves(const std::filesystem::path& file, const MeshImportOptions& options) {
+  gmsh::model::removePhysicalGroups();
+  group_entities(file, 1, options.curves, options.group);
 }
 
 }  // namespace sf

@@ -57,6 +57,11 @@ struct MeshImportOptions {
   std::vector<int> surfaces;
   /// Imported formats: the name of the physical group the surfaces form (the case's group).
   std::string group;
+  /// A part made of curves (a trim line): gmsh meshes the file in 1-D only, and a CAD file's
+  /// curves `curves` (all when empty) become the 1-D physical group `group` (not its surfaces).
+  bool curves_only = false;
+  /// CAD, curves_only: the curve tags that form the part (empty: every curve of the file).
+  std::vector<int> curves;
 };
 
 /// Sets gmsh's options for reading a CAD file of `format` (length unit, scaling, sewing of IGES
@@ -69,5 +74,10 @@ void set_cad_read_options(MeshFormat format, const MeshImportOptions& options);
 /// the file for a surface list given for a file with named groups, a listed surface that does
 /// not exist (listing those that do), or no surface at all.
 void group_imported_surfaces(const std::filesystem::path& file, const MeshImportOptions& options);
+
+/// After a CAD file is read and meshed in 1-D (options.curves_only): its curves `options.curves`
+/// (all when empty) become the 1-D physical group `options.group`. InputError naming the file for
+/// a listed curve that does not exist (listing those that do), or no curve at all.
+void group_imported_curves(const std::filesystem::path& file, const MeshImportOptions& options);
 
 }  // namespace sf

@@ -137,7 +137,9 @@ GmshModel load_mesh_source(const CaseConfig& config, const MeshSourceConfig& mes
                                    .curvature_elements = mesh.curvature_elements,
                                    .chord_error = mesh.chord_error,
                                    .surfaces = mesh.surfaces,
-                                   .group = mesh.group};
+                                   .group = mesh.group,
+                                   .curves_only = false,
+                                   .curves = {}};
     return load_gmsh_model(mesh.file, mesh.element_size, recombine, mesh.parameters, import,
                            mesh_limits(config.limits));
   } catch (const GeoParameterError& error) {

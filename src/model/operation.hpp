@@ -38,6 +38,10 @@ struct Operation {
   /// A trim's line (mm, a closed polyline), the direction it is projected along and the side
   /// kept (solver/trim.hpp).
   std::vector<Vec3> trim_line;
+  /// Or (trim_line empty) the outline of this tool where it stands at the trim, grown by
+  /// trim_offset (mm)
+  int trim_tool = -1;
+  double trim_offset = 0.0;
   Vec3 trim_direction = Vec3(0.0, 0.0, -1.0);
   bool keep_inside = true;
 };

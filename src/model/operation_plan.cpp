@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include "core/errors.hpp"
+#include "meshing/curve_loop.hpp"
+#include "meshing/gmsh_reader.hpp"
 #include "model/tool_clearance.hpp"
 
 namespace sf {
@@ -21,6 +23,25 @@ int tool_index(const Model& model, const std::string& name) {
     }
   }
   return -1;
+}
+
+// A trim line's points from its file: the curves meshed by gmsh (sandboxed) and joined into one
+// closed line. Errors name the case file and the key.
+std::vector<Vec3> trim_line_from_file(const CaseConfig& config, const OperationConfig& c,
+                                      const std::string& entry) {
+  const bool meshed = is_meshed(mesh_format(c.line_file));
+  MeshImportOptions import;
+  import.group = c.line_group;
+  import.curves_only = true;
+  import.curves = c.line_curves;
+  try {
+    const GmshModel curves = load_gmsh_model(c.line_file, meshed ? c.line_element_size : 0.0, false,
+                                             {}, import, mesh_limits(config.limits));
+    return closed_curve_points(curves, c.line_group, 0.01 * c.line_element_size);
+  } catch (const InputError& error) {
+    throw InputError(
+        fmt::format("{}: {}.line_file: {}", config.file.string(), entry, error.what()));
+  }
 }
 
 Operation make_operation(const CaseConfig& config, const Model& model, std::size_t k) {
@@ -51,6 +72,11 @@ Operation make_operation(const CaseConfig& config, const Model& model, std::size
   for (const auto& p : c.line) {
     op.trim_line.emplace_back(p[0], p[1], p[2]);
   }
+  if (!c.line_file.empty()) {
+    op.trim_line = trim_line_from_file(config, c, op.entry);
+  }
+  op.trim_tool = c.line_tool.empty() ? -1 : tool_index(model, c.line_tool);
+  op.trim_offset = c.line_offset;
   op.trim_direction = Vec3(c.direction[0], c.direction[1], c.direction[2]);
   op.keep_inside = c.keep == OperationConfig::Keep::inside;
   return op;

@@ -436,6 +436,28 @@ void refuse_trim_without_rebuild(const Model& model, const RunOptions& options) 
   }
 }
 
+// A trim's line as the part meets it: its polyline, or its tool's triangles where the tool
+// stands.
+TrimOutline trim_outline(const Model& model, const Operation& op, const SolutionState& s) {
+  TrimOutline outline{.points = op.trim_line,
+                      .direction = op.trim_direction,
+                      .keep_inside = op.keep_inside,
+                      .tool_triangles = {},
+                      .offset = op.trim_offset};
+  if (op.trim_tool >= 0) {
+    const TriangleSurface& surface = model.tools[static_cast<std::size_t>(op.trim_tool)].surface;
+    const Vec3& shift = s.tools[static_cast<std::size_t>(op.trim_tool)].displacement;
+    for (int t = 0; t < surface.num_triangles(); ++t) {
+      Tri3 triangle;
+      for (int a = 0; a < 3; ++a) {
+        triangle.col(a) = surface.nodes().col(surface.triangles()(a, t)) + shift;
+      }
+      outline.tool_triangles.push_back(triangle);
+    }
+  }
+  return outline;
+}
+
 // The run after a trim: every process reads the part as the operation before left it (the
 // output process wrote it), trims it, builds the model again on the trimmed mesh, and runs it
 // on from the trim, in the same results. Collective.
@@ -450,8 +472,8 @@ RunSummary go_on_after_trim(const Model& model, const RunOptions& options, const
   const FormedPart part = read_formed_part(
       operation_formed_part_path(options.output_directory, operations.name(trim - 1)));
   TrimSummary summary;
-  const auto trimmed = std::make_shared<const FormedPart>(trim_by_removal(
-      part, TrimOutline{op.trim_line, op.trim_direction, op.keep_inside}, &summary));
+  const auto trimmed = std::make_shared<const FormedPart>(
+      trim_by_removal(part, trim_outline(model, op, s), &summary));
   const std::string report = trim_report(summary);
   log_info("Trim        '{}' at t = {:.6e} s: {}\n", op.name, s.time, report);
   if (summary.piece_elements.size() > 1) {

@@ -25,56 +25,6 @@ std::map<std::string, StateField, std::less<>> fields_by_name() {
   return out;
 }
 
-// The outline in the plane across the direction (2-D coordinates along e1, e2).
-struct PlaneOutline {
-  Vec3 e1, e2;
-  std::vector<Vec2> points;
-
-  Vec2 project(const Vec3& p) const { return {p.dot(e1), p.dot(e2)}; }
-
-  // Even-odd rule: a ray along +e1 from p crosses the outline an odd number of times.
-  bool contains(const Vec2& p) const {
-    bool inside = false;
-    for (std::size_t i = 0, j = points.size() - 1; i < points.size(); j = i++) {
-      const Vec2& a = points[i];
-      const Vec2& b = points[j];
-      if ((a.y() > p.y()) != (b.y() > p.y())) {
-        const double x = a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
-        if (p.x() < x) {
-          inside = !inside;
-        }
-      }
-    }
-    return inside;
-  }
-};
-
-PlaneOutline plane_outline(const FormedPart& part, const TrimOutline& outline) {
-  if (outline.points.size() < 3 || !(outline.direction.norm() > 0.0)) {
-    throw InputError(fmt::format(
-        "{}: a trim line needs a closed polyline of at least 3 points and a direction, got {} "
-        "points",
-        part.file, outline.points.size()));
-  }
-  PlaneOutline plane;
-  const Vec3 d = outline.direction.normalized();
-  plane.e1 = d.unitOrthogonal();
-  plane.e2 = d.cross(plane.e1);
-  double area = 0.0;  // shoelace, across the direction
-  for (std::size_t i = 0; i < outline.points.size(); ++i) {
-    plane.points.push_back(plane.project(outline.points[i]));
-  }
-  for (std::size_t i = 0, j = plane.points.size() - 1; i < plane.points.size(); j = i++) {
-    area += plane.points[j].x() * plane.points[i].y() - plane.points[i].x() * plane.points[j].y();
-  }
-  if (!(std::abs(area) > 0.0)) {
-    throw InputError(fmt::format(
-        "{}: the trim line encloses no area seen along the direction ({:g}, {:g}, {:g})", part.file,
-        d.x(), d.y(), d.z()));
-  }
-  return plane;
-}
-
 // The element's node indices (quads first, then triangles).
 std::vector<int> element_nodes(const FormedPart& part, Eigen::Index e) {
   const Eigen::Index n_quads = part.quads.cols();
@@ -87,7 +37,7 @@ std::vector<int> element_nodes(const FormedPart& part, Eigen::Index e) {
 
 // Which elements are kept: those whose current centre projects on the kept side.
 std::vector<char> kept_elements(const FormedPart& part, const TrimOutline& outline) {
-  const PlaneOutline plane = plane_outline(part, outline);
+  const TrimRegion region(outline, part.file);
   const std::vector<double>& x = part.fields.at("x");
   const Eigen::Index elements = part.quads.cols() + part.triangles.cols();
   std::vector<char> kept(static_cast<std::size_t>(elements), 0);
@@ -98,8 +48,7 @@ std::vector<char> kept_elements(const FormedPart& part, const TrimOutline& outli
       centre += Vec3(x[3 * a], x[3 * a + 1], x[3 * a + 2]);
     }
     centre /= static_cast<double>(nodes.size());
-    kept[static_cast<std::size_t>(e)] =
-        plane.contains(plane.project(centre)) == outline.keep_inside;
+    kept[static_cast<std::size_t>(e)] = region.keeps(centre);
   }
   return kept;
 }

@@ -1,10 +1,11 @@
 #pragma once
 // Trimming a formed part by removing the elements on the scrap side of a trim line (issue 32,
 // item 3; shared/DESIGN.md R8: a topology change is a function from formed part to formed part
-// that maps the state). The trim line is a closed polyline projected along a direction (the
-// press direction by default) onto the part as it stands; an element whose centre (the mean of
-// its nodes' current coordinates) projects inside it is kept (or, keep_inside = false, outside
-// it). The nodes no kept element uses are dropped and the rest renumbered in their order.
+// that maps the state). The trim line (a closed polyline, or a tool's outline grown by an offset:
+// solver/trim_outline.hpp) is projected along a direction (the press direction by default) onto
+// the part as it stands; an element whose centre (the mean of its nodes' current coordinates)
+// projects inside it is kept (or, keep_inside = false, outside it). The nodes no kept element uses
+// are dropped and the rest renumbered in their order.
 //
 // The state follows by each field's mapping (solver/state_fields.hpp): the run's numbers and
 // the tools' are kept; a node field that interpolates (coordinates, velocities, rotations) keeps
@@ -16,14 +17,9 @@
 #include "core/types.hpp"
 #include "model/build_model.hpp"
 #include "solver/formed_part.hpp"
+#include "solver/trim_outline.hpp"
 
 namespace sf {
-
-struct TrimOutline {
-  std::vector<Vec3> points;               ///< mm, closed: the last point joins the first
-  Vec3 direction = Vec3(0.0, 0.0, -1.0);  ///< projected along it onto the part
-  bool keep_inside = true;                ///< keep what projects inside (else outside)
-};
 
 /// What a trim removed and what it left.
 struct TrimSummary {
@@ -36,8 +32,8 @@ struct TrimSummary {
 };
 
 /// The part with the elements on the scrap side removed. Throws InputError naming the part's
-/// file for an outline of fewer than 3 points or of no area across the direction, a line that
-/// misses the part (nothing removed) or leaves no part.
+/// file for an outline TrimRegion refuses, a line that misses the part (nothing removed) or
+/// leaves no part.
 FormedPart trim_by_removal(const FormedPart& part, const TrimOutline& outline,
                            TrimSummary* summary = nullptr);
 

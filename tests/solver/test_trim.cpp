@@ -52,9 +52,9 @@ FormedPart strip() {
 }
 
 TrimOutline box(double x0, double x1, bool keep_inside) {
-  return {{Vec3(x0, -1.0, 0.0), Vec3(x1, -1.0, 0.0), Vec3(x1, 2.0, 0.0), Vec3(x0, 2.0, 0.0)},
-          Vec3(0.0, 0.0, -1.0),
-          keep_inside};
+  return TrimOutline::polyline(
+      {Vec3(x0, -1.0, 0.0), Vec3(x1, -1.0, 0.0), Vec3(x1, 2.0, 0.0), Vec3(x0, 2.0, 0.0)},
+      Vec3(0.0, 0.0, -1.0), keep_inside);
 }
 
 TEST(Trim, RemovesTheScrapAndRenumbersWithTheStateFollowing) {
@@ -111,7 +111,8 @@ TEST(Trim, ALineThatMissesOrLeavesNothingIsAnError) {
   EXPECT_NE(message(box(-1.0, 5.0, true)).find("strip.h5: the trim line misses the part"),
             std::string::npos);
   EXPECT_NE(message(box(-1.0, 5.0, false)).find("leaves no part"), std::string::npos);
-  EXPECT_NE(message({{Vec3(0, 0, 0), Vec3(1, 0, 0)}, Vec3(0, 0, -1), true}).find("at least 3"),
+  EXPECT_NE(message(TrimOutline::polyline({Vec3(0, 0, 0), Vec3(1, 0, 0)}, Vec3(0, 0, -1), true))
+                .find("at least 3"),
             std::string::npos);
   // Seen along x, the box in the xy plane has no area.
   TrimOutline edge_on = box(-1.0, 2.2, true);

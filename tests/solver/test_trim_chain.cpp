@@ -50,10 +50,9 @@ TEST(TrimChain, ADrawTrimmedAndDrawnOn) {
 
   // Keep what lies within 60 mm of the symmetry planes (the blank reaches 75 mm).
   TrimSummary summary;
-  const TrimOutline keep{
+  const TrimOutline keep = TrimOutline::polyline(
       {Vec3(-1.0, -1.0, 0.0), Vec3(60.0, -1.0, 0.0), Vec3(60.0, 60.0, 0.0), Vec3(-1.0, 60.0, 0.0)},
-      Vec3(0.0, 0.0, -1.0),
-      true};
+      Vec3(0.0, 0.0, -1.0), true);
   auto trimmed = std::make_shared<const FormedPart>(trim_by_removal(part, keep, &summary));
   EXPECT_GT(summary.elements_removed, 0);
   EXPECT_EQ(summary.piece_elements.size(), 1u);
@@ -104,10 +103,9 @@ TEST(TrimChain, ATrimOperationTrimsThePartAsItStandsAndTheRunGoesOnInTheSameResu
 
   // The trimmed part is the first operation's part trimmed by the same line, field for field.
   const FormedPart drawn = read_formed_part(operation_formed_part_path(folder, "OP10"));
-  const TrimOutline keep{
+  const TrimOutline keep = TrimOutline::polyline(
       {Vec3(-1.0, -1.0, 0.0), Vec3(60.0, -1.0, 0.0), Vec3(60.0, 60.0, 0.0), Vec3(-1.0, 60.0, 0.0)},
-      Vec3(0.0, 0.0, -1.0),
-      true};
+      Vec3(0.0, 0.0, -1.0), true);
   TrimSummary removed;
   const FormedPart expected = trim_by_removal(drawn, keep, &removed);
   const FormedPart trimmed = read_formed_part(operation_formed_part_path(folder, "OP20-trim"));
@@ -173,6 +171,98 @@ TEST(TrimChain, ATrimOperationTrimsThePartAsItStandsAndTheRunGoesOnInTheSameResu
       1);
 }
 
+// Distance (mm) from (x, y) to the punch seen from above: the NUMISHEET'93 square punch, 70 x 70
+// mm with a plan corner radius of 10 mm (cases/square_cup_aluminium/punch.geo), centred on the
+// axis (0 inside).
+double punch_outline_distance(double x, double y) {
+  const double qx = std::abs(x) - 25.0, qy = std::abs(y) - 25.0;
+  return std::max(std::hypot(std::max(qx, 0.0), std::max(qy, 0.0)) - 10.0, 0.0);
+}
+
+// Element centres (mm) of a part as it stands, quads then triangles.
+std::vector<Vec3> centres(const FormedPart& part) {
+  const std::vector<double>& x = part.fields.at("x");
+  std::vector<Vec3> out;
+  for (Eigen::Index e = 0; e < part.quads.cols(); ++e) {
+    Vec3 c = Vec3::Zero();
+    for (int a = 0; a < 4; ++a) {
+      const int n = part.quads(a, e);
+      c += Vec3(x[3 * n], x[3 * n + 1], x[3 * n + 2]) / 4.0;
+    }
+    out.push_back(c);
+  }
+  EXPECT_EQ(part.triangles.cols(), 0);
+  return out;
+}
+
+TEST(TrimChain, ATrimByThePunchsOutlineKeepsWhatLiesWithinTheOffsetOfIt) {
+  // The flange trimmed 12 mm outside the punch (3.5 mm outside the die's 8 mm profile radius,
+  // whose opening is 74 x 74 mm).
+  const double offset = 12.0;
+  const CaseConfig config = cup_with(
+      {"control.stroke=0",
+       "operations=[{name=\"OP10\", kind=\"forming\", stroke=2.0}, {name=\"OP20-trim\", "
+       "kind=\"trim\", line_tool=\"punch\", line_offset=12.0}, {name=\"OP30\", kind=\"forming\", "
+       "stroke=2.2}]"});
+  const Model model = build_model(config);
+  EXPECT_EQ(model.tools[static_cast<std::size_t>(model.operations[1].trim_tool)].name, "punch");
+  const fs::path folder = output_folder("punch_outline");
+  RunOptions options;
+  options.output_directory = folder;
+  options.checkpoints = false;
+  options.rebuild.model = [&config](const BlankMesh& blank) { return build_model(config, &blank); };
+  run_explicit(model, options);
+
+  // Against the exact outline: kept where the centre lies within the offset of the punch (the
+  // punch's meshed plan corner stands within 0.05 mm of its circle: 2 mm chords on 10 mm).
+  const FormedPart drawn = read_formed_part(operation_formed_part_path(folder, "OP10"));
+  const FormedPart trimmed = read_formed_part(operation_formed_part_path(folder, "OP20-trim"));
+  std::vector<Vec3> expected;
+  int near_the_line = 0;
+  for (const Vec3& c : centres(drawn)) {
+    const double d = punch_outline_distance(c.x(), c.y());
+    ASSERT_GT(std::abs(d - offset), 0.05) << "a centre on the line: " << c.transpose();
+    near_the_line += std::abs(d - offset) < 2.0;
+    if (d < offset) {
+      expected.push_back(c);
+    }
+  }
+  EXPECT_GT(near_the_line, 20);  // the line crosses the mesh, not a gap in it
+  EXPECT_LT(expected.size(), static_cast<std::size_t>(drawn.quads.cols()));
+  EXPECT_EQ(centres(trimmed), expected);
+}
+
+TEST(TrimChain, ATrimLineFromAGeoFilesPhysicalCurveIsThatCurve) {
+  const fs::path geo = fs::path(SF_TEST_DATA_DIR) / "trim_line.geo";
+  const auto operations = [&](const std::string& keys) {
+    return "operations=[{name=\"a\", kind=\"forming\", stroke=1.0}, {name=\"t\", kind=\"trim\", "
+           "line_file=\"" +
+           geo.string() + "\"" + keys + "}]";
+  };
+  const Model model = build_model(cup_with({"control.stroke=0", operations("")}));
+  const std::vector<Vec3>& line = model.operations[1].trim_line;
+  EXPECT_GE(line.size(), 156u);  // 140 mm of lines and a 15.7 mm arc, points 1 mm apart
+  for (const Vec3& p : line) {   // on the rounded rectangle [0, 50] x [0, 30]
+    const bool on_side = p.x() == 0.0 || p.y() == 0.0 || p.y() == 30.0 || p.x() == 50.0;
+    const bool on_arc = std::abs((p - Vec3(40.0, 20.0, 0.0)).norm() - 10.0) < 1e-9;
+    EXPECT_TRUE(on_side || on_arc) << p.transpose();
+  }
+  // Coarser points: fewer of them.
+  const Model coarse =
+      build_model(cup_with({"control.stroke=0", operations(", line_element_size=5.0")}));
+  EXPECT_LT(coarse.operations[1].trim_line.size(), 40u);
+  // A group the file lacks: the case, the key and the file's groups.
+  std::string message;
+  try {
+    build_model(cup_with({"control.stroke=0", operations(", line_group=\"cut\"")}));
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("operations[1] ('t').line_file:"), std::string::npos) << message;
+  EXPECT_NE(message.find("no 1-D physical group 'cut'"), std::string::npos) << message;
+  EXPECT_NE(message.find("trim (1-D)"), std::string::npos) << message;
+}
+
 TEST(TrimChain, ATrimWithoutAWayToBuildTheModelAgainIsRefused) {
   const Model model = build_model(cup_with({"control.stroke=0", kTrimChain}));
   RunOptions options;
@@ -219,6 +309,41 @@ TEST(TrimChain, BadTrimsAreRefusedNamingTheKey) {
   EXPECT_NE(error("operations=[{name=\"a\", kind=\"forming\", stroke=1.0, "
                   "line=[[0, 0], [1, 0], [1, 1]]}]")
                 .find("operations[0].line"),
+            std::string::npos);
+  // The line from exactly one source; each source's keys only with it.
+  const std::string none = error("operations=[" + draw + ", {name=\"t\", kind=\"trim\"}]");
+  EXPECT_NE(none.find("one of line (a polyline), line_file (a curve of a file) or line_tool"),
+            std::string::npos)
+      << none;
+  EXPECT_NE(error("operations=[" + draw +
+                  ", {name=\"t\", kind=\"trim\", line=[[0, 0], [1, 0], [1, 1]], "
+                  "line_tool=\"punch\"}]")
+                .find("not more"),
+            std::string::npos);
+  EXPECT_NE(error("operations=[" + draw + ", {name=\"t\", kind=\"trim\", line_tool=\"ram\"}]")
+                .find("operations[1].line_tool"),
+            std::string::npos);
+  EXPECT_NE(error("operations=[" + draw +
+                  ", {name=\"t\", kind=\"trim\", line=[[0, 0], [1, 0], [1, 1]], "
+                  "line_offset=2.0}]")
+                .find("operations[1].line_offset"),
+            std::string::npos);
+  EXPECT_NE(error("operations=[" + draw +
+                  ", {name=\"t\", kind=\"trim\", line_tool=\"punch\", line_offset=-2.0}]")
+                .find("operations[1].line_offset"),
+            std::string::npos);
+  const std::string geo = (fs::path(SF_TEST_DATA_DIR) / "trim_line.geo").string();
+  EXPECT_NE(error("operations=[" + draw + ", {name=\"t\", kind=\"trim\", line_file=\"" + geo +
+                  "\", line_curves=[1]}]")
+                .find("operations[1].line_curves"),
+            std::string::npos);
+  EXPECT_NE(
+      error("operations=[" + draw + ", {name=\"t\", kind=\"trim\", line_file=\"missing.geo\"}]")
+          .find("operations[1].line_file"),
+      std::string::npos);
+  EXPECT_NE(error("operations=[" + draw + ", {name=\"t\", kind=\"trim\", line_file=\"" +
+                  (fs::path(SF_TEST_DATA_DIR) / "cad" / "box_binary.stl").string() + "\"}]")
+                .find("a .geo, .msh, .step, .stp, .iges, .igs or .brep file"),
             std::string::npos);
 }
 
