@@ -61,6 +61,20 @@ void read_vector(const TomlSection& s, std::string_view key, std::array<double, 
   }
 }
 
+void read_entity_tags(const TomlSection& s, std::string_view key, std::string_view what,
+                      std::vector<int>& tags, Presence presence) {
+  std::vector<double> numbers;
+  const std::string unit = fmt::format("{} tags", what);
+  if (s.read_numbers(key, numbers, at_least(1.0, unit), 1, 100000, presence)) {
+    for (const double t : numbers) {
+      if (t != std::floor(t) || t > 2147483647.0) {
+        s.fail_value(key, fmt::format("whole {} tags (integers >= 1)", what));
+      }
+      tags.push_back(static_cast<int>(t));
+    }
+  }
+}
+
 std::filesystem::path read_existing_file(
     const TomlSection& s, std::string_view key,
     const std::function<bool(const std::filesystem::path&)>& accepts, std::string_view accepted) {

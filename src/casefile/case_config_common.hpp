@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <functional>
 #include <string_view>
+#include <vector>
 
 #include "casefile/case_config.hpp"
 #include "casefile/toml_reader.hpp"
@@ -17,6 +18,11 @@ void read_curve(const TomlSection& s, std::string_view key, CurveConfig& curve);
 /// Reads `key` as an array of 3 finite numbers (any values, unlike read_direction); absent leaves
 /// `value` as it is.
 void read_vector(const TomlSection& s, std::string_view key, std::array<double, 3>& value);
+
+/// Reads `key` as an array of whole gmsh entity tags >= 1 (`what`: "surface" or "curve", for the
+/// message) into `tags`; absent leaves it empty (an error when required).
+void read_entity_tags(const TomlSection& s, std::string_view key, std::string_view what,
+                      std::vector<int>& tags, Presence presence);
 
 /// Reads `key` as a path (relative to the case file's folder) to a file that must exist and whose
 /// name `accepts` (`accepted` says what for the message, e.g. "a .csv file"); returns it absolute.

@@ -101,19 +101,6 @@ void read_line(const TomlSection& s, Op& o, Presence presence) {
   }
 }
 
-// `line_curves`: whole curve tags >= 1.
-void read_curve_tags(const TomlSection& s, Op& o, Presence presence) {
-  std::vector<double> tags;
-  if (s.read_numbers("line_curves", tags, at_least(1.0, "curve tags"), 1, 100000, presence)) {
-    for (const double t : tags) {
-      if (t != std::floor(t) || t > 2147483647.0) {
-        s.fail_value("line_curves", "whole curve tags (integers >= 1)");
-      }
-      o.line_curves.push_back(static_cast<int>(t));
-    }
-  }
-}
-
 // The formats a trim line's file may have: a .geo or .msh with a physical curve, or CAD curves.
 bool is_line_format(const fs::path& file) {
   const std::optional<MeshFormat> format = find_mesh_format(file);
@@ -309,22 +296,24 @@ FieldTable<Op> make_operation_fields() {
                   .when([](const Op& o) { return line_file_is(o, named_curve_format); },
                         "`line_file` `.geo` or `.msh` only",
                         "a CAD file's curves are chosen by line_curves"));
-  t.push_back(
-      custom_field<Op>({"line_curves",
-                        "array of integers",
-                        "all",
-                        {},
-                        "the CAD file's curve tags that form the line (open the file in "
-                        "the gmsh GUI to see its curve tags)"},
-                       read_curve_tags,
-                       [](TomlWriter& w, const Op& o) {
-                         w.numbers("line_curves",
-                                   std::vector<double>(o.line_curves.begin(), o.line_curves.end()),
-                                   "the CAD file's curve tags");
-                       })
-          .when([](const Op& o) { return line_file_is(o, is_cad); }, "`line_file` CAD only",
-                "a .geo or .msh names its line by line_group")
-          .write_if([](const Op& o) { return !o.line_curves.empty(); }));
+  t.push_back(custom_field<Op>(
+                  {"line_curves",
+                   "array of integers",
+                   "all",
+                   {},
+                   "the CAD file's curve tags that form the line (open the file in "
+                   "the gmsh GUI to see its curve tags)"},
+                  [](const TomlSection& s, Op& o, Presence p) {
+                    read_entity_tags(s, "line_curves", "curve", o.line_curves, p);
+                  },
+                  [](TomlWriter& w, const Op& o) {
+                    w.numbers("line_curves",
+                              std::vector<double>(o.line_curves.begin(), o.line_curves.end()),
+                              "the CAD file's curve tags");
+                  })
+                  .when([](const Op& o) { return line_file_is(o, is_cad); }, "`line_file` CAD only",
+                        "a .geo or .msh names its line by line_group")
+                  .write_if([](const Op& o) { return !o.line_curves.empty(); }));
   t.push_back(number_field<Op>("line_element_size", &Op::line_element_size, greater_than(0.0, "mm"),
                                "the spacing of the line's points along the curves (gmsh's "
                                "largest element size)")

@@ -64,19 +64,6 @@ void write_geo_parameters(TomlWriter& w, const std::vector<GeoParameter>& parame
   w.raw("parameters", "{ " + table + " }");
 }
 
-/// `surfaces`: whole surface tags >= 1.
-void read_surface_tags(const TomlSection& s, std::vector<int>& surfaces, Presence presence) {
-  std::vector<double> tags;
-  if (s.read_numbers("surfaces", tags, at_least(1.0, "surface tags"), 1, 100000, presence)) {
-    for (const double t : tags) {
-      if (t != std::floor(t) || t > 2147483647.0) {
-        s.fail_value("surfaces", "whole surface tags (integers >= 1)");
-      }
-      surfaces.push_back(static_cast<int>(t));
-    }
-  }
-}
-
 FieldTable<MeshSourceConfig> make_mesh_source_fields() {
   using M = MeshSourceConfig;
   const auto format = [](const M& m) { return mesh_format(m.file); };
@@ -154,7 +141,9 @@ FieldTable<MeshSourceConfig> make_mesh_source_fields() {
            {},
            "the file's surface tags (Nastran property ids) that form the part (open "
            "the file in the gmsh GUI to see its surface tags)"},
-          [](const TomlSection& s, M& m, Presence p) { read_surface_tags(s, m.surfaces, p); },
+          [](const TomlSection& s, M& m, Presence p) {
+            read_entity_tags(s, "surfaces", "surface", m.surfaces, p);
+          },
           [](TomlWriter& w, const M& m) {
             w.numbers("surfaces", std::vector<double>(m.surfaces.begin(), m.surfaces.end()),
                       "the file's surface tags that form the part");

@@ -84,6 +84,33 @@ void mesh_curves(const GmshJob& job, MeshFormat format) {
   });
 }
 
+// A part of surfaces: meshed in 2-D (a .geo or CAD file; the element count checked first), an
+// imported file's surfaces made its group.
+void make_surfaces(const GmshJob& job, MeshFormat format, const SandboxReporter& reporter) {
+  if (is_meshed(format) && job.element_size > 0.0) {
+    check_element_count(job, reporter);
+  }
+  if (is_meshed(format)) {
+    mesh_surfaces(job, format);
+  }
+  if (is_imported(format)) {
+    run_gmsh_step(job.file, "forming the part's group",
+                  [&] { group_imported_surfaces(job.file, job.import); });
+  }
+}
+
+// A curve (a trim line): meshed in 1-D only, a few thousand points at most; a CAD file's curves
+// made its group.
+void make_curves(const GmshJob& job, MeshFormat format) {
+  if (is_meshed(format)) {
+    mesh_curves(job, format);
+  }
+  if (is_cad(format)) {
+    run_gmsh_step(job.file, "forming the curve's group",
+                  [&] { group_imported_curves(job.file, job.import); });
+  }
+}
+
 // What the parent needs before any group is taken: nodes, and named parts.
 void check_not_empty(const std::filesystem::path& file) {
   std::size_t nodes = 0;
@@ -136,23 +163,9 @@ int run_gmsh_job(const GmshJob& job, const std::filesystem::path& scratch,
     GmshSession session;
     open_file(job, format, scratch);
     if (job.import.curves_only) {
-      // a curve (a trim line): meshed in 1-D, a few thousand points at most
-      if (is_meshed(format)) {
-        mesh_curves(job, format);
-      }
-      if (is_cad(format)) {
-        run_gmsh_step(job.file, "forming the curve's group",
-                      [&] { group_imported_curves(job.file, job.import); });
-      }
-    } else if (is_meshed(format) && job.element_size > 0.0) {
-      check_element_count(job, reporter);
-    }
-    if (is_meshed(format) && !job.import.curves_only) {
-      mesh_surfaces(job, format);
-    }
-    if (is_imported(format) && !job.import.curves_only) {
-      run_gmsh_step(job.file, "forming the part's group",
-                    [&] { group_imported_surfaces(job.file, job.import); });
+      make_curves(job, format);
+    } else {
+      make_surfaces(job, format, reporter);
     }
     check_not_empty(job.file);
     reporter.report(GmshJobStage::writing);

@@ -10,6 +10,7 @@
 #include "core/build_info.hpp"
 #include "core/errors.hpp"
 #include "core/log.hpp"
+#include "element/shell_triangle_geometry.hpp"
 #include "solver/case_digest.hpp"
 #include "solver/checkpoint.hpp"
 #include "solver/formed_part.hpp"
@@ -448,11 +449,8 @@ TrimOutline trim_outline(const Model& model, const Operation& op, const Solution
     const TriangleSurface& surface = model.tools[static_cast<std::size_t>(op.trim_tool)].surface;
     const Vec3& shift = s.tools[static_cast<std::size_t>(op.trim_tool)].displacement;
     for (int t = 0; t < surface.num_triangles(); ++t) {
-      Tri3 triangle;
-      for (int a = 0; a < 3; ++a) {
-        triangle.col(a) = surface.nodes().col(surface.triangles()(a, t)) + shift;
-      }
-      outline.tool_triangles.push_back(triangle);
+      outline.tool_triangles.push_back(
+          gather_triangle(surface.nodes(), surface.triangles(), t).colwise() + shift);
     }
   }
   return outline;
