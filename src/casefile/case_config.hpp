@@ -217,6 +217,8 @@ struct OperationConfig {
   enum class Kind { gravity, closing, forming, trim, springback };
   /// Which side of a trim line stays: what projects inside it, or outside.
   enum class Keep { inside, outside };
+  /// How a trim takes the scrap off: whole elements by their centres, or cut along the line.
+  enum class TrimMode { remove, cut };
   /// What ends it: the stroke tool's travel, a duration, the push on a tool, the clearance left
   /// between two tools, or the blank at rest (kinetic energy fallen below `rest` x its peak).
   enum class End { stroke, time, force, gap, rest, none };
@@ -250,6 +252,8 @@ struct OperationConfig {
   double line_offset = 0.0;                         ///< mm, >= 0
   std::array<double, 3> direction{0.0, 0.0, -1.0};  ///< -, a trim's projection (normalised)
   Keep keep = Keep::inside;
+  TrimMode mode = TrimMode::remove;
+  double sliver_fraction = 0.1;  ///< -, a cut's smallest piece over its parent element's area
 };
 
 struct ContactConfig {

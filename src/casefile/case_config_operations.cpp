@@ -64,6 +64,15 @@ bool trims(const Op& o) {
   return o.kind == Kind::trim;
 }
 
+constexpr std::array<Choice<OperationConfig::TrimMode>, 2> kTrimModes{{
+    {OperationConfig::TrimMode::remove, "remove",
+     "the elements whose centre projects on the scrap side go whole: the part's edge follows the "
+     "elements, within half an element of the line"},
+    {OperationConfig::TrimMode::cut, "cut",
+     "the elements the line crosses are cut along it into quadrilaterals and triangles (their "
+     "state inherited, turned into each piece's frame): the part's edge is the line"},
+}};
+
 constexpr std::array<Choice<OperationConfig::Keep>, 2> kKeeps{{
     {OperationConfig::Keep::inside, "inside", "the part inside the line stays"},
     {OperationConfig::Keep::outside, "outside", "the part outside the line stays (a hole)"},
@@ -261,8 +270,8 @@ FieldTable<Op> make_operation_fields() {
   t.push_back(custom_field<Op>({"line", "array of [x, y] or [x, y, z]", "", "mm",
                                 "a trim's line: a closed polyline of at least 3 points (the last "
                                 "joins the first) around the part to keep, projected along "
-                                "`direction` onto the part as it stands; an element is kept when "
-                                "its centre projects on the kept side"},
+                                "`direction` onto the part as it stands (`mode`: how the "
+                                "elements it crosses are trimmed)"},
                                read_line, write_line)
                   .when(trims, "`\"trim\"` only", "only a trim has a line")
                   .shown_default("one of `line`, `line_file`, `line_tool`")
@@ -321,8 +330,8 @@ FieldTable<Op> make_operation_fields() {
                         "`line_file` `.geo` or CAD only", "a .msh file's line is read as it is"));
   t.push_back(string_field<Op>("line_tool", &Op::line_tool,
                                "a trim's line as the outline of this tool: its surface, where it "
-                               "stands at the trim, projected along `direction`; an element is "
-                               "inside when its centre projects within `line_offset` of it")
+                               "stands at the trim, projected along `direction`; a point is "
+                               "inside when it projects within `line_offset` of it")
                   .when(trims, "`\"trim\"` only", "only a trim has a line")
                   .shown_default("none")
                   .write_if([](const Op& o) { return !o.line_tool.empty(); }));
@@ -336,6 +345,15 @@ FieldTable<Op> make_operation_fields() {
                   .when(trims, "`\"trim\"` only", "only a trim has a direction"));
   t.push_back(choice_field<Op, OperationConfig::Keep>("keep", &Op::keep, kKeeps, "")
                   .when(trims, "`\"trim\"` only", "only a trim keeps a side"));
+  t.push_back(choice_field<Op, OperationConfig::TrimMode>("mode", &Op::mode, kTrimModes, "")
+                  .when(trims, "`\"trim\"` only", "only a trim cuts"));
+  t.push_back(
+      number_field<Op>("sliver_fraction", &Op::sliver_fraction, interval(0.0, false, 0.5, true),
+                       "no piece of a cut element smaller than this fraction of its area: a "
+                       "crossing nearer than it (as a fraction of the edge) to a node moves the "
+                       "node onto the line instead, as does a piece still too small")
+          .when([](const Op& o) { return trims(o) && o.mode == OperationConfig::TrimMode::cut; },
+                "with `mode = \"cut\"` only", "only a cut makes pieces"));
   return t;
 }
 

@@ -43,6 +43,10 @@ struct Operation {
   int trim_tool = -1;
   double trim_offset = 0.0;
   Vec3 trim_direction = Vec3(0.0, 0.0, -1.0);
+  /// Cut the elements the line crosses along it (solver/trim_cut.hpp), else remove them by
+  /// their centres (solver/trim.hpp)
+  bool trim_cut = false;
+  double sliver_fraction = 0.1;  ///< -, a cut's smallest piece over its parent element
   bool keep_inside = true;
 };
 

@@ -79,6 +79,8 @@ Operation make_operation(const CaseConfig& config, const Model& model, std::size
   op.trim_offset = c.line_offset;
   op.trim_direction = Vec3(c.direction[0], c.direction[1], c.direction[2]);
   op.keep_inside = c.keep == OperationConfig::Keep::inside;
+  op.trim_cut = c.mode == OperationConfig::TrimMode::cut;
+  op.sliver_fraction = c.sliver_fraction;
   return op;
 }
 

@@ -25,6 +25,7 @@
 #include "solver/time_loop.hpp"
 #include "solver/time_step_control.hpp"
 #include "solver/trim.hpp"
+#include "solver/trim_cut.hpp"
 
 namespace sf {
 
@@ -419,8 +420,16 @@ std::string trim_report(const TrimSummary& t) {
     pieces = fmt::format("; {} pieces of {} elements", t.piece_elements.size(),
                          fmt::join(t.piece_elements, ", "));
   }
-  return fmt::format("trimmed: {} of {} elements and {} nodes removed{}", t.elements_removed,
-                     t.elements_before, t.nodes_removed, pieces);
+  std::string cut;
+  if (t.elements_cut > 0 || t.nodes_moved > 0) {
+    cut = fmt::format(
+        "; {} elements cut into {} pieces, {} nodes made on the line, {} moved onto it (up to "
+        "{:.3g} mm), smallest piece {:.2f} of its element",
+        t.elements_cut, t.pieces_made, t.nodes_made, t.nodes_moved, t.largest_move,
+        t.smallest_fraction);
+  }
+  return fmt::format("trimmed: {} of {} elements and {} nodes removed{}{}", t.elements_removed,
+                     t.elements_before, t.nodes_removed, cut, pieces);
 }
 
 // Before any work: a trim needs the results folder (the part goes through it) and a way to
@@ -470,10 +479,19 @@ RunSummary go_on_after_trim(const Model& model, const RunOptions& options, const
   const FormedPart part = read_formed_part(
       operation_formed_part_path(options.output_directory, operations.name(trim - 1)));
   TrimSummary summary;
+  const TrimOutline outline = trim_outline(model, op, s);
   const auto trimmed = std::make_shared<const FormedPart>(
-      trim_by_removal(part, trim_outline(model, op, s), &summary));
+      op.trim_cut ? trim_by_cutting(part, outline, op.sliver_fraction, &summary)
+                  : trim_by_removal(part, outline, &summary));
   const std::string report = trim_report(summary);
   log_info("Trim        '{}' at t = {:.6e} s: {}\n", op.name, s.time, report);
+  if (op.trim_cut && summary.smallest_fraction < op.sliver_fraction) {
+    log_warning(
+        "{}: a piece of a cut element is {:.3f} of its element, below sliver_fraction {:g}: the "
+        "node that would have moved onto the line is in a node group its edge leaves (a "
+        "symmetry plane); its time step is that much smaller\n",
+        op.entry, summary.smallest_fraction, op.sliver_fraction);
+  }
   if (summary.piece_elements.size() > 1) {
     log_warning(
         "{}: the trimmed part falls into {} pieces; a piece that no tool or constraint holds "

@@ -25,11 +25,19 @@ void report_operations(const Model& model, const UnitSystem& units) {
     const Operation& op = model.operations[k];
     if (op.kind == OperationConfig::Kind::trim) {
       const Vec3& d = op.trim_direction;
+      const std::string line = op.trim_tool >= 0
+                                   ? fmt::format("tool '{}''s outline grown by {:g} mm",
+                                                 tool_name(op.trim_tool), op.trim_offset)
+                                   : fmt::format("a line of {} points", op.trim_line.size());
+      const std::string how =
+          op.trim_cut ? fmt::format("elements cut along it, no piece below {:g} of its element",
+                                    op.sliver_fraction)
+                      : std::string("elements whose centre falls there");
       log_info(
-          "Operation   {}/{} '{}' (trim): keeps what projects {} a line of {} points along "
-          "({:.3g}, {:.3g}, {:.3g}) (elements whose centre falls there; no time passes)\n",
-          k + 1, model.operations.size(), op.name, op.keep_inside ? "inside" : "outside",
-          op.trim_line.size(), d.x(), d.y(), d.z());
+          "Operation   {}/{} '{}' (trim): keeps what projects {} {} along ({:.3g}, {:.3g}, "
+          "{:.3g}) ({}; no time passes)\n",
+          k + 1, model.operations.size(), op.name, op.keep_inside ? "inside" : "outside", line,
+          d.x(), d.y(), d.z(), how);
       continue;
     }
     std::string in_play;

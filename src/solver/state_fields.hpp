@@ -44,8 +44,10 @@ enum class FieldMapping {
   none,         ///< not of the mesh (a run value, a tool's)
   interpolate,  ///< a node's value from the nodes it is made between
   inherit,      ///< an element's or point's value from the element it is cut from
-  recompute,    ///< made again from the new mesh (masses, time steps, offsets)
-  reset,        ///< starts again at zero (a contact pair's history, the force sums)
+  /// the same, its components (in the element's frame) turned into the new element's frame
+  inherit_in_frame,
+  recompute,  ///< made again from the new mesh (masses, time steps, offsets)
+  reset,      ///< starts again at zero (a contact pair's history, the force sums)
 };
 
 struct StateField {
@@ -149,19 +151,19 @@ inline constexpr StateField element_dt{
     "mass_scaling/element_dt", element, "s", kShown, recompute, "the element's critical step"};
 
 // The blank's elements and integration points (element frame).
-inline constexpr StateField sxx{"shell/sxx", point, "MPa", kShown, inherit, "stress xx"};
-inline constexpr StateField syy{"shell/syy", point, "MPa", kShown, inherit, "stress yy"};
-inline constexpr StateField sxy{"shell/sxy", point, "MPa", kShown, inherit, "stress xy"};
+inline constexpr StateField sxx{"shell/sxx", point, "MPa", kShown, inherit_in_frame, "stress xx"};
+inline constexpr StateField syy{"shell/syy", point, "MPa", kShown, inherit_in_frame, "stress yy"};
+inline constexpr StateField sxy{"shell/sxy", point, "MPa", kShown, inherit_in_frame, "stress xy"};
 inline constexpr StateField eps_p{"shell/eps_p", point,   "-",
                                   kShown,        inherit, "equivalent plastic strain"};
 inline constexpr StateField flow_stress{
     "shell/flow_stress", point, "MPa", kShown, inherit, "flow stress at flow_stress_at"};
 inline constexpr StateField flow_stress_at{
     "shell/flow_stress_at", point, "-", kShown, inherit, "the plastic strain of flow_stress"};
-inline constexpr StateField sxz{"shell/sxz", element, "MPa",
-                                kShown,      inherit, "transverse shear stress xz"};
-inline constexpr StateField syz{"shell/syz", element, "MPa",
-                                kShown,      inherit, "transverse shear stress yz"};
+inline constexpr StateField sxz{"shell/sxz", element,          "MPa",
+                                kShown,      inherit_in_frame, "transverse shear stress xz"};
+inline constexpr StateField syz{"shell/syz", element,          "MPa",
+                                kShown,      inherit_in_frame, "transverse shear stress yz"};
 inline constexpr StateField thickness{"shell/thickness",   element,    "mm", kShown, inherit,
                                       "current thickness", "thickness"};
 inline constexpr StateField hourglass{"shell/hourglass",
@@ -173,8 +175,12 @@ inline constexpr StateField hourglass{"shell/hourglass",
 inline constexpr StateField director{
     "shell/director", element,   "-",
     kShown,           recompute, "unit directors at the element's nodes (global)"};
-inline constexpr StateField back_stress{
-    "shell/back_stress", point, "MPa", kShown, inherit, "back stresses (kinematic hardening)"};
+inline constexpr StateField back_stress{"shell/back_stress",
+                                        point,
+                                        "MPa",
+                                        kShown,
+                                        inherit_in_frame,
+                                        "back stresses (kinematic hardening)"};
 
 // The energies.
 inline constexpr StateField kinetic{"energies/kinetic", run, "N mm", kHandedOn, none, "kinetic"};

@@ -4,46 +4,23 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <numeric>
 #include <string>
 
 #include "core/errors.hpp"
-#include "solver/state_fields.hpp"
+#include "solver/part_remap.hpp"
 
 namespace sf {
 namespace {
-
-// Each field's place and mapping by its name (the tools' and contact pairs' keys aside).
-std::map<std::string, StateField, std::less<>> fields_by_name() {
-  std::map<std::string, StateField, std::less<>> out;
-  SolutionState empty;  // no tools, no contact pairs: every key is a field's name
-  auto record = [&](const StateField& field, const std::string& key, const auto&) {
-    out.emplace(key, field);
-  };
-  visit_state_fields(record, empty);
-  return out;
-}
-
-// The element's node indices (quads first, then triangles).
-std::vector<int> element_nodes(const FormedPart& part, Eigen::Index e) {
-  const Eigen::Index n_quads = part.quads.cols();
-  if (e < n_quads) {
-    return {part.quads(0, e), part.quads(1, e), part.quads(2, e), part.quads(3, e)};
-  }
-  const Eigen::Index t = e - n_quads;
-  return {part.triangles(0, t), part.triangles(1, t), part.triangles(2, t)};
-}
 
 // Which elements are kept: those whose current centre projects on the kept side.
 std::vector<char> kept_elements(const FormedPart& part, const TrimOutline& outline) {
   const TrimRegion region(outline, part.file);
   const std::vector<double>& x = part.fields.at("x");
-  const Eigen::Index elements = part.quads.cols() + part.triangles.cols();
+  const auto elements = static_cast<int>(part.quads.cols() + part.triangles.cols());
   std::vector<char> kept(static_cast<std::size_t>(elements), 0);
-  for (Eigen::Index e = 0; e < elements; ++e) {
+  for (int e = 0; e < elements; ++e) {
     Vec3 centre = Vec3::Zero();
-    const std::vector<int> nodes = element_nodes(part, e);
+    const std::vector<int> nodes = part_element_nodes(part, e);
     for (int a : nodes) {
       centre += Vec3(x[3 * a], x[3 * a + 1], x[3 * a + 2]);
     }
@@ -53,54 +30,17 @@ std::vector<char> kept_elements(const FormedPart& part, const TrimOutline& outli
   return kept;
 }
 
-// The kept elements' connected pieces through shared nodes, elements each, largest first.
-std::vector<int> piece_sizes(const FormedPart& part, const std::vector<char>& kept) {
-  std::vector<int> parent(static_cast<std::size_t>(part.reference_nodes.cols()));
-  std::iota(parent.begin(), parent.end(), 0);
-  const auto root = [&](int i) {
-    while (parent[static_cast<std::size_t>(i)] != i) {
-      i = parent[static_cast<std::size_t>(i)] =
-          parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
-    }
-    return i;
-  };
-  for (std::size_t e = 0; e < kept.size(); ++e) {
-    if (kept[e]) {
-      const std::vector<int> nodes = element_nodes(part, static_cast<Eigen::Index>(e));
-      for (std::size_t a = 1; a < nodes.size(); ++a) {
-        parent[static_cast<std::size_t>(root(nodes[a]))] = root(nodes[0]);
-      }
-    }
+void check_trim_leaves_a_part(const FormedPart& part, std::size_t kept, std::size_t elements) {
+  if (kept == elements) {
+    throw InputError(part.file +
+                     ": the trim line misses the part: no element's centre is on the "
+                     "scrap side");
   }
-  std::map<int, int> count;
-  for (std::size_t e = 0; e < kept.size(); ++e) {
-    if (kept[e]) {
-      ++count[root(element_nodes(part, static_cast<Eigen::Index>(e))[0])];
-    }
+  if (kept == 0) {
+    throw InputError(part.file +
+                     ": the trim line leaves no part: every element's centre is on "
+                     "the scrap side");
   }
-  std::vector<int> sizes;
-  for (const auto& [piece, elements] : count) {
-    sizes.push_back(elements);
-  }
-  std::sort(sizes.rbegin(), sizes.rend());
-  return sizes;
-}
-
-// The values of the kept entities, `width` each (entity i's at i * width).
-std::vector<double> subset(const std::vector<double>& data, const std::vector<int>& kept_index,
-                           std::size_t count) {
-  if (count == 0 || data.size() % count != 0) {
-    return data;
-  }
-  const std::size_t width = data.size() / count;
-  std::vector<double> out;
-  out.reserve(kept_index.size() * width);
-  for (int i : kept_index) {
-    const auto first =
-        data.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(i) * width);
-    out.insert(out.end(), first, first + static_cast<std::ptrdiff_t>(width));
-  }
-  return out;
 }
 
 }  // namespace
@@ -108,110 +48,43 @@ std::vector<double> subset(const std::vector<double>& data, const std::vector<in
 FormedPart trim_by_removal(const FormedPart& part, const TrimOutline& outline,
                            TrimSummary* summary) {
   const std::vector<char> kept = kept_elements(part, outline);
-  const auto n_kept = std::count(kept.begin(), kept.end(), char{1});
-  if (n_kept == static_cast<std::ptrdiff_t>(kept.size())) {
-    throw InputError(part.file +
-                     ": the trim line misses the part: no element's centre is on the "
-                     "scrap side");
-  }
-  if (n_kept == 0) {
-    throw InputError(part.file +
-                     ": the trim line leaves no part: every element's centre is on "
-                     "the scrap side");
-  }
+  check_trim_leaves_a_part(part, static_cast<std::size_t>(std::count(kept.begin(), kept.end(), 1)),
+                           kept.size());
   const Eigen::Index n_nodes = part.reference_nodes.cols();
-  const Eigen::Index n_quads = part.quads.cols();
+  const auto n_quads = static_cast<int>(part.quads.cols());
   std::vector<int> new_node(static_cast<std::size_t>(n_nodes), -1);
-  std::vector<int> kept_elements_list;
   for (std::size_t e = 0; e < kept.size(); ++e) {
     if (kept[e]) {
-      kept_elements_list.push_back(static_cast<int>(e));
-      for (int a : element_nodes(part, static_cast<Eigen::Index>(e))) {
+      for (int a : part_element_nodes(part, static_cast<int>(e))) {
         new_node[static_cast<std::size_t>(a)] = 0;
       }
     }
   }
-  std::vector<int> kept_nodes;
-  for (Eigen::Index i = 0; i < n_nodes; ++i) {
+  PartRemap map;
+  for (int i = 0; i < n_nodes; ++i) {
     if (new_node[static_cast<std::size_t>(i)] == 0) {
-      new_node[static_cast<std::size_t>(i)] = static_cast<int>(kept_nodes.size());
-      kept_nodes.push_back(static_cast<int>(i));
+      new_node[static_cast<std::size_t>(i)] = static_cast<int>(map.nodes.size());
+      map.nodes.push_back({.a = i, .b = i, .t = 0.0, .origin = i});
     }
   }
-
-  FormedPart out;
-  out.file = part.file;
-  out.n_points = part.n_points;
-  out.rule = part.rule;
-  out.law = part.law;
-  out.tools = part.tools;
-  out.contact_tools = part.contact_tools;
-  out.reference_nodes.resize(3, static_cast<Eigen::Index>(kept_nodes.size()));
-  for (std::size_t k = 0; k < kept_nodes.size(); ++k) {
-    out.reference_nodes.col(static_cast<Eigen::Index>(k)) = part.reference_nodes.col(kept_nodes[k]);
-    if (static_cast<std::size_t>(kept_nodes[k]) < part.node_tags.size()) {
-      out.node_tags.push_back(part.node_tags[static_cast<std::size_t>(kept_nodes[k])]);
-    }
-  }
-  std::vector<int> quads, triangles;
-  for (int e : kept_elements_list) {
-    (e < n_quads ? quads : triangles).push_back(e);
-  }
-  out.quads.resize(4, static_cast<Eigen::Index>(quads.size()));
-  for (std::size_t k = 0; k < quads.size(); ++k) {
-    for (int a = 0; a < 4; ++a) {
-      out.quads(a, static_cast<Eigen::Index>(k)) =
-          new_node[static_cast<std::size_t>(part.quads(a, quads[k]))];
-    }
-  }
-  out.triangles.resize(3, static_cast<Eigen::Index>(triangles.size()));
-  for (std::size_t k = 0; k < triangles.size(); ++k) {
-    for (int a = 0; a < 3; ++a) {
-      out.triangles(a, static_cast<Eigen::Index>(k)) =
-          new_node[static_cast<std::size_t>(part.triangles(a, triangles[k] - n_quads))];
-    }
-  }
-  const std::size_t n_elements = kept.size();
-  out.initial_thickness = subset(part.initial_thickness, kept_elements_list, n_elements);
-  for (const auto& [name, nodes] : part.groups) {
-    std::vector<int>& group = out.groups[name];
-    for (int i : nodes) {
-      if (new_node[static_cast<std::size_t>(i)] >= 0) {
-        group.push_back(new_node[static_cast<std::size_t>(i)]);
-      }
-    }
-  }
-
-  static const auto by_name = fields_by_name();
-  for (const auto& [key, data] : part.fields) {
-    if (key.starts_with("tools/")) {
-      out.fields[key] = data;  // where the tools stand
+  for (std::size_t e = 0; e < kept.size(); ++e) {
+    if (!kept[e]) {
       continue;
     }
-    const auto found = by_name.find(key);
-    if (key.starts_with("contacts/") || found == by_name.end()) {
-      continue;  // the contact pairs' history starts afresh on the new edge
+    ElementSource element{.nodes = {}, .parent = static_cast<int>(e), .whole = true};
+    const std::vector<int> nodes = part_element_nodes(part, static_cast<int>(e));
+    for (std::size_t a = 0; a < nodes.size(); ++a) {
+      element.nodes[a] = new_node[static_cast<std::size_t>(nodes[a])];
     }
-    const StateField& field = found->second;
-    switch (field.place) {
-      case FieldPlace::node:
-        if (field.mapping == FieldMapping::interpolate) {
-          out.fields[key] = subset(data, kept_nodes, static_cast<std::size_t>(n_nodes));
-        }
-        break;  // forces, masses, offsets: the next model's
-      case FieldPlace::element:
-      case FieldPlace::point:
-        out.fields[key] = subset(data, kept_elements_list, n_elements);
-        break;
-      default:
-        out.fields[key] = data;
-    }
+    (element.parent < n_quads ? map.quads : map.triangles).push_back(element);
   }
+  FormedPart out = remap_part(part, map);
   if (summary) {
-    summary->elements_before = static_cast<int>(n_elements);
-    summary->elements_removed = static_cast<int>(n_elements) - static_cast<int>(n_kept);
-    summary->nodes_removed = static_cast<int>(n_nodes) - static_cast<int>(kept_nodes.size());
-    summary->piece_elements = piece_sizes(part, kept);
+    summary->elements_before = static_cast<int>(kept.size());
+    summary->elements_removed =
+        static_cast<int>(kept.size() - map.quads.size() - map.triangles.size());
+    summary->nodes_removed = static_cast<int>(n_nodes) - static_cast<int>(map.nodes.size());
+    summary->piece_elements = part_piece_sizes(out);
   }
   return out;
 }

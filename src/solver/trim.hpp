@@ -7,11 +7,8 @@
 // projects inside it is kept (or, keep_inside = false, outside it). The nodes no kept element uses
 // are dropped and the rest renumbered in their order.
 //
-// The state follows by each field's mapping (solver/state_fields.hpp): the run's numbers and
-// the tools' are kept; a node field that interpolates (coordinates, velocities, rotations) keeps
-// the kept nodes' values; an element or point field keeps the kept elements' values whole (a kept
-// element did not change); the node fields made again from the new mesh (forces, masses,
-// contact offsets) and the contact pairs' history are left out, for the next model to recompute.
+// The state follows as solver/part_remap.hpp maps it (every kept node and element as it was);
+// solver/trim_cut.hpp cuts the elements the line crosses instead.
 #include <vector>
 
 #include "core/types.hpp"
@@ -29,6 +26,15 @@ struct TrimSummary {
   /// The kept part's connected pieces (elements joined through shared nodes): elements each,
   /// largest first; more than one is a piece that may float free.
   std::vector<int> piece_elements;
+  // A clean cut's (solver/trim_cut.hpp); zero for a removal.
+  int elements_cut = 0;       ///< elements the line crosses, split along it
+  int pieces_made = 0;        ///< the elements their kept sides became
+  int elements_reshaped = 0;  ///< kept whole, a node moved onto the line
+  int nodes_made = 0;         ///< where the line crosses an edge
+  int nodes_moved = 0;        ///< onto the line, a cut having passed too near them
+  double largest_move = 0.0;  ///< mm, of a node moved onto the line
+  /// -, the smallest area of a piece or of an element with a moved node, over its parent's
+  double smallest_fraction = 1.0;
 };
 
 /// The part with the elements on the scrap side removed. Throws InputError naming the part's

@@ -15,6 +15,7 @@
 #include "casefile/case_config.hpp"
 #include "core/errors.hpp"
 #include "model/build_model.hpp"
+#include "part_measures.hpp"
 #include "results/hdf5_file.hpp"
 #include "solver/explicit_driver.hpp"
 #include "solver/formed_part.hpp"
@@ -195,23 +196,31 @@ std::vector<Vec3> centres(const FormedPart& part) {
   return out;
 }
 
-TEST(TrimChain, ATrimByThePunchsOutlineKeepsWhatLiesWithinTheOffsetOfIt) {
-  // The flange trimmed 12 mm outside the punch (3.5 mm outside the die's 8 mm profile radius,
-  // whose opening is 74 x 74 mm).
-  const double offset = 12.0;
-  const CaseConfig config = cup_with(
-      {"control.stroke=0",
-       "operations=[{name=\"OP10\", kind=\"forming\", stroke=2.0}, {name=\"OP20-trim\", "
-       "kind=\"trim\", line_tool=\"punch\", line_offset=12.0}, {name=\"OP30\", kind=\"forming\", "
-       "stroke=2.2}]"});
+// The square cup drawn to 2 mm, trimmed 12 mm outside the punch (the trim's further keys
+// `trim_keys`), drawn on to 2.2 mm; the results folder.
+fs::path draw_trim_by_punch_and_draw_on(const std::string& name, const std::string& trim_keys) {
+  const CaseConfig config =
+      cup_with({"control.stroke=0",
+                "operations=[{name=\"OP10\", kind=\"forming\", stroke=2.0}, {name=\"OP20-trim\", "
+                "kind=\"trim\", line_tool=\"punch\", line_offset=12.0" +
+                    trim_keys + "}, {name=\"OP30\", kind=\"forming\", stroke=2.2}]"});
   const Model model = build_model(config);
   EXPECT_EQ(model.tools[static_cast<std::size_t>(model.operations[1].trim_tool)].name, "punch");
-  const fs::path folder = output_folder("punch_outline");
+  EXPECT_EQ(model.operations[1].trim_cut, trim_keys.find("cut") != std::string::npos);
+  const fs::path folder = output_folder(name);
   RunOptions options;
   options.output_directory = folder;
   options.checkpoints = false;
   options.rebuild.model = [&config](const BlankMesh& blank) { return build_model(config, &blank); };
   run_explicit(model, options);
+  return folder;
+}
+
+TEST(TrimChain, ATrimByThePunchsOutlineKeepsWhatLiesWithinTheOffsetOfIt) {
+  // The flange trimmed 12 mm outside the punch (3.5 mm outside the die's 8 mm profile radius,
+  // whose opening is 74 x 74 mm).
+  const double offset = 12.0;
+  const fs::path folder = draw_trim_by_punch_and_draw_on("punch_outline", "");
 
   // Against the exact outline: kept where the centre lies within the offset of the punch (the
   // punch's meshed plan corner stands within 0.05 mm of its circle: 2 mm chords on 10 mm).
@@ -230,6 +239,39 @@ TEST(TrimChain, ATrimByThePunchsOutlineKeepsWhatLiesWithinTheOffsetOfIt) {
   EXPECT_GT(near_the_line, 20);  // the line crosses the mesh, not a gap in it
   EXPECT_LT(expected.size(), static_cast<std::size_t>(drawn.quads.cols()));
   EXPECT_EQ(centres(trimmed), expected);
+}
+
+TEST(TrimChain, ACutByThePunchsOutlinePutsThePartsEdgeOnTheOffsetLine) {
+  // The same trim cutting cleanly (solver/trim_cut.hpp), then drawn on over the mixed mesh of
+  // quads and the cut's triangles.
+  const double offset = 12.0;
+  const fs::path folder = draw_trim_by_punch_and_draw_on("punch_outline_cut", ", mode=\"cut\"");
+  // The exact line lies within 0.05 mm of the meshed punch's (its plan corner: 2 mm chords on
+  // 10 mm); the cut's nodes lie on the meshed one.
+  const double meshed = 0.05;
+  const FormedPart trimmed = read_formed_part(operation_formed_part_path(folder, "OP20-trim"));
+  for (int n = 0; n < trimmed.reference_nodes.cols(); ++n) {
+    const Vec3 x = test::node_at(trimmed, n);
+    EXPECT_LE(punch_outline_distance(x.x(), x.y()), offset + meshed) << "node " << n;
+  }
+  int on_line = 0;
+  for (const auto& [a, b] : test::free_edges(trimmed)) {
+    for (const int n : {a, b}) {
+      const Vec3 x = test::node_at(trimmed, n);
+      if (std::min(x.x(), x.y()) > 1e-9) {  // not on a symmetry plane
+        EXPECT_NEAR(punch_outline_distance(x.x(), x.y()), offset, meshed) << "node " << n;
+        ++on_line;
+      }
+    }
+  }
+  EXPECT_GT(on_line, 20);
+  // Its area seen along z: the quarter of the square [-25, 25]^2 grown by 22 mm, less the
+  // segments between the line's nodes on the 22 mm arc (2.5 mm elements: sagitta 0.036 mm, at
+  // most 2/3 of it times the 34.6 mm arc, 0.8 mm^2) and the meshed punch's (at most 0.05 mm
+  // times the arc, 1.7 mm^2).
+  const double r = 10.0 + offset;  // the punch's corner radius is 10 mm
+  const double area = 25.0 * 25.0 + 2.0 * 25.0 * r + std::acos(-1.0) * r * r / 4.0;
+  EXPECT_NEAR(test::projected_area(trimmed), area, 0.8 + meshed * std::acos(-1.0) * r / 2.0);
 }
 
 TEST(TrimChain, ATrimLineFromAGeoFilesPhysicalCurveIsThatCurve) {
@@ -332,6 +374,22 @@ TEST(TrimChain, BadTrimsAreRefusedNamingTheKey) {
                   ", {name=\"t\", kind=\"trim\", line_tool=\"punch\", line_offset=-2.0}]")
                 .find("operations[1].line_offset"),
             std::string::npos);
+  // A clean cut's keys: the mode of a trim only, the sliver fraction of a cut only, below 0.5.
+  const std::string line = "line=[[0, 0], [1, 0], [1, 1]]";
+  EXPECT_NE(error("operations=[{name=\"a\", kind=\"forming\", stroke=1.0, mode=\"cut\"}]")
+                .find("operations[0].mode"),
+            std::string::npos);
+  EXPECT_NE(error("operations=[" + draw + ", {name=\"t\", kind=\"trim\", " + line +
+                  ", sliver_fraction=0.2}]")
+                .find("operations[1].sliver_fraction"),
+            std::string::npos);
+  const std::string half = error("operations=[" + draw + ", {name=\"t\", kind=\"trim\", " + line +
+                                 ", mode=\"cut\", sliver_fraction=0.5}]");
+  EXPECT_NE(half.find("operations[1].sliver_fraction"), std::string::npos) << half;
+  EXPECT_NE(
+      error("operations=[" + draw + ", {name=\"t\", kind=\"trim\", " + line + ", mode=\"split\"}]")
+          .find("\"cut\""),
+      std::string::npos);
   const std::string geo = (fs::path(SF_TEST_DATA_DIR) / "trim_line.geo").string();
   EXPECT_NE(error("operations=[" + draw + ", {name=\"t\", kind=\"trim\", line_file=\"" + geo +
                   "\", line_curves=[1]}]")
