@@ -48,6 +48,7 @@
 #include "parallel/mpi_domain.hpp"
 #include "parallel/mpi_session.hpp"
 #include "solver/case_digest.hpp"
+#include "solver/case_model.hpp"
 #include "solver/checkpoint.hpp"
 #include "solver/distributed_run.hpp"
 #include "solver/dynain_writer.hpp"
@@ -125,7 +126,7 @@ LoadedCase load(const Arguments& args) {
   // 1. Read and validate the case file.
   sf::CaseConfig config = sf::read_case(args.case_file, case_options(args));
   // 2. Mesh every part and build the model.
-  sf::Model model = sf::build_model(config);
+  sf::Model model = sf::build_case_model(config);
   // 3. What it will cost, and what it asks for beyond the case's limits (refused here).
   sf::RunEstimate estimate = sf::estimate_run(config, model);
   sf::enforce_run_limits(config, estimate);

@@ -159,6 +159,30 @@ FieldTable<MeshSourceConfig> make_mesh_source_fields() {
 FieldTable<BlankConfig> make_blank_fields() {
   using B = BlankConfig;
   FieldTable<B> t = embed_fields<B>(mesh_source_fields(), &B::mesh);
+  // Without `mesh`, a case starting from a formed part takes the part's own mesh and node
+  // groups (a trimmed part's); the other mesh keys then have nothing to say.
+  for (Field<B>& f : t) {
+    if (f.doc.key == "mesh") {
+      f.presence = Presence::optional;
+      f.doc.default_text = "required; none with `formed_part`: the part's mesh";
+      f.read = [read = f.read](const TomlSection& s, B& b, Presence) {
+        if (s.has("mesh") || !s.has("formed_part")) {
+          read(s, b, Presence::required);
+        }
+      };
+      continue;
+    }
+    f = std::move(f).when(
+        [applies = f.applies](const B& b) {
+          return !b.mesh.file.empty() && (!applies || applies(b));
+        },
+        "",
+        [why = f.not_applicable](const B& b) {
+          return b.mesh.file.empty() || !why
+                     ? std::string("the blank has no `mesh`: it is the formed part's own")
+                     : why(b);
+        });
+  }
   const auto belytschko_tsay = [](const B& b) {
     return b.formulation == ShellFormulation::belytschko_tsay;
   };
@@ -209,8 +233,9 @@ FieldTable<BlankConfig> make_blank_fields() {
            {},
            "a formed part (`formed_part.h5` of another run's results folder), relative to the "
            "case file's folder: the run starts from its state (time, shape, thickness, stresses, "
-           "plastic strains; tools of the same name where it left them). Its blank must be this "
-           "case's blank (docs/process-chain.md)"},
+           "plastic strains; tools of the same name where it left them). With `mesh`, the part's "
+           "blank must be that mesh; without, the blank is the part's own mesh and node groups "
+           "(a trimmed part's; docs/process-chain.md)"},
           [](const TomlSection& s, B& b, Presence) {
             if (!s.has("formed_part")) {
               return;

@@ -173,6 +173,10 @@ void read_blank(const CaseConfig& config, Model& model, const BlankMesh* given) 
   Blank& blank = model.blank;
   if (given) {
     blank.mesh = given->mesh;
+  } else if (bc.mesh.file.empty()) {
+    throw InputError(config.file.string() +
+                     ": [blank] has no mesh: its mesh is blank.formed_part's, which "
+                     "build_case_model (solver/case_model.hpp) reads");
   } else {
     gmsh_model = load_mesh_source(config, bc.mesh, "blank", bc.element == BlankMeshing::quad);
     blank.mesh = extract_part_mesh(*gmsh_model, bc.mesh.group, "blank");

@@ -157,6 +157,15 @@ CheckpointInfo resume_state(const Model& model, const RunOptions& options,
 void start_from_formed_part(const Model& model, const FormedPart& part, SolutionState& s,
                             LoopMark& loop) {
   const std::vector<std::string> placed = apply_formed_part(part, model, s);
+  for (std::size_t t = 0; t < s.tools.size() && model.operations.empty(); ++t) {
+    if (s.tools[t].held) {
+      throw InputError(fmt::format(
+          "{}: tool '{}' stood still at the part's end (a trim or an operation left it out); a "
+          "case without [[operations]] would keep it there: give the case [[operations]], whose "
+          "first starts its motion afresh from where it stands",
+          part.file, model.tools[t].name));
+    }
+  }
   for (std::size_t t = 0; t < s.tools.size(); ++t) {
     if (std::find(placed.begin(), placed.end(), model.tools[t].name) == placed.end()) {
       s.tools[t].displacement = model.tools[t].motion.displacement(s.time);

@@ -515,4 +515,20 @@ std::vector<std::string> apply_formed_part(const FormedPart& part, const Model& 
   return placed;
 }
 
+BlankMesh blank_mesh_of(const FormedPart& part) {
+  BlankMesh b;
+  b.mesh.name = "blank";
+  b.mesh.nodes = part.reference_nodes;
+  for (double tag : part.node_tags) {
+    b.mesh.gmsh_node_tags.push_back(static_cast<std::size_t>(tag));
+  }
+  b.mesh.quads = part.quads;
+  b.mesh.triangles = part.triangles;
+  for (const auto& [name, nodes] : part.groups) {
+    b.groups.push_back({name, nodes});
+  }
+  b.source = part.file;
+  return b;
+}
+
 }  // namespace sf

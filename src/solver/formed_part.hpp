@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "model/build_model.hpp"
 #include "model/model.hpp"
 #include "solver/solution_state.hpp"
 
@@ -73,6 +74,10 @@ void write_formed_part(const std::filesystem::path& file, const Model& model,
 /// forces, masses, offsets, contact pairs' history) listed in the attribute left_out of /state,
 /// which read_formed_part accepts. Throws OutputError naming the file.
 void write_formed_part(const std::filesystem::path& file, const FormedPart& part);
+
+/// The part's mesh and node groups, for build_model to build a model on (after a trim, or for a
+/// case whose blank is a formed part's own mesh).
+BlankMesh blank_mesh_of(const FormedPart& part);
 
 /// Reads `file`; throws InputError naming the file and the entry when it is not a formed part,
 /// of another format version, or damaged.

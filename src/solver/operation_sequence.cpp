@@ -93,7 +93,9 @@ void OperationSequence::begin(int k, SolutionState& s) const {
   for (std::size_t t = 0; t < s.tools.size(); ++t) {
     if (!op.in_play[t]) {
       hold(t, s);
-    } else if (k > 0 || op.motions[t]) {
+    } else if (k > 0 || op.motions[t] || s.tools[t].held) {
+      // (held at the first operation: a formed part's run left it standing, after a trim or
+      // out of play; it starts its motion afresh from there, as in one case)
       bring_into_play(k, t, !s.tools[t].held, s);
     }
   }

@@ -89,20 +89,4 @@ FormedPart trim_by_removal(const FormedPart& part, const TrimOutline& outline,
   return out;
 }
 
-BlankMesh blank_mesh_of(const FormedPart& part) {
-  BlankMesh b;
-  b.mesh.name = "blank";
-  b.mesh.nodes = part.reference_nodes;
-  for (double tag : part.node_tags) {
-    b.mesh.gmsh_node_tags.push_back(static_cast<std::size_t>(tag));
-  }
-  b.mesh.quads = part.quads;
-  b.mesh.triangles = part.triangles;
-  for (const auto& [name, nodes] : part.groups) {
-    b.groups.push_back({name, nodes});
-  }
-  b.source = part.file;
-  return b;
-}
-
 }  // namespace sf

@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "core/types.hpp"
-#include "model/build_model.hpp"
 #include "solver/formed_part.hpp"
 #include "solver/trim_outline.hpp"
 
@@ -42,8 +41,5 @@ struct TrimSummary {
 /// leaves no part.
 FormedPart trim_by_removal(const FormedPart& part, const TrimOutline& outline,
                            TrimSummary* summary = nullptr);
-
-/// The part's mesh and node groups, for build_model to build the next model on.
-BlankMesh blank_mesh_of(const FormedPart& part);
 
 }  // namespace sf

@@ -6,7 +6,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,7 @@
 #include "model/build_model.hpp"
 #include "part_measures.hpp"
 #include "results/hdf5_file.hpp"
+#include "solver/case_model.hpp"
 #include "solver/explicit_driver.hpp"
 #include "solver/formed_part.hpp"
 #include "solver/trim.hpp"
@@ -272,6 +275,102 @@ TEST(TrimChain, ACutByThePunchsOutlinePutsThePartsEdgeOnTheOffsetLine) {
   const double r = 10.0 + offset;  // the punch's corner radius is 10 mm
   const double area = 25.0 * 25.0 + 2.0 * 25.0 * r + std::acos(-1.0) * r * r / 4.0;
   EXPECT_NEAR(test::projected_area(trimmed), area, 0.8 + meshed * std::acos(-1.0) * r / 2.0);
+}
+
+// The cup's case for a second case of a chain: its blank's mesh keys replaced by the formed part
+// `part` (whose own mesh the blank then is), its tools' meshes by their absolute paths.
+fs::path case_from_part(const fs::path& folder, const fs::path& part) {
+  const fs::path cup_folder = fs::path(SF_SOURCE_DIR) / "cases/square_cup_aluminium";
+  std::ifstream in(cup_folder / "case.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string toml = text.str();
+  const auto replace = [&toml](const std::string& from, const std::string& to) {
+    const std::size_t at = toml.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    toml.replace(at, from.size(), to);
+  };
+  replace("mesh = \"blank.geo\"\ngroup = \"blank\"\nelement_size = 2.5          # mm\n",
+          fmt::format("formed_part = \"{}\"\n", part.string()));
+  for (const std::string tool : {"punch", "die", "holder"}) {
+    replace(fmt::format("mesh = \"{}.geo\"", tool),
+            fmt::format("mesh = \"{}\"", (cup_folder / (tool + ".geo")).string()));
+  }
+  const fs::path file = folder / "case.toml";
+  std::ofstream(file) << toml;
+  return file;
+}
+
+TEST(TrimChain, ASecondCaseFromTheTrimmedPartGivesTheBitsOfOneCase) {
+  // One case: drawn to 2 mm, cut 12 mm outside the punch, drawn on to 2.2 mm. Two cases: the
+  // first draws and cuts, the second starts from the trimmed part's file, its blank the part's
+  // own mesh (no blank.mesh), and draws on.
+  const std::string draw = "{name=\"OP10\", kind=\"forming\", stroke=2.0}";
+  const std::string cut =
+      "{name=\"OP20-trim\", kind=\"trim\", line_tool=\"punch\", line_offset=12.0, mode=\"cut\"}";
+  const std::string draw_on = "{name=\"OP30\", kind=\"forming\", stroke=2.2}";
+  const auto run_case = [](const CaseConfig& config, const fs::path& folder) {
+    RunOptions options;
+    options.output_directory = folder;
+    options.checkpoints = false;
+    options.rebuild.model = [&config](const BlankMesh& blank) {
+      return build_model(config, &blank);
+    };
+    run_explicit(build_case_model(config), options);
+  };
+  const fs::path one = output_folder("one_case");
+  run_case(cup_with({"control.stroke=0", "draw_in=[]",
+                     "operations=[" + draw + ", " + cut + ", " + draw_on + "]"}),
+           one);
+  const fs::path first = output_folder("first_case");
+  run_case(cup_with({"control.stroke=0", "draw_in=[]", "operations=[" + draw + ", " + cut + "]"}),
+           first);
+  const fs::path second = output_folder("second_case");
+  const CaseConfig config = read_case(
+      case_from_part(second, operation_formed_part_path(first, "OP20-trim")),
+      CaseOptions{.set = {"control.stroke=0", "draw_in=[]", "operations=[" + draw_on + "]"},
+                  .stroke = {},
+                  .end_time = {},
+                  .search = {}});
+  EXPECT_TRUE(config.blank.mesh.file.empty());
+  run_case(config, second);
+
+  const FormedPart a = read_formed_part(one / "formed_part.h5");
+  const FormedPart b = read_formed_part(second / "formed_part.h5");
+  ASSERT_EQ(a.reference_nodes, b.reference_nodes);
+  EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_GT(a.triangles.cols(), 0);  // the cut's
+  ASSERT_EQ(a.fields.size(), b.fields.size());
+  int compared = 0;
+  for (const auto& [key, values] : a.fields) {
+    if (key.starts_with("operation/")) {
+      continue;  // the operation's number and start: the third of one case, the first of two
+    }
+    EXPECT_EQ(values, b.fields.at(key)) << key << " differs between one case and two";
+    ++compared;
+  }
+  EXPECT_GT(compared, 100);
+  EXPECT_GT(a.fields.at("time")[0],
+            read_formed_part(operation_formed_part_path(first, "OP20-trim")).fields.at("time")[0]);
+  // Without [[operations]] the tools the trim left standing would stay: refused. Without a mesh,
+  // the blank's mesh keys are refused.
+  const fs::path plain = output_folder("plain_case");
+  const fs::path plain_case = case_from_part(plain, operation_formed_part_path(first, "OP20-trim"));
+  const auto message = [&](const std::vector<std::string>& set) {
+    try {
+      run_case(read_case(plain_case,
+                         CaseOptions{.set = set, .stroke = {}, .end_time = {}, .search = {}}),
+               plain);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  const std::string standing = message({"control.stroke=2.2", "draw_in=[]"});
+  EXPECT_NE(standing.find("tool 'punch' stood still"), std::string::npos) << standing;
+  const std::string size = message({"control.stroke=2.2", "draw_in=[]", "blank.element_size=2.5"});
+  EXPECT_NE(size.find("blank.element_size"), std::string::npos) << size;
+  EXPECT_NE(size.find("no `mesh`"), std::string::npos) << size;
 }
 
 TEST(TrimChain, ATrimLineFromAGeoFilesPhysicalCurveIsThatCurve) {
