@@ -5,7 +5,7 @@
 # stroke (force-controlled holder, friction, the cached search, quads), then the same blank as
 # triangles (assumed strain, the modified search); the U-channel to 4 mm with its implicit
 # springback (on rank 0 after the gather); a closing then a draw as two operations (issue 32) at
-# 2 ranks, and a draw, a trim and a draw on at 2 ranks. Then what a distributed run refuses or stops with:
+# 2 ranks, and a draw, a trim (removing, then cutting) and a draw on at 2 ranks. Then what a distributed run refuses or stops with:
 # mass scaling (exit 2, the key named), more ranks than elements (exit 2), an energy blow-up
 # (exit 3, said once, the results readable up to the stop), and an element failure met by one
 # rank (exit 3, the serial run's message on every rank count).
@@ -99,6 +99,17 @@ with h5py.File(sys.argv[1] + "/results.h5") as f:
     assert f["operations/1"].attrs["kind"] in ("trim", b"trim")
     trimmed = f["parts/blank/topologies/1/connectivity"].shape[0]
     assert 0 < trimmed < f["parts/blank/connectivity"].shape[0], trimmed
+PY
+
+# The same trim cutting cleanly: the mesh after it mixes quads and the cut's triangles, split over
+# the ranks afresh; 2 ranks give the serial bits.
+trim_cut=(--set control.stroke=0 --set blank.element_size=1.875
+          --set "operations=[{name=\"draw\", kind=\"forming\", stroke=0.3}, {name=\"trim\", kind=\"trim\", mode=\"cut\", line=[[-1, -1], [50, -1], [50, 50], [-1, 50]]}, {name=\"on\", kind=\"forming\", stroke=0.5}]")
+serial_and_two_ranks trim_cut "${trim_cut[@]}"
+/usr/bin/python3 - "$work/trim_cut-2" <<'PY' || fail "cut at 2 ranks: no cut mesh in the results"
+import sys, h5py
+with h5py.File(sys.argv[1] + "/formed_part.trim.h5") as f:
+    assert f["mesh/triangles"].shape[0] > 0, "no triangles after the cut"
 PY
 
 # Refused: mass scaling, more ranks than elements (exit 2, a message naming the cause, once).
