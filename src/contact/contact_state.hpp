@@ -16,9 +16,10 @@ namespace sf {
 /// What one thread's share of the blank nodes sums in a contact call: exactly (the tool's reaction
 /// and the energies), so that the totals do not depend on how the nodes were shared out.
 struct alignas(64) ContactShare {
-  ExactSum force_on_tool[3];  ///< N, components of the reaction on the tool
-  ExactSum energy;            ///< N mm, penalty spring energy
-  ExactSum friction_work;     ///< N mm
+  ExactSum force_on_tool[3];   ///< N, components of the reaction on the tool
+  ExactSum moment_on_tool[3];  ///< N mm, its moment about the origin
+  ExactSum energy;             ///< N mm, penalty spring energy
+  ExactSum friction_work;      ///< N mm
   int nodes_in_contact = 0;
   int sliding_nodes = 0;
   int sticking_nodes = 0;

@@ -68,18 +68,22 @@ void gap_geometry(const ContactPair& pair, const Vec3& p, const ClosestPoint& cp
 }
 
 // The penalty and friction force on node i with gap g = distance - h < 0 along `normal`, into
-// f_contact and result; updates the node's stick force.
+// f_contact and result; updates the node's stick force. p: the node in the tool's mesh frame.
 void add_node_force(const ContactPair& pair, ContactState& state,
-                    const ContactKinematics& kinematics, int i, double g, const Vec3& normal,
-                    ContactShare& result, Matrix3X& f_contact) {
+                    const ContactKinematics& kinematics, bool rotating, int i, const Vec3& p,
+                    double g, const Vec3& normal, ContactShare& result, Matrix3X& f_contact) {
   const double k = pair.stiffness[i];
   const double normal_force = k * (-g);
   Vec3 f = normal_force * normal;
   result.energy.add(0.5 * k * g * g);
   ++result.nodes_in_contact;
   if (pair.friction.active()) {
-    const Vec3 increment =
-        kinematics.dt * kinematics.v.col(i) - kinematics.tool_displacement_increment;
+    // The step of the tool's point where the node is (a translating tool's: its own step).
+    const Vec3 tool_step =
+        rotating ? Vec3((kinematics.tool_rotation - kinematics.tool_rotation_previous) * p +
+                        kinematics.tool_displacement_increment)
+                 : kinematics.tool_displacement_increment;
+    const Vec3 increment = kinematics.dt * kinematics.v.col(i) - tool_step;
     Vec3 stored = state.stick_force.col(i);
     const FrictionStep step =
         coulomb_friction_update(pair.friction, stored, normal, increment, kinematics.dt,
@@ -93,6 +97,12 @@ void add_node_force(const ContactPair& pair, ContactState& state,
   for (int c = 0; c < 3; ++c) {
     result.force_on_tool[c].add(-f[c]);
   }
+  if (rotating) {
+    const Vec3 moment = kinematics.x.col(i).cross(-f);
+    for (int c = 0; c < 3; ++c) {
+      result.moment_on_tool[c].add(moment[c]);
+    }
+  }
 }
 
 // What happened to a node in one call.
@@ -105,7 +115,7 @@ enum class NodeOutcome {
 // The contact of node i at p: searched (or skipped when its distance bound allows), then the
 // force if it penetrates.
 NodeOutcome node_contact(const ContactPair& pair, ContactState& state,
-                         const ContactKinematics& kinematics, int i, const Vec3& p,
+                         const ContactKinematics& kinematics, bool rotating, int i, const Vec3& p,
                          ContactShare& result, Matrix3X& f_contact) {
   const bool bounded = pair.distance_bound != nullptr;
   if (bounded && provably_beyond_cutoff(pair, state.distance_bounds, i, p)) {
@@ -131,7 +141,10 @@ NodeOutcome node_contact(const ContactPair& pair, ContactState& state,
   if (!(g < 0 && distance > -h - pair.cutoff)) {
     return NodeOutcome::apart;
   }
-  add_node_force(pair, state, kinematics, i, g, normal, result, f_contact);
+  if (rotating) {
+    normal = kinematics.tool_rotation * normal;  // found in the tool's mesh frame
+  }
+  add_node_force(pair, state, kinematics, rotating, i, p, g, normal, result, f_contact);
   return NodeOutcome::pressed;
 }
 
@@ -153,6 +166,8 @@ void contact_block(const ContactPair& pair, ContactState& state,
                    const ContactKinematics& kinematics, std::span<const int> list, int begin,
                    int end, ContactShare& share, Matrix3X& f_contact) {
   const bool friction = pair.friction.active();
+  const bool rotating = kinematics.tool_rotation != Mat3::Identity() ||
+                        kinematics.tool_rotation_previous != Mat3::Identity();
   for (int k = begin; k < end; ++k) {
     const int i = list.empty() ? k : list[static_cast<std::size_t>(k)];
     const double h = kinematics.half_thickness[i];
@@ -163,12 +178,16 @@ void contact_block(const ContactPair& pair, ContactState& state,
       }
       continue;
     }
-    const Vec3 p = kinematics.x.col(i) - kinematics.tool_displacement;
+    // In the tool's mesh frame, where its search, projection and distance bounds live.
+    const Vec3 p = rotating ? Vec3(kinematics.tool_rotation.transpose() *
+                                   (kinematics.x.col(i) - kinematics.tool_displacement))
+                            : Vec3(kinematics.x.col(i) - kinematics.tool_displacement);
     // A skipped node's stick force is zero already, so it is not written (memory traffic is
     // most of a skipped node's cost): a node is skipped only while its bound is positive, and a
     // bound is set in a call where the node is out of contact -- skipped, or searched and apart
     // (its stick force reset then) -- and lost (slack -1) when a search finds the tool.
-    const NodeOutcome outcome = node_contact(pair, state, kinematics, i, p, share, f_contact);
+    const NodeOutcome outcome =
+        node_contact(pair, state, kinematics, rotating, i, p, share, f_contact);
     if (friction && outcome == NodeOutcome::apart) {
       state.stick_force.col(i).setZero();
     }
@@ -183,6 +202,7 @@ ContactResult merge_shares(std::vector<ContactShare>& shares, int used, std::str
     const ContactShare& share = shares[static_cast<std::size_t>(t)];
     for (int c = 0; c < 3; ++c) {
       total.force_on_tool[c].merge(share.force_on_tool[c]);
+      total.moment_on_tool[c].merge(share.moment_on_tool[c]);
     }
     total.energy.merge(share.energy);
     total.friction_work.merge(share.friction_work);
@@ -212,6 +232,7 @@ ContactResult merge_shares(std::vector<ContactShare>& shares, int used, std::str
   ContactResult result;
   for (int c = 0; c < 3; ++c) {
     result.force_on_tool[c] = total.force_on_tool[c].round();
+    result.moment_on_tool[c] = total.moment_on_tool[c].round();
   }
   result.energy = total.energy.round();
   result.friction_work = total.friction_work.round();

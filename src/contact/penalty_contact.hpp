@@ -58,11 +58,19 @@ struct ContactKinematics {
   /// Nodes whose forces are computed but whose sums and failures are left to their owner
   /// (an MPI rank's ghost nodes), ascending; used only with owned_nodes.
   std::span<const int> ghost_nodes = {};
+  /// The tool's rotation now and a step ago: its mesh's point X stands at R X +
+  /// tool_displacement. Identity (the default) for a tool that only translates.
+  Mat3 tool_rotation = Mat3::Identity();
+  Mat3 tool_rotation_previous = Mat3::Identity();
 };
 
 /// What one call of `compute_penalty_contact` did.
 struct ContactResult {
   Vec3 force_on_tool = Vec3::Zero();  ///< sum of the reactions on the tool (normal + friction), N
+  /// N mm, a rotating tool's (zero for a translating one): the reactions' moment about the
+  /// origin, each acting at its blank node (its torque about an axis through c:
+  /// (moment_on_tool - c x force_on_tool) . axis)
+  Vec3 moment_on_tool = Vec3::Zero();
   int nodes_in_contact = 0;
   double energy = 0;             ///< penalty energy sum 1/2 k g^2, N mm
   double friction_work = 0;      ///< friction work dissipated in this call, N mm (>= 0)
@@ -72,13 +80,17 @@ struct ContactResult {
 };
 
 /// For every blank node i (or, with kinematics.owned_nodes / ghost_nodes, those nodes, the sums
-/// over the owned ones only): queries the surface at p = x_i - tool_displacement (reference frame)
+/// over the owned ones only): queries the surface at p = R^T (x_i - tool_displacement) (the tool's
+/// mesh frame; R = kinematics.tool_rotation, identity for a translating tool; normals found there
+/// are turned by R)
 /// within pair.cutoff (search->find_closest_for_node with the state's search cache); D = the signed
 /// distance (orthogonal) or the interpolated projection's D, n the matching normal; gap g = D -
 /// half_thickness[i] (mm); if g < 0 and D > -half_thickness[i] - cutoff (nodes that passed far
 /// behind the surface are ignored), adds the normal force k_i (-g) n to f_contact.col(i) (N; the
 /// caller zeroes f_contact) and its reaction to the tool's force. With friction active, the node's
-/// relative tangential displacement over the step, dt v_i - tool_displacement_increment projected
+/// relative tangential displacement over the step, dt v_i less the step of the tool's point at the
+/// node ((R - R_previous) p + tool_displacement_increment; for a translating tool the increment)
+/// projected
 /// on the tangent plane of n, drives coulomb_friction_update with the normal force k_i (-g) and k_t
 /// = ratio * k_i; its force is added likewise and its dissipation summed. A node out of contact has
 /// its stick force reset to zero. Orthogonal: the normal force is minus the gradient of 1/2 k g^2.
