@@ -108,6 +108,12 @@ void read_tools(const TomlSection& top, std::vector<ToolConfig>& tools) {
                    "\"as_meshed\" for a fixed tool (\"touch\" moves a tool along its motion's "
                    "direction: give it a [tools.motion])");
     }
+    if (tool.position == ToolConfig::Position::touch && tool.motion.turns() &&
+        tool.motion.angle.values.front() != 0.0) {
+      s.fail_value("position",
+                   "\"as_meshed\" for a tool that starts turned (its angle at time 0 is not 0: "
+                   "\"touch\" moves the tool as meshed)");
+    }
     tools.push_back(std::move(tool));
   }
 }

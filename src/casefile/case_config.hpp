@@ -192,6 +192,12 @@ struct MotionConfig {
   std::optional<double> mass;
   /// force: mass-proportional damping on the tool, 1/s (>= 0). Not allowed for the other types.
   double damping = 0.0;
+  /// A turn of the tool about `axis` through `pivot`, in degrees against time in s (right-hand
+  /// rule; empty: the tool does not turn). Not for a force-controlled tool.
+  CurveConfig angle;
+  std::array<double, 3> axis{0.0, 1.0, 0.0};   ///< unit vector (normalised on read), as meshed
+  std::array<double, 3> pivot{0.0, 0.0, 0.0};  ///< mm, a point of the axis, as meshed
+  bool turns() const { return !angle.times.empty(); }
 };
 
 struct ToolConfig {

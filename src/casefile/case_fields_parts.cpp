@@ -273,6 +273,28 @@ FieldTable<ToolConfig> make_tool_fields() {
   return t;
 }
 
+// A tool that turns (a flanging steel, a cam): its angle curve, axis and pivot.
+void add_turn_fields(FieldTable<MotionConfig>& t) {
+  using M = MotionConfig;
+  const auto not_forced = [](const M& m) { return m.type != M::Type::force; };
+  const auto turns = [](const M& m) { return m.turns(); };
+  const std::string turn_only = "axis and pivot are for a tool that turns: give its `angle` curve";
+  t.push_back(curve_field<M>("angle", &M::angle, "degrees",
+                             "the tool turns by this angle about `axis` through `pivot` "
+                             "(right-hand rule), piecewise linear, held after the last point; "
+                             "with any `type` but `\"force\"` (a translation moves the pivot "
+                             "with the tool)")
+                  .when(not_forced, "not for `\"force\"`",
+                        "a force-controlled tool moves along its direction only (no angle)"));
+  t.push_back(direction_field<M>("axis", &M::axis,
+                                 "the axis the tool turns about, in the mesh's coordinates")
+                  .when(turns, "with `angle` only", turn_only));
+  t.push_back(vector_field<M>("pivot", &M::pivot, "mm",
+                              "a point of the axis, in the mesh's coordinates (the hinge "
+                              "where the die drawing has it)")
+                  .when(turns, "with `angle` only", turn_only));
+}
+
 FieldTable<MotionConfig> make_motion_fields() {
   using M = MotionConfig;
   using Type = MotionConfig::Type;
@@ -333,6 +355,7 @@ FieldTable<MotionConfig> make_motion_fields() {
                               "speed); damping × time step must stay below 1 (checked when the "
                               "model is built)")
                   .when(force, "`\"force\"` only", force_only));
+  add_turn_fields(t);
   return t;
 }
 

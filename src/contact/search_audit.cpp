@@ -13,7 +13,7 @@ SearchAudit::SearchAudit(const TriangleSurface& surface)
       tolerance_(detail::make_tie_tolerance(surface)) {}
 
 SearchAuditCount SearchAudit::run(const ContactSearch& audited, const Matrix3X& x,
-                                  const Vec3& tool_displacement, double cutoff, VectorX& miss,
+                                  const ToolPlacement& tool, double cutoff, VectorX& miss,
                                   VectorX& gap_error) const {
   SearchAuditCount count;
   const Eigen::Index n = x.cols();
@@ -22,7 +22,7 @@ SearchAuditCount SearchAudit::run(const ContactSearch& audited, const Matrix3X& 
   ClosestPoint exact;
   ClosestPoint chosen;
   for (Eigen::Index i = 0; i < n; ++i) {
-    const Vec3 p = x.col(i) - tool_displacement;
+    const Vec3 p = tool.rotation.transpose() * (x.col(i) - tool.translation);
     exact_->find_closest(p, cutoff, exact);
     if (exact.triangle < 0) {
       continue;

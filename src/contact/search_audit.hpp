@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "contact/contact_search.hpp"
+#include "contact/tool_placement.hpp"
 #include "contact/triangle_projection.hpp"
 #include "core/types.hpp"
 #include "mesh/triangle_surface.hpp"
@@ -24,16 +25,16 @@ class SearchAudit {
   /// `surface` must outlive the audit.
   explicit SearchAudit(const TriangleSurface& surface);
 
-  /// For every blank node i, queried at x_i - tool_displacement (tool reference frame): when the
+  /// For every blank node i, queried at R^T (x_i - t) (the tool's mesh frame; R, t: `tool`'s
+  /// rotation and translation, contact/tool_placement.hpp): when the
   /// exact search finds a triangle within `cutoff` (mm), the node is checked; it is a miss when the
   /// audited search's triangle (queried without a cutoff, so that its own choice is seen even when
   /// that choice lies beyond the cutoff) is not in the exact tie set and its distance exceeds the
   /// exact one beyond the tie tolerance. Writes miss[i] = 1 or 0 and
   /// gap_error[i] = audited signed distance - exact signed distance (mm; 0 where no miss; the
   /// audited search's error in the contact gap). Unchecked nodes get 0 and 0. No allocation.
-  SearchAuditCount run(const ContactSearch& audited, const Matrix3X& x,
-                       const Vec3& tool_displacement, double cutoff, VectorX& miss,
-                       VectorX& gap_error) const;
+  SearchAuditCount run(const ContactSearch& audited, const Matrix3X& x, const ToolPlacement& tool,
+                       double cutoff, VectorX& miss, VectorX& gap_error) const;
 
  private:
   std::unique_ptr<ContactSearch> exact_;

@@ -358,6 +358,7 @@ void read_tools(const CaseConfig& config, Model& model) {
     // once the blank's mass and the contact springs are known (set_up_force_controlled_tools).
     if (tc.motion.type != MotionConfig::Type::force) {
       tool.motion = RigidToolMotion(tc.motion);
+      tool.motion.move_pivot(tool.touch_shift * tool.motion.direction());
     }
     model.tools.push_back(std::move(tool));
   }

@@ -51,12 +51,14 @@ struct Operation {
 };
 
 /// Where a tool's motion in effect starts: the operation that gave it (-1: the case's own
-/// [[tools]] motion), the time it counts from and the travel and displacement it adds to.
+/// [[tools]] motion), the time it counts from and the travel, placement and turn it adds to.
 struct ToolMotionOrigin {
   int operation = -1;
   double start = 0.0;                ///< s
   double travel = 0.0;               ///< mm
-  Vec3 displacement = Vec3::Zero();  ///< mm
+  Vec3 displacement = Vec3::Zero();  ///< mm, the placement's translation
+  Mat3 rotation = Mat3::Identity();  ///< the placement's rotation (contact/tool_placement.hpp)
+  double angle = 0.0;                ///< rad, the turn it adds to
 };
 
 }  // namespace sf

@@ -59,7 +59,11 @@ Operation make_operation(const CaseConfig& config, const Model& model, std::size
   }
   op.motions.resize(n);
   for (const OperationMotionConfig& m : c.motions) {
-    op.motions[static_cast<std::size_t>(tool_index(model, m.tool))] = RigidToolMotion(m.motion);
+    const Tool& tool = model.tools[static_cast<std::size_t>(tool_index(model, m.tool))];
+    std::optional<RigidToolMotion>& motion =
+        op.motions[static_cast<std::size_t>(tool_index(model, m.tool))];
+    motion = RigidToolMotion(m.motion);
+    motion->move_pivot(tool.touch_shift * tool.direction());  // pivots as the mesh was moved
   }
   op.tool = c.tool.empty() ? -1 : tool_index(model, c.tool);
   op.gap_to = c.gap_to.empty() ? -1 : tool_index(model, c.gap_to);
@@ -84,9 +88,29 @@ Operation make_operation(const CaseConfig& config, const Model& model, std::size
   return op;
 }
 
+// Whether tool t turns in the case's motion or in the operations up to `last` (its index).
+bool turns_up_to(const Model& model, std::size_t last, int t) {
+  const auto i = static_cast<std::size_t>(t);
+  bool turns = model.tools[i].motion.turns();
+  for (std::size_t k = 0; k <= last && k < model.operations.size(); ++k) {
+    const std::optional<RigidToolMotion>& motion = model.operations[k].motions[i];
+    turns = turns || (motion && motion->turns());
+  }
+  return turns;
+}
+
 void set_reference_clearance(const CaseConfig& config, const Model& model, Operation& op) {
   const Tool& tool = model.tools[static_cast<std::size_t>(op.tool)];
   const Tool& other = model.tools[static_cast<std::size_t>(op.gap_to)];
+  for (const int t : {op.tool, op.gap_to}) {
+    if (turns_up_to(model, static_cast<std::size_t>(&op - model.operations.data()), t)) {
+      throw InputError(fmt::format(
+          "{}: {}.end = \"gap\": tool '{}' turns (its motion has an `angle`), and a gap is "
+          "measured between tools that only translate: end the operation by stroke, time or "
+          "force",
+          config.file.string(), op.entry, model.tools[static_cast<std::size_t>(t)].name));
+    }
+  }
   const std::optional<double> clearance =
       clearance_along(tool.surface, other.surface, tool.direction());
   if (!clearance) {
@@ -112,6 +136,10 @@ double planned_end(const Model& model, const Operation& op, const ToolMotionOrig
 }
 
 }  // namespace
+
+bool ever_turns(const Model& model, int tool) {
+  return turns_up_to(model, model.operations.size(), tool);
+}
 
 const RigidToolMotion& motion_in_effect(const Model& model, int tool,
                                         const ToolMotionOrigin& origin) {
@@ -145,6 +173,36 @@ double speed_in_effect(const Model& model, int tool, const ToolMotionOrigin& ori
   return motion_in_effect(model, tool, origin).speed(t - origin.start);
 }
 
+// (The case's motion from time 0 keeps its own time, as in travel_in_effect.)
+ToolPlacement placement_in_effect(const Model& model, int tool, const ToolMotionOrigin& origin,
+                                  double t) {
+  const RigidToolMotion& motion = motion_in_effect(model, tool, origin);
+  ToolPlacement p{origin.rotation, displacement_in_effect(model, tool, origin, t)};
+  if (!motion.turns()) {
+    return p;
+  }
+  const double since = origin.operation < 0 && origin.start == 0.0 ? t : t - origin.start;
+  const Vec3 pivot = origin.rotation * motion.pivot() + origin.displacement;
+  const Mat3 turn = rotation_about(origin.rotation * motion.axis(), motion.angle(since));
+  p.rotation = turn * origin.rotation;
+  p.translation = turn * (origin.displacement - pivot) + pivot + motion.displacement(since);
+  return p;
+}
+
+double angle_in_effect(const Model& model, int tool, const ToolMotionOrigin& origin, double t) {
+  const RigidToolMotion& motion = motion_in_effect(model, tool, origin);
+  if (origin.operation < 0 && origin.start == 0.0) {
+    return motion.angle(t);
+  }
+  return origin.angle + motion.angle(t - origin.start);
+}
+
+ToolStanding standing_in_effect(const Model& model, int tool, const ToolMotionOrigin& origin,
+                                double t) {
+  return {travel_in_effect(model, tool, origin, t), placement_in_effect(model, tool, origin, t),
+          angle_in_effect(model, tool, origin, t)};
+}
+
 std::optional<double> stroke_end_time(const Model& model, const Operation& op,
                                       const ToolMotionOrigin& origin) {
   const RigidToolMotion& motion = motion_in_effect(model, op.tool, origin);
@@ -173,15 +231,17 @@ double checked_stroke_end(const Model& model, const Operation& op, const ToolMot
 
 ToolMotionOrigin origin_at_start(const Model& model, int k, int tool,
                                  const ToolMotionOrigin& before, bool moved, double t0,
-                                 double travel, const Vec3& displacement) {
+                                 const ToolStanding& here) {
   const Operation& op = model.operations[static_cast<std::size_t>(k)];
-  if (op.motions[static_cast<std::size_t>(tool)]) {
-    return {k, t0, travel, displacement};
-  }
-  if (moved) {
+  if (!op.motions[static_cast<std::size_t>(tool)] && moved) {
     return before;
   }
-  return {-1, t0, travel, displacement};
+  return {.operation = op.motions[static_cast<std::size_t>(tool)] ? k : -1,
+          .start = t0,
+          .travel = here.travel,
+          .displacement = here.placement.translation,
+          .rotation = here.placement.rotation,
+          .angle = here.angle};
 }
 
 void build_operations(const CaseConfig& config, Model& model) {
@@ -200,8 +260,7 @@ void build_operations(const CaseConfig& config, Model& model) {
   // prescribed motion follow the rule of operation_plan.hpp.
   std::vector<ToolMotionOrigin> origin(n);
   std::vector<unsigned char> moved(n, 0);
-  std::vector<double> travel(n, 0.0);  // where each tool stands at an operation's start
-  std::vector<Vec3> displacement(n, Vec3::Zero());
+  std::vector<ToolStanding> standing(n);  // where each tool stands at an operation's start
   double t = 0.0;
   for (std::size_t k = 0; k < model.operations.size(); ++k) {
     Operation& op = model.operations[k];
@@ -215,8 +274,7 @@ void build_operations(const CaseConfig& config, Model& model) {
       op.planned_end = t;
       for (std::size_t i = 0; i < n; ++i) {
         if (!model.tools[i].force_control && (moved[i] || k == 0)) {
-          travel[i] = travel_in_effect(model, static_cast<int>(i), origin[i], t);
-          displacement[i] = displacement_in_effect(model, static_cast<int>(i), origin[i], t);
+          standing[i] = standing_in_effect(model, static_cast<int>(i), origin[i], t);
         }
         moved[i] = 0;
       }
@@ -228,12 +286,11 @@ void build_operations(const CaseConfig& config, Model& model) {
         continue;
       }
       if (moved[i] || k == 0) {
-        travel[i] = travel_in_effect(model, ti, origin[i], t);
-        displacement[i] = displacement_in_effect(model, ti, origin[i], t);
+        standing[i] = standing_in_effect(model, ti, origin[i], t);
       }
       if (op.in_play[i] && (k > 0 || op.motions[i])) {
         origin[i] = origin_at_start(model, static_cast<int>(k), ti, origin[i], moved[i] != 0, t,
-                                    travel[i], displacement[i]);
+                                    standing[i]);
       }
     }
     const ToolMotionOrigin stroke_origin =

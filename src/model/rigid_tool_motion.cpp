@@ -1,6 +1,7 @@
 #include "model/rigid_tool_motion.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace sf {
@@ -14,6 +15,31 @@ RigidToolMotion::RigidToolMotion(const MotionConfig& config)
   if (type_ != MotionConfig::Type::fixed) {
     curve_ = LoadCurve(config.curve.times, config.curve.values);
   }
+  if (config.turns()) {
+    std::vector<double> radians = config.angle.values;
+    for (double& a : radians) {
+      a *= std::numbers::pi / 180.0;
+    }
+    angle_ = LoadCurve(config.angle.times, std::move(radians));
+    axis_ = Vec3(config.axis[0], config.axis[1], config.axis[2]).normalized();
+    pivot_ = Vec3(config.pivot[0], config.pivot[1], config.pivot[2]);
+  }
+}
+
+ToolPlacement RigidToolMotion::placement(double t) const {
+  if (!turns()) {
+    return {Mat3::Identity(), displacement(t)};
+  }
+  const Mat3 turn = rotation_about(axis_, angle(t));
+  return {turn, Vec3(turn * -pivot_ + pivot_ + displacement(t))};
+}
+
+double RigidToolMotion::angular_speed(double t) const {
+  if (!turns()) {
+    return 0.0;
+  }
+  const double h = 1e-9;  // s; the curve is piecewise linear, so this is its slope
+  return (angle_.value(t + h) - angle_.value(t)) / h;
 }
 
 double RigidToolMotion::travel(double t) const {

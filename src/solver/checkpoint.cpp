@@ -19,7 +19,7 @@ namespace sf {
 namespace {
 
 constexpr const char* kFormat = "sheetform checkpoint";
-constexpr int kFormatVersion = 2;  // 2: the operation and the tools' motion origins (issue 32)
+constexpr int kFormatVersion = 3;  // 2: the operation and the tools' motion origins; 3: turns
 
 std::span<const double> values(const double* data, Eigen::Index size) {
   return {data, static_cast<std::size_t>(size)};

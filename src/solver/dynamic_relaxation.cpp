@@ -171,8 +171,13 @@ double hold_tools(const Model& model, SolutionState& s) {
       removed += 0.5 * tool.force_control->mass() * state.speed * state.speed;
     }
     state.held = true;
-    state.displacement = state.travel * tool.direction();
+    if (tool.force_control) {
+      state.displacement = state.travel * tool.direction();
+    }
     state.previous_displacement = state.displacement;
+    state.previous_rotation = state.rotation;
+    state.moment.setZero();
+    state.previous_moment.setZero();
     state.speed = 0.0;
     state.velocity = 0.0;
     state.force.setZero();

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <string>
 
+#include "contact/tool_placement.hpp"
 #include "core/errors.hpp"
 #include "core/exact_sums.hpp"
 #include "model/operation_plan.hpp"
@@ -91,6 +92,22 @@ void update_half_kick_reference(const Model& model, SolutionState& s, double dt,
 
 namespace {
 
+// N mm, the work of the blank's force F and moment M (about the origin) on the tool over the
+// step, by the trapezoidal rule. A point of the tool at x moves at w x (x - t) + dt/dt (t its
+// placement's translation, w its angular velocity), so the power is F . dt/dt + w . (M - t x F).
+double reaction_work_over_step(const ToolState& tool) {
+  const Vec3 step = tool.displacement - tool.previous_displacement;
+  double work = 0.5 * (tool.force + tool.previous_force).dot(step);
+  if (tool.rotation != tool.previous_rotation) {
+    const Vec3 turn = rotation_vector(tool.rotation * tool.previous_rotation.transpose());
+    const Vec3 moment_now = tool.moment - tool.displacement.cross(tool.force);
+    const Vec3 moment_before =
+        tool.previous_moment - tool.previous_displacement.cross(tool.previous_force);
+    work += 0.5 * (moment_now + moment_before).dot(turn);
+  }
+  return work;
+}
+
 // The node sums of a step, in one pass over the nodes, each exact (core/exact_sums.hpp): the
 // trapezoidal work increments (N mm), the damping power's sum m |v|^2 (N mm/s), and the kinetic
 // and half-kick energies at the step end (whole_step_kinetic_energy).
@@ -144,9 +161,7 @@ void account_step_energies(const Model& model, SolutionState& s,
   double tool_kinetic = 0.0;
   for (std::size_t t = 0; t < s.tools.size(); ++t) {
     ToolState& tool = s.tools[t];
-    // Work of the blank's force F on the tool over the step.
-    const Vec3 step = tool.displacement - tool.previous_displacement;
-    const double reaction_work = 0.5 * (tool.force + tool.previous_force).dot(step);
+    const double reaction_work = reaction_work_over_step(tool);
     e.contact -= reaction_work;
     const Tool& model_tool = model.tools[t];
     if (tool.held) {

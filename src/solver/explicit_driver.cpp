@@ -31,6 +31,17 @@ namespace sf {
 
 namespace {
 
+// A tool where its case motion puts it at time t (s).
+void place_tool_by_its_motion(const RigidToolMotion& motion, double t, ToolState& tool) {
+  const ToolPlacement placement = motion.placement(t);
+  tool.displacement = placement.translation;
+  tool.rotation = placement.rotation;
+  tool.previous_rotation = placement.rotation;
+  tool.angle = motion.angle(t);
+  tool.travel = motion.travel(t);
+  tool.speed = motion.speed(t);
+}
+
 // Installs the SIGINT, SIGTERM and SIGUSR1 handlers for the time loop and puts back the default
 // actions after it: a Ctrl-C during springback ends the process as before (the checkpoint at the
 // end of the forming lets a restart do the springback again).
@@ -168,9 +179,7 @@ void start_from_formed_part(const Model& model, const FormedPart& part, Solution
   }
   for (std::size_t t = 0; t < s.tools.size(); ++t) {
     if (std::find(placed.begin(), placed.end(), model.tools[t].name) == placed.end()) {
-      s.tools[t].displacement = model.tools[t].motion.displacement(s.time);
-      s.tools[t].travel = model.tools[t].motion.travel(s.time);
-      s.tools[t].speed = model.tools[t].motion.speed(s.time);
+      place_tool_by_its_motion(model.tools[t].motion, s.time, s.tools[t]);
     }
   }
   for (ContactState& contact : s.contacts) {
@@ -465,10 +474,13 @@ TrimOutline trim_outline(const Model& model, const Operation& op, const Solution
                       .offset = op.trim_offset};
   if (op.trim_tool >= 0) {
     const TriangleSurface& surface = model.tools[static_cast<std::size_t>(op.trim_tool)].surface;
-    const Vec3& shift = s.tools[static_cast<std::size_t>(op.trim_tool)].displacement;
+    const ToolState& tool = s.tools[static_cast<std::size_t>(op.trim_tool)];
     for (int t = 0; t < surface.num_triangles(); ++t) {
+      const Tri3 corners = gather_triangle(surface.nodes(), surface.triangles(), t);
       outline.tool_triangles.push_back(
-          gather_triangle(surface.nodes(), surface.triangles(), t).colwise() + shift);
+          tool.rotation == Mat3::Identity()
+              ? Tri3(corners.colwise() + tool.displacement)
+              : Tri3((tool.rotation * corners).colwise() + tool.displacement));
     }
   }
   return outline;
@@ -549,9 +561,7 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
   }
   const bool root = s.domain->is_root();
   for (std::size_t t = 0; t < s.tools.size(); ++t) {
-    s.tools[t].displacement = model.tools[t].motion.displacement(0.0);
-    s.tools[t].travel = model.tools[t].motion.travel(0.0);
-    s.tools[t].speed = model.tools[t].motion.speed(0.0);
+    place_tool_by_its_motion(model.tools[t].motion, 0.0, s.tools[t]);
   }
   const OperationSequence operations(model);
   const bool fresh = options.restart_file.empty();

@@ -21,7 +21,8 @@ namespace sf {
 namespace {
 
 constexpr const char* kFormat = "sheetform formed part";
-constexpr int kFormatVersion = 1;
+// 2: the tools' turns (rotation, angle, moment); a format 1 part's tools have not turned.
+constexpr int kFormatVersion = 2;
 constexpr const char* kUnits = "mm, tonne, s; N, MPa, N mm";
 
 const char* place_name(FieldPlace place) {
@@ -91,6 +92,31 @@ std::map<std::string, StateField> expected_fields(std::size_t tools, std::size_t
   };
   visit_state_fields_with(field_role::formed_part, record, s);
   return fields;
+}
+
+// The scalar fields' values in a fresh state (a tool standing as meshed), by key.
+std::map<std::string, double> scalar_defaults(std::size_t tools, std::size_t contacts) {
+  SolutionState s;
+  s.tools.resize(tools);
+  s.contacts.resize(contacts);
+  std::map<std::string, double> values;
+  auto record = [&](const StateField&, const std::string& key, const auto& value) {
+    if constexpr (std::is_arithmetic_v<std::decay_t<decltype(value)>>) {
+      values.emplace(key, static_cast<double>(value));
+    }
+  };
+  visit_state_fields_with(field_role::formed_part, record, s);
+  return values;
+}
+
+// A field format 2 added: a tool's turn (format 1 parts come from tools that did not turn).
+bool is_turn_field(const StateField& field) {
+  namespace f = state_field;
+  const auto is = [&](const StateField& turn) {
+    return field.place == turn.place && std::string_view(field.name) == turn.name;
+  };
+  return is(f::tool_rotation) || is(f::tool_previous_rotation) || is(f::tool_angle) ||
+         is(f::tool_moment) || is(f::tool_previous_moment);
 }
 
 // A field a part may lack: one the next model makes again from its mesh (a trimmed part's
@@ -296,7 +322,7 @@ FormedPart read_checked_part(const std::filesystem::path& file) {
       throw InputError(where + ": not a sheetform formed part (a results folder's formed_part.h5)");
     }
     const int version = in.read_attribute_int("/", "format_version");
-    if (version != kFormatVersion) {
+    if (version != kFormatVersion && version != 1) {
       throw InputError(fmt::format(
           "{}: formed part format {}, this build reads format {} (written by a {} build)", where,
           version, kFormatVersion, version > kFormatVersion ? "newer" : "older"));
@@ -354,7 +380,12 @@ FormedPart read_checked_part(const std::filesystem::path& file) {
         in.has_attribute("/state", "left_out")
             ? split_comma_list(in.read_attribute_string("/state", "left_out"))
             : std::vector<std::string>{};
+    const std::map<std::string, double> unturned = scalar_defaults(tools, contacts);
     for (const auto& [key, field] : expected_fields(tools, contacts)) {
+      if (version == 1 && is_turn_field(field)) {
+        part.fields[key] = {unturned.at(key)};
+        continue;
+      }
       if (!in.exists("/state/" + key) && may_be_left_out(field) &&
           std::find(left_out.begin(), left_out.end(), key) != left_out.end()) {
         continue;

@@ -2,11 +2,15 @@
 
 #include <fmt/core.h>
 
+#include <numbers>
+
 #include "casefile/unit_system.hpp"
 #include "core/build_info.hpp"
+#include "model/operation_plan.hpp"
 #include "solver/draw_in.hpp"
 #include "solver/reactions.hpp"
 #include "solver/state_fields.hpp"
+#include "solver/tool_update.hpp"
 
 namespace sf {
 
@@ -57,6 +61,12 @@ std::vector<HistoryValue> history_values(const Model& model) {
                  [t](M m, S s, A) { return -s.tools[t].force.dot(m.tools[t].direction()); }});
     v.push_back({{name + "_nodes_in_contact", "-"},
                  [t](M, S s, A) { return static_cast<double>(s.tools[t].nodes_in_contact); }});
+    if (ever_turns(model, static_cast<int>(t))) {
+      v.push_back({{name + "_angle", "deg"},
+                   [t](M, S s, A) { return s.tools[t].angle * (180.0 / std::numbers::pi); }});
+      v.push_back({{name + "_torque", units.moment()},
+                   [t](M m, S s, A) { return press_torque(m, static_cast<int>(t), s.tools[t]); }});
+    }
   }
   for (std::size_t d = 0; d < model.output.draw_ins.size(); ++d) {
     v.push_back({{"draw_in_" + model.output.draw_ins[d].name, units.length},
@@ -247,8 +257,14 @@ void FrameOutput::write_frame(const Model& model, const SolutionState& s) {
   frames.push_back(std::move(blank));
   for (std::size_t t = 0; t < model.tools.size(); ++t) {
     const Vec3 d = s.tools[t].displacement;
-    tool_coordinates_[t] = model.tools[t].mesh.nodes.colwise() + d;
-    tool_displacement_[t].colwise() = d;
+    const Mat3& turn = s.tools[t].rotation;
+    if (turn == Mat3::Identity()) {
+      tool_coordinates_[t] = model.tools[t].mesh.nodes.colwise() + d;
+      tool_displacement_[t].colwise() = d;
+    } else {
+      tool_coordinates_[t] = (turn * model.tools[t].mesh.nodes).colwise() + d;
+      tool_displacement_[t] = tool_coordinates_[t] - model.tools[t].mesh.nodes;
+    }
     PartFrameView tool{model.tools[t].name, tool_coordinates_[t], {}};
     tool.fields = {{"displacement", FieldCenter::node, 3, tool_displacement_[t].data()}};
     frames.push_back(std::move(tool));

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <utility>
 
@@ -349,6 +350,14 @@ void print_tools(const Model& model, const UnitSystem& units) {
           std::sqrt(k_sum / t.force_control->mass()) * model.time.time_step);
     } else if (t.motion.moves()) {
       motion = fmt::format("moves along {}", format_vector(t.direction()));
+    }
+    if (t.motion.turns()) {
+      motion += fmt::format(
+          "{} turns about {} through ({:g}, {:g}, {:g}) {}, {:.6g} deg at t = {:.6g} {}",
+          t.motion.moves() ? ";" : ",", format_vector(t.motion.axis()), t.motion.pivot().x(),
+          t.motion.pivot().y(), t.motion.pivot().z(), units.length,
+          t.motion.angle(model.time.end_time) * (180.0 / std::numbers::pi), model.time.end_time,
+          units.time);
     }
     log_info("Tool        '{}': {} nodes, {} triangles, {}\n", t.name, t.mesh.nodes.cols(),
              t.mesh.triangles.cols(), motion);

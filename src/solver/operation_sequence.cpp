@@ -76,7 +76,7 @@ void OperationSequence::bring_into_play(int k, std::size_t t, bool moved, Soluti
   ToolState& tool = s.tools[t];
   if (!model_.tools[t].force_control) {
     tool.origin = origin_at_start(model_, k, static_cast<int>(t), tool.origin, moved, s.time,
-                                  tool.travel, tool.displacement);
+                                  {tool.travel, {tool.rotation, tool.displacement}, tool.angle});
   }
   if (tool.held) {
     reset_pairs_of(model_, t, s);

@@ -36,12 +36,13 @@ InitialPenetration find_penetration(const Model& model, const ContactInterface& 
   InitialPenetration p;
   const Tool& tool = model.tools[static_cast<std::size_t>(contact.tool)];
   p.tool = tool.name;
-  const Vec3 d = tool.motion.displacement(0.0);
+  const ToolPlacement at_start = tool.motion.placement(0.0);
   const double h = 0.5 * model.initial.thickness;
   const Matrix3X& x = model.blank.mesh.nodes;
   ClosestPoint cp;
   for (Eigen::Index i = 0; i < x.cols(); ++i) {
-    contact.pair.search->find_closest(x.col(i) - d, contact.pair.cutoff, cp);
+    contact.pair.search->find_closest(
+        at_start.rotation.transpose() * (x.col(i) - at_start.translation), contact.pair.cutoff, cp);
     const double depth = cp.triangle >= 0 ? h - cp.signed_distance : 0.0;
     // Below a millionth of the thickness is the round-off of a blank resting on a tool.
     if (depth > 1e-6 * model.initial.thickness) {

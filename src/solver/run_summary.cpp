@@ -8,12 +8,15 @@
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 #include "casefile/unit_system.hpp"
 #include "core/build_info.hpp"
 #include "core/errors.hpp"
+#include "model/operation_plan.hpp"
 #include "solver/draw_in.hpp"
 #include "solver/implicit_summary.hpp"
+#include "solver/tool_update.hpp"
 
 namespace sf {
 
@@ -135,6 +138,11 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
     if (const auto& driven = model.tools[t].force_control) {
       ts.force_controlled = true;
       ts.applied_force = driven->applied_force(s.time, s.tools[t].travel);
+    }
+    if (ever_turns(model, static_cast<int>(t))) {
+      ts.turns = true;
+      ts.angle = s.tools[t].angle * (180.0 / std::numbers::pi);
+      ts.torque = press_torque(model, static_cast<int>(t), s.tools[t]);
     }
     r.tools.push_back(ts);
   }
@@ -343,6 +351,10 @@ std::string format_run_summary(const RunSummary& r) {
                         ? fmt::format(" (force-controlled: applied {:.1f} {}, speed {:.4g} {})",
                                       t.applied_force, u.force, t.speed, u.velocity())
                         : std::string()));
+    if (t.turns) {
+      add(fmt::format("  tool {:<14} angle  {:8.3f} deg, torque {:10.1f} {}", t.name, t.angle,
+                      t.torque, u.moment()));
+    }
   }
   for (const DrawInResult& d : r.draw_ins) {
     if (!std::isfinite(d.computed)) {
@@ -452,6 +464,10 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
                           {"peak_force_N", t.peak_force}};
     if (t.force_controlled) {
       j["tools"][t.name]["applied_force_N"] = t.applied_force;
+    }
+    if (t.turns) {
+      j["tools"][t.name]["angle_deg"] = t.angle;
+      j["tools"][t.name]["torque_Nmm"] = t.torque;
     }
   }
   for (const DrawInResult& d : r.draw_ins) {

@@ -35,6 +35,9 @@ struct ToolSummary {
   double peak_force = 0.0;   ///< N
   bool force_controlled = false;
   double applied_force = 0.0;  ///< N, force-controlled tools: the applied force at the end
+  bool turns = false;          ///< its motion (or an operation's) turns it
+  double angle = 0.0;          ///< degrees, a turning tool's turn at the end
+  double torque = 0.0;         ///< N mm, a turning tool's press torque at the end (press_torque)
 };
 
 /// The search audit of one contact pair (audit = true), over the run.

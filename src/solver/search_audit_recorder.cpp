@@ -29,9 +29,9 @@ void SearchAuditRecorder::record(const Model& model, const SolutionState& s) {
   for (std::size_t a = 0; a < records_.size(); ++a) {
     SearchAuditRecord& r = records_[a];
     const ContactInterface& contact = model.contacts[static_cast<std::size_t>(r.contact)];
-    const Vec3 tool_displacement = s.tools[static_cast<std::size_t>(contact.tool)].displacement;
-    r.last = audits_[a].run(*contact.pair.search, s.x, tool_displacement, contact.pair.cutoff,
-                            r.miss, r.gap_error);
+    const ToolState& tool = s.tools[static_cast<std::size_t>(contact.tool)];
+    r.last = audits_[a].run(*contact.pair.search, s.x, {tool.rotation, tool.displacement},
+                            contact.pair.cutoff, r.miss, r.gap_error);
     ++r.audits;
     r.total_misses += r.last.misses;
     if (r.last.misses > r.max_misses) {

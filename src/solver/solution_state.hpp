@@ -25,6 +25,15 @@ struct ToolState {
   double peak_force = 0.0;
   Vec3 previous_displacement = Vec3::Zero();  ///< mm, a step ago (for the work increment)
   Vec3 previous_force = Vec3::Zero();         ///< N, a step ago
+  /// Its placement's rotation: the mesh's point X stands at rotation X + displacement
+  /// (contact/tool_placement.hpp); identity for a tool that never turned.
+  Mat3 rotation = Mat3::Identity();
+  Mat3 previous_rotation = Mat3::Identity();  ///< a step ago
+  double angle = 0.0;                         ///< rad, its turn about its motion's axis
+  /// N mm, the moment of the blank's forces on the tool about the origin (a turning tool's;
+  /// zero for one that only translates)
+  Vec3 moment = Vec3::Zero();
+  Vec3 previous_moment = Vec3::Zero();  ///< N mm, a step ago
   /// mm/s along the direction at the state's time: a prescribed motion's speed; for a
   /// force-controlled tool the whole-step velocity v(n+1) = v(n+1/2) + dt/2 u(n+1)
   double speed = 0.0;

@@ -228,6 +228,16 @@ inline constexpr StateField tool_previous_displacement{
     "previous_displacement", tool, "mm", kHandedOn, none, "displacement a step ago"};
 inline constexpr StateField tool_previous_force{"previous_force", tool, "N",
                                                 kHandedOn,        none, "force a step ago"};
+inline constexpr StateField tool_rotation{
+    "rotation", tool, "-", kHandedOn, none, "rotation of its placement (row by row)"};
+inline constexpr StateField tool_previous_rotation{"previous_rotation",  tool, "-", kHandedOn, none,
+                                                   "rotation a step ago"};
+inline constexpr StateField tool_angle{"angle",   tool, "rad",
+                                       kHandedOn, none, "turn about its motion's axis"};
+inline constexpr StateField tool_moment{
+    "moment", tool, "N mm", kHandedOn, none, "moment of the blank's forces about the origin"};
+inline constexpr StateField tool_previous_moment{"previous_moment", tool, "N mm",
+                                                 kHandedOn,         none, "moment a step ago"};
 // Where the tool's motion in effect starts; the next case's tools follow its own motions.
 inline constexpr StateField tool_origin_operation{
     "origin_operation", tool, "-",
@@ -238,6 +248,10 @@ inline constexpr StateField tool_origin_travel{
     "origin_travel", tool, "mm", kCheckpoint, none, "the travel its motion adds to"};
 inline constexpr StateField tool_origin_displacement{
     "origin_displacement", tool, "mm", kCheckpoint, none, "the displacement it adds to"};
+inline constexpr StateField tool_origin_rotation{
+    "origin_rotation", tool, "-", kCheckpoint, none, "the rotation it turns from"};
+inline constexpr StateField tool_origin_angle{"origin_angle", tool, "rad",
+                                              kCheckpoint,    none, "the turn it adds to"};
 
 // The contact pairs' history. The stick forces are handed on with their pair's tool (a pair of
 // the next case with a tool of that name takes them); the distance bounds are only a shortcut
@@ -365,6 +379,19 @@ void visit_state_fields(Visitor& v, State& s) {
         tool.previous_displacement[c]);
       v(f::tool_previous_force, p + "previous_force" + k, tool.previous_force[c]);
     }
+    // (format 3: a tool's turn)
+    for (int c = 0; c < 9; ++c) {
+      const std::string k = std::to_string(c);
+      v(f::tool_rotation, p + "rotation" + k, tool.rotation(c / 3, c % 3));
+      v(f::tool_previous_rotation, p + "previous_rotation" + k,
+        tool.previous_rotation(c / 3, c % 3));
+    }
+    v(f::tool_angle, p + "angle", tool.angle);
+    for (int c = 0; c < 3; ++c) {
+      const std::string k = std::to_string(c);
+      v(f::tool_moment, p + "moment" + k, tool.moment[c]);
+      v(f::tool_previous_moment, p + "previous_moment" + k, tool.previous_moment[c]);
+    }
     v(f::tool_origin_operation, p + "origin_operation", tool.origin.operation);
     v(f::tool_origin_start, p + "origin_start", tool.origin.start);
     v(f::tool_origin_travel, p + "origin_travel", tool.origin.travel);
@@ -372,6 +399,11 @@ void visit_state_fields(Visitor& v, State& s) {
       v(f::tool_origin_displacement, p + "origin_displacement" + std::to_string(c),
         tool.origin.displacement[c]);
     }
+    for (int c = 0; c < 9; ++c) {
+      v(f::tool_origin_rotation, p + "origin_rotation" + std::to_string(c),
+        tool.origin.rotation(c / 3, c % 3));
+    }
+    v(f::tool_origin_angle, p + "origin_angle", tool.origin.angle);
   }
   for (std::size_t c = 0; c < s.contacts.size(); ++c) {
     auto& contact = s.contacts[c];

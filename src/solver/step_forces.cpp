@@ -93,11 +93,12 @@ void update_contact_offsets(const Model& model, SolutionState& s) {
 }
 
 // The exact sums of one contact call (left in the pair's first share), kContactSums of them.
-constexpr int kContactSums = 9;
+constexpr int kContactSums = 12;
 
 void add_contact_sums(const ContactShare& total, ExactSum* sums) {
   for (int c = 0; c < 3; ++c) {
     sums[c] = total.force_on_tool[c];
+    sums[9 + c] = total.moment_on_tool[c];
   }
   sums[3] = total.energy;
   sums[4] = total.friction_work;
@@ -118,6 +119,7 @@ ContactResult contact_result(const ExactSum* sums) {
   r.sliding_nodes = static_cast<int>(sums[6].round());
   r.sticking_nodes = static_cast<int>(sums[7].round());
   r.projection_fallbacks = static_cast<int>(sums[8].round());
+  r.moment_on_tool = Vec3(sums[9].round(), sums[10].round(), sums[11].round());
   return r;
 }
 
@@ -130,6 +132,7 @@ void compute_contact_forces(const Model& model, SolutionState& s, double dt) {
   s.contact_spring_energy = 0.0;
   for (ToolState& t : s.tools) {
     t.force.setZero();
+    t.moment.setZero();
     t.nodes_in_contact = 0;
   }
   if (s.contact_off || model.contacts.empty()) {
@@ -151,14 +154,17 @@ void compute_contact_forces(const Model& model, SolutionState& s, double dt) {
     // s.v is the mid-step velocity of the step dt just taken (dt = 0 on the first call).
     const Vec3 tool_step =
         dt > 0.0 ? Vec3(tool.displacement - tool.previous_displacement) : Vec3::Zero();
-    const ContactKinematics kinematics{.x = s.x,
-                                       .v = s.v,
-                                       .half_thickness = s.half_thickness,
-                                       .tool_displacement = tool.displacement,
-                                       .tool_displacement_increment = tool_step,
-                                       .dt = dt,
-                                       .owned_nodes = s.domain->owned_nodes(),
-                                       .ghost_nodes = s.domain->ghost_nodes()};
+    const ContactKinematics kinematics{
+        .x = s.x,
+        .v = s.v,
+        .half_thickness = s.half_thickness,
+        .tool_displacement = tool.displacement,
+        .tool_displacement_increment = tool_step,
+        .dt = dt,
+        .owned_nodes = s.domain->owned_nodes(),
+        .ghost_nodes = s.domain->ghost_nodes(),
+        .tool_rotation = tool.rotation,
+        .tool_rotation_previous = dt > 0.0 ? tool.previous_rotation : tool.rotation};
     PhaseError pair_failure = phase_error_of(
         LONG_MAX, [&] { compute_penalty_contact(c.pair, s.contacts[k], kinematics, s.f_contact); });
     if (pair_failure.failed() && !failure.failed()) {
@@ -177,6 +183,7 @@ void compute_contact_forces(const Model& model, SolutionState& s, double dt) {
     const ContactResult r = contact_result(sums.data() + kContactSums * k);
     ToolState& tool = s.tools[static_cast<std::size_t>(model.contacts[k].tool)];
     tool.force += r.force_on_tool;
+    tool.moment += r.moment_on_tool;
     tool.nodes_in_contact += r.nodes_in_contact;
     s.contact_spring_energy += r.energy;
     s.energies.friction_work += r.friction_work;

@@ -141,6 +141,23 @@ std::string clearance_line(const ToolMeshReport& r, double thickness, const std:
       r.tool, at(r.approach.tool_point), r.approach.distance, unit);
 }
 
+// The tool's closest approach to the blank where its motion places it at time 0 (a tool that
+// starts turned: the blank taken into the tool's frame, the points brought back).
+SurfaceApproach approach_at_start(const Tool& tool, const PartMesh& blank) {
+  const ToolPlacement at_start = tool.motion.placement(0.0);
+  if (!at_start.turned()) {
+    return closest_approach(tool.surface, at_start.translation, blank.nodes, blank.quads,
+                            blank.triangles);
+  }
+  const Matrix3X in_tool_frame =
+      at_start.rotation.transpose() * (blank.nodes.colwise() - at_start.translation);
+  SurfaceApproach approach =
+      closest_approach(tool.surface, Vec3::Zero(), in_tool_frame, blank.quads, blank.triangles);
+  approach.tool_point = at_start.apply(approach.tool_point);
+  approach.shell_point = at_start.apply(approach.shell_point);
+  return approach;
+}
+
 }  // namespace
 
 std::vector<ToolMeshReport> diagnose_tool_meshes(const Model& model) {
@@ -162,8 +179,7 @@ std::vector<ToolMeshReport> diagnose_tool_meshes(const Model& model) {
     r.orientation.made_consistent += tool.mesh.reoriented;
     r.check_seconds = seconds_since(start);
     start = Clock::now();
-    r.approach = closest_approach(tool.surface, tool.motion.displacement(0.0), blank.nodes,
-                                  blank.quads, blank.triangles);
+    r.approach = approach_at_start(tool, blank);
     r.clearance = r.approach.distance - 0.5 * thickness;
     r.clearance_seconds = seconds_since(start);
     reports.push_back(std::move(r));

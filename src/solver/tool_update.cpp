@@ -12,6 +12,8 @@ void move_tools(const Model& model, SolutionState& s, double time_before, double
     ToolState& tool = s.tools[t];
     tool.previous_displacement = tool.displacement;
     tool.previous_force = tool.force;
+    tool.previous_rotation = tool.rotation;
+    tool.previous_moment = tool.moment;
     if (tool.held) {
       continue;  // travel and displacement stay
     }
@@ -20,10 +22,21 @@ void move_tools(const Model& model, SolutionState& s, double time_before, double
       tool.displacement = tool.travel * driven->direction();
     } else {
       const int index = static_cast<int>(t);
-      tool.travel = travel_in_effect(model, index, tool.origin, s.time);
-      tool.displacement = displacement_in_effect(model, index, tool.origin, s.time);
+      const ToolStanding here = standing_in_effect(model, index, tool.origin, s.time);
+      tool.travel = here.travel;
+      tool.displacement = here.placement.translation;
+      tool.rotation = here.placement.rotation;
+      tool.angle = here.angle;
     }
   }
+}
+
+double press_torque(const Model& model, int tool, const ToolState& state) {
+  const RigidToolMotion& motion = motion_in_effect(model, tool, state.origin);
+  const ToolPlacement here{state.rotation, state.displacement};
+  const Vec3 axis = state.rotation * motion.axis();
+  const Vec3 pivot = here.apply(motion.pivot());
+  return -(state.moment - pivot.cross(state.force)).dot(axis);
 }
 
 }  // namespace sf

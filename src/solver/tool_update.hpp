@@ -12,4 +12,9 @@ namespace sf {
 void move_tools(const Model& model, SolutionState& state, double time_before, double weight,
                 double dt);
 
+/// N mm, the torque the press applies to turn tool `tool` against the blank: minus the moment
+/// of the blank's forces on it about the axis of its motion in effect, through its pivot, both
+/// where the tool stands (positive when the blank resists a turn in the positive sense).
+double press_torque(const Model& model, int tool, const ToolState& state);
+
 }  // namespace sf

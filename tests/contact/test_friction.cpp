@@ -16,19 +16,16 @@
 #include "allocation_counter.hpp"  // the one operator new of this test program
 #include "contact/coulomb_friction.hpp"
 #include "contact/penalty_contact.hpp"
+#include "contact_pair_fixture.hpp"
 #include "core/errors.hpp"
 #include "test_meshes.hpp"
 
 namespace sf {
 namespace {
 
-FrictionParameters make_law(double mu_s, double mu_d, double decay) {
-  FrictionParameters law;
-  law.static_coefficient = mu_s;
-  law.dynamic_coefficient = mu_d;
-  law.decay = decay;
-  return law;
-}
+using test::Contact;
+using test::make_law;
+using test::make_pair;
 
 TEST(CoulombFriction, CoefficientDecayAndValidation) {
   const FrictionParameters law = make_law(0.3, 0.2, 0.01);
@@ -138,22 +135,6 @@ TEST(CoulombFriction, SteadySlidingForceFollowsTheDecayLaw) {
 TriangleSurface make_table() {
   return test::make_height_field("table", 4, 4, -50, 50, -50, 50,
                                  [](double, double) { return 0.0; });
-}
-
-/// A contact pair and its state.
-struct Contact {
-  ContactPair pair;
-  ContactState state;
-};
-
-Contact make_pair(const TriangleSurface& s, int n, double k, const FrictionParameters& law) {
-  Contact c;
-  c.pair.surface = &s;
-  c.pair.search = make_contact_search("modified", s);
-  c.pair.stiffness = VectorX::Constant(n, k);
-  c.pair.cutoff = 2.0;
-  c.pair.friction = law;
-  return c;
 }
 
 TEST(PenaltyFriction, BlockPulledAtConstantVelocity) {

@@ -15,36 +15,18 @@
 #include "contact/contact_search.hpp"
 #include "contact/coulomb_friction.hpp"
 #include "contact/penalty_contact.hpp"
+#include "contact_pair_fixture.hpp"
 #include "test_meshes.hpp"
 
 namespace sf {
 namespace {
 
+using test::Contact;
+using test::make_law;
+using test::make_pair;
+
 Mat3 turn(const Vec3& axis, double angle) {
   return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
-}
-
-struct Contact {
-  ContactPair pair;
-  ContactState state;
-};
-
-Contact make_pair(const TriangleSurface& s, int n, double k, const FrictionParameters& law = {}) {
-  Contact c;
-  c.pair.surface = &s;
-  c.pair.search = make_contact_search("modified", s);
-  c.pair.stiffness = VectorX::Constant(n, k);
-  c.pair.cutoff = 2.0;
-  c.pair.friction = law;
-  return c;
-}
-
-FrictionParameters make_law(double mu_s, double mu_d, double decay) {
-  FrictionParameters law;
-  law.static_coefficient = mu_s;
-  law.dynamic_coefficient = mu_d;
-  law.decay = decay;
-  return law;
 }
 
 TEST(RotatingToolContact, ATurnedToolPushesAlongItsTurnedNormal) {

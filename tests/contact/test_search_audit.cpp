@@ -55,7 +55,8 @@ TEST(SearchAudit, CountsAndMeasuresTheMissesOfAWrongSearch) {
   const double cutoff = 1.0;
   SearchAudit audit(s);
   VectorX miss, gap_error;
-  const SearchAuditCount c = audit.run(wrong, x, tool_displacement, cutoff, miss, gap_error);
+  const SearchAuditCount c =
+      audit.run(wrong, x, {Mat3::Identity(), tool_displacement}, cutoff, miss, gap_error);
   EXPECT_EQ(c.nodes_checked, 3);
   EXPECT_EQ(c.misses, 2);
   EXPECT_EQ(miss[0], 0.0);
@@ -85,7 +86,7 @@ TEST(SearchAudit, TheExactSearchHasNoMisses) {
   }
   SearchAudit audit(s);
   VectorX miss, gap_error;
-  const SearchAuditCount c = audit.run(*exact, x, Vec3::Zero(), 2.0, miss, gap_error);
+  const SearchAuditCount c = audit.run(*exact, x, ToolPlacement{}, 2.0, miss, gap_error);
   EXPECT_GT(c.nodes_checked, 50);
   EXPECT_EQ(c.misses, 0);
   EXPECT_EQ(miss.sum(), 0.0);

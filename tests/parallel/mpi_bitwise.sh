@@ -112,6 +112,18 @@ with h5py.File(sys.argv[1] + "/formed_part.trim.h5") as f:
     assert f["mesh/triangles"].shape[0] > 0, "no triangles after the cut"
 PY
 
+# A tool that turns (issue 32, item 7): the flanging steel's first 1.5 ms (25 degrees); its
+# moment summed over the ranks, its torque and angle in the history, the same bits at 2 ranks.
+flange=(--set 'operations=[{name="flange", kind="forming", end="time", time=0.0015, damping=0.0}]')
+"$sheetform" run "$src/cases/flange_rotary_bend/case.toml" -q -o "$work/flange-serial" \
+  "${flange[@]}" > "$work/flange-serial.log" 2>&1 ||
+  { fail "flange serial:"; tail -5 "$work/flange-serial.log"; }
+"$mpiexec" -np 2 --bind-to none "$sheetform" run "$src/cases/flange_rotary_bend/case.toml" -q \
+  -o "$work/flange-2" "${flange[@]}" > "$work/flange-2.log" 2>&1 ||
+  { fail "flange at 2 ranks:"; tail -5 "$work/flange-2.log"; }
+/usr/bin/python3 "$src/scripts/compare_results.py" "$work/flange-serial" "$work/flange-2" ||
+  fail "flange at 2 ranks: not the serial bits"
+
 # Refused: mass scaling, more ranks than elements (exit 2, a message naming the cause, once).
 "$mpiexec" -np 2 "$sheetform" run "$work/case/case.toml" --stroke 0.1 -q -o "$work/ms" \
   --set control.mass_scaling_dt=6e-7 --set control.mass_scaling_max_added=0 > "$work/ms.log" 2>&1

@@ -6,7 +6,7 @@
 # restarted on 2 threads, by a real SIGTERM at an arbitrary moment; Yld89 with back stresses; a SIGUSR1 checkpoint that the
 # run goes on from; the U-channel stopped during the forming and restarted, its implicit
 # springback after the restart; a trim between two draws stopped before and after the trim; at 2
-# ranks stopped and restarted serially and at 3 ranks. Then
+# ranks stopped and restarted serially and at 3 ranks; a turning tool stopped mid-turn. Then
 # what a restart refuses (a changed case, another run's folder) and what it allows (a longer
 # stroke), and the results folder of an earlier run (refused without --overwrite).
 #   restart_bitwise.sh SHEETFORM SOURCE_DIR WORK_DIR MPIEXEC
@@ -144,6 +144,16 @@ for stop in 500 1400; do  # the trim is at cycle 1010 of 1835
 done
 grep -q "written before the last trim" "$work/trim_stop_1400.log" ||
   fail "a stop after the trim does not say its checkpoint is before the trim"
+
+# A tool that turns (issue 32, item 7): the flanging steel stopped mid-turn (its rotation, turn
+# and moment a step ago in the checkpoint) and restarted: the uninterrupted run's bits.
+flange_case="$src/cases/flange_rotary_bend/case.toml"
+flange=(-q --set 'operations=[{name="flange", kind="forming", end="time", time=0.0015, damping=0.0}]')
+run flange 0 "$flange_case" "${flange[@]}" -o "$work/flange"
+run flange_stop 5 "$flange_case" "${flange[@]}" -o "$work/flange_stop" --stop-at-cycle 5000
+run flange_end 0 "$flange_case" "${flange[@]}" -o "$work/flange_stop" \
+  --restart "$work/flange_stop/checkpoint.h5"
+same flange "$work/flange" "$work/flange_stop"
 
 # Ranks: stopped at 2 ranks, restarted serially and at 3 ranks (no mass scaling over ranks).
 ranks=(--stroke 0.5 --set blank.element_size=1.875 -q --threads 1)

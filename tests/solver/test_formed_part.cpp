@@ -106,6 +106,25 @@ std::string error_of(const std::function<void()>& f) {
   return "(no error)";
 }
 
+// A part of format 1 (before tools turned, issue 32 item 7; cases/verify_bounce at t = 1e-5 s,
+// written by that build) is read as one whose tools stand unturned: rotation the identity, angle
+// and moments zero.
+TEST(FormedPart, ReadsAFormatOnePartAsOneWhoseToolsNeverTurned) {
+  const FormedPart part = read_formed_part(fs::path(SF_SOURCE_DIR) /
+                                           "tests/fuzz/seeds/formed_part/verify_bounce_t1e-5.h5");
+  ASSERT_EQ(part.tools.size(), 1u);
+  for (int c = 0; c < 9; ++c) {
+    const double identity = c % 4 == 0 ? 1.0 : 0.0;
+    EXPECT_EQ(part.fields.at("tools/0/rotation" + std::to_string(c)),
+              std::vector<double>{identity});
+    EXPECT_EQ(part.fields.at("tools/0/previous_rotation" + std::to_string(c)),
+              std::vector<double>{identity});
+  }
+  EXPECT_EQ(part.fields.at("tools/0/angle"), std::vector<double>{0.0});
+  EXPECT_EQ(part.fields.at("tools/0/moment2"), std::vector<double>{0.0});
+  EXPECT_EQ(part.fields.at("tools/0/travel").size(), 1u);  // read from the file as before
+}
+
 TEST(FormedPart, RefusesAnotherVersionAnotherBlankAndOtherFiles) {
   const fs::path folder = output_folder("refusals");
   run(square_cup(0.3, {}), folder);
@@ -113,11 +132,11 @@ TEST(FormedPart, RefusesAnotherVersionAnotherBlankAndOtherFiles) {
   fs::copy_file(formed_part_path(folder), newer);
   {
     h5::File f(newer, h5::FileMode::read_write);
-    f.write_attribute("/", "format_version", 2);
+    f.write_attribute("/", "format_version", 3);
   }
   EXPECT_NE(error_of([&] {
               read_formed_part(newer);
-            }).find("formed part format 2, this build reads format 1 (written by a newer build)"),
+            }).find("formed part format 3, this build reads format 2 (written by a newer build)"),
             std::string::npos);
   EXPECT_NE(error_of([&] {
               read_formed_part(folder / "results.h5");
