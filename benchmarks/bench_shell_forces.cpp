@@ -115,8 +115,8 @@ Figures run_case(const Material& material, const Variant& variant, bool prestrai
   ShellPart part;
   part.quads = plate.quads;
   part.section = make_gauss_section(5);
-  part.material = material;
-  part.density = kRho;
+  part.materials[0].law = material;
+  part.materials[0].density = kRho;
   part.hourglass_coefficient = 0.1;
   part.hourglass_form = variant.form;
   part.formulation = variant.formulation;

@@ -17,7 +17,9 @@ requested size in pixels (width height), their names prefixed by --prefix:
 
 - `thinning.png`: thinning in per cent, 100 (1 - t / t0), from the cell array `thickness` (mm)
   with a Calculator; t0 is the blank's initial thickness, `[blank] thickness` of
-  RESULTS_DIR/case.resolved.toml. Positive = thinner than the blank, negative = thickened.
+  RESULTS_DIR/case.resolved.toml (a blank of several parts: each element's part's, from
+  `[[blank.parts]]` and the cell array `part`). Positive = thinner than the blank, negative =
+  thickened.
 - `plastic_strain.png`: the cell array `plastic_strain` (equivalent plastic strain, the mean
   through the thickness, -).
 
@@ -78,15 +80,32 @@ class Case:
             raise InputProblem(f"{path}: no such file (it gives the blank's initial thickness)")
         with open(path, "rb") as f:
             case = tomllib.load(f)
-        thickness = case.get("blank", {}).get("thickness")
-        if not isinstance(thickness, (int, float)) or not thickness > 0.0:
-            raise InputProblem(f"{path}: blank.thickness missing or not > 0 (got {thickness!r})")
-        self.thickness = float(thickness)  # mm, initial
+        blank = case.get("blank", {})
+        parts = blank.get("parts", [])
+        thicknesses = [p.get("thickness") for p in parts] if parts else [blank.get("thickness")]
+        for i, thickness in enumerate(thicknesses):
+            if not isinstance(thickness, (int, float)) or not thickness > 0.0:
+                key = f"blank.parts[{i}].thickness" if parts else "blank.thickness"
+                raise InputProblem(f"{path}: {key} missing or not > 0 (got {thickness!r})")
+        self.thicknesses = [float(t) for t in thicknesses]  # mm, initial, per part
         self.title = case.get("title", "")
         self.stroke_tool = case.get("control", {}).get("stroke_tool")
         # {tool name: unit motion direction, or None for a fixed tool}, in the case's order
         self.tools = {tool.get("name"): tool.get("motion", {}).get("direction")
                       for tool in case.get("tools", [])}
+
+
+def initial_thickness_expression(thicknesses):
+    """The initial thickness (mm) as a Calculator expression of the cell array `part` (the
+    element's part, 0, 1, ...): the polynomial through (k, t_k), exact at the parts' indices and
+    made of arithmetic alone, which every ParaView function parser takes. One part: the number."""
+    if len(thicknesses) == 1:
+        return repr(thicknesses[0])
+    terms = []
+    for k, t in enumerate(thicknesses):
+        factors = [f"(part-{j})/({k - j})" for j in range(len(thicknesses)) if j != k]
+        terms.append(f"{t!r}*" + "*".join(factors))
+    return "(" + "+".join(terms) + ")"
 
 
 def time_values(reader):
@@ -120,7 +139,7 @@ def travel_of(simple, reader, direction, time):
     return sum(a * b for a, b in zip(array.GetTuple3(0), direction))
 
 
-def open_blank(simple, blank_file):
+def open_blank(simple, blank_file, case):
     """The blank's reader, updated at its last time step, and its time values (s)."""
     reader = simple.Xdmf3ReaderS(FileName=[os.path.abspath(blank_file)])
     reader.UpdatePipelineInformation()
@@ -129,7 +148,7 @@ def open_blank(simple, blank_file):
         raise InputProblem(f"{blank_file}: no time steps (no output frame written)")
     reader.UpdatePipeline(times[-1])
     arrays = reader.CellData.keys()
-    for name in ("thickness", "plastic_strain"):
+    for name in ("thickness", "plastic_strain") + (("part",) if len(case.thicknesses) > 1 else ()):
         if name not in arrays:
             raise InputProblem(f"{blank_file}: no cell array '{name}' (cell arrays: "
                                f"{', '.join(arrays) or 'none'})")
@@ -179,7 +198,7 @@ def render(simple, view, args, case, blank, times, out_dir):
     thinning = simple.Calculator(Input=blank)
     thinning.AttributeType = "Cell Data"
     thinning.ResultArrayName = "thinning"
-    thinning.Function = f"100*(1-thickness/{case.thickness!r})"
+    thinning.Function = f"100*(1-thickness/{initial_thickness_expression(case.thicknesses)})"
     display = simple.Show(thinning, view)
     display.SetRepresentationType("Surface With Edges")
     display.EdgeColor = [0.3, 0.3, 0.3]
@@ -231,7 +250,7 @@ def main():
     from paraview import simple  # imported late: slow, and only needed once the input is fine
 
     simple._DisableFirstRenderCameraReset()
-    blank, times = open_blank(simple, blank_file)
+    blank, times = open_blank(simple, blank_file, case)
     if not -len(times) <= args.frame < len(times):
         raise InputProblem(f"{blank_file}: no frame {args.frame}: it has frames 0 to {len(times) - 1}")
     times = times[: args.frame % len(times) + 1]  # the frame shown is the last of these

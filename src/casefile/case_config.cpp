@@ -69,17 +69,54 @@ void read_materials(const TomlSection& top, std::vector<MaterialConfig>& materia
   }
 }
 
-void read_blank(const TomlSection& top, const CaseConfig& config, BlankConfig& blank) {
-  const TomlSection s = *top.sub_table("blank", Presence::required);
-  read_table(s, blank_fields(), blank);
+// Fails at `s`'s key "material" unless it names one of the case's materials.
+void check_material_name(const TomlSection& s, const CaseConfig& config, const std::string& name) {
   bool found = false;
   std::string names;
   for (const auto& material : config.materials) {
-    found = found || material.name == blank.material;
+    found = found || material.name == name;
     names += fmt::format("{}{}", names.empty() ? "" : ", ", quote_toml_string(material.name));
   }
   if (!found) {
     s.fail_value("material", fmt::format("the name of a [materials.NAME] table ({})", names));
+  }
+}
+
+// [[blank.parts]]: read before the blank's own keys, which depend on whether there are parts.
+void read_blank_parts(const TomlSection& s, const CaseConfig& config, BlankConfig& blank) {
+  for (const TomlSection& p : s.table_array("parts")) {
+    BlankPartConfig part;
+    read_table(p, blank_part_fields(), part);
+    part.line = static_cast<int>(p.table().source().begin.line);
+    check_material_name(p, config, part.material);
+    for (const BlankPartConfig& other : blank.parts) {
+      if (other.name == part.name) {
+        p.fail_value("name", fmt::format("a name no other part has (\"{}\" is taken)", part.name));
+      }
+      if (other.group == part.group) {
+        p.fail_value("group", fmt::format("a group no other part has (part \"{}\" has \"{}\")",
+                                          other.name, part.group));
+      }
+    }
+    blank.parts.push_back(std::move(part));
+  }
+  if (blank.parts.size() == 1) {
+    s.fail_at(s.table(), s.key_path("parts"),
+              "a blank of one part gives its thickness and material in [blank]; expected two or "
+              "more [[blank.parts]]");
+  }
+}
+
+void read_blank(const TomlSection& top, const CaseConfig& config, BlankConfig& blank) {
+  const TomlSection s = *top.sub_table("blank", Presence::required);
+  read_blank_parts(s, config, blank);
+  read_table(s, blank_fields(), blank, {"parts"});
+  if (blank.parts.empty()) {
+    check_material_name(s, config, blank.material);
+    return;
+  }
+  for (const BlankPartConfig& part : blank.parts) {
+    blank.thickness = std::max(blank.thickness, part.thickness);
   }
 }
 
@@ -269,13 +306,32 @@ toml::table parse_toml(const std::string& text, const std::string& file) {
 }  // namespace
 
 const MaterialConfig& CaseConfig::blank_material() const {
+  if (!blank.parts.empty()) {
+    throw InputError(fmt::format(
+        "{}: the blank has {} parts, each of its own material; expected a blank of one material",
+        file.string(), blank.parts.size()));
+  }
+  return material_named(blank.material);
+}
+
+const MaterialConfig& CaseConfig::material_named(const std::string& name) const {
   for (const auto& material : materials) {
-    if (material.name == blank.material) {
+    if (material.name == name) {
       return material;
     }
   }
-  throw InputError(
-      fmt::format("{}: blank.material: no material named \"{}\"", file.string(), blank.material));
+  throw InputError(fmt::format("{}: no material named \"{}\"", file.string(), name));
+}
+
+std::vector<BlankPartConfig> CaseConfig::blank_parts() const {
+  if (!blank.parts.empty()) {
+    return blank.parts;
+  }
+  return {BlankPartConfig{.name = "blank",
+                          .group = blank.mesh.group,
+                          .thickness = blank.thickness,
+                          .material = blank.material,
+                          .line = 0}};
 }
 
 const ToolConfig* CaseConfig::find_tool(const std::string& name) const {

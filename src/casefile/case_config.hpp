@@ -148,15 +148,29 @@ inline constexpr std::array<Choice<BlankMeshing>, 2> kBlankMeshingNames{{
      "the file's own `Recombine` commands (triangles where it has none)"},
 }};
 
+/// One part of a blank of several ([[blank.parts]], a tailor-welded blank): the elements of a
+/// 2-D physical group of the blank's mesh, with their own thickness and material. The parts share
+/// the nodes along their weld lines.
+struct BlankPartConfig {
+  std::string name;        ///< unique among the parts; names the part in results and messages
+  std::string group;       ///< a 2-D physical group of the blank's mesh: the part's elements
+  double thickness = 0.0;  ///< mm, initial
+  std::string material;    ///< name of a [materials.NAME] table
+  int line = 0;            ///< of the part's [[blank.parts]] header in the case file (0: unknown)
+};
+
 struct BlankConfig {
   MeshSourceConfig mesh{.file = {}, .group = "blank"};  ///< group defaults to "blank"
   /// How a .geo or CAD blank is meshed. Triangles left in the mesh are C0 shell triangles either
   /// way; a .msh (or another code's mesh) is read as it is.
   BlankMeshing element = BlankMeshing::quad;
-  double thickness = 0.0;      ///< mm, initial
+  /// mm, initial. With `parts`: not given; the reader sets the largest part's.
+  double thickness = 0.0;
   int integration_points = 5;  ///< through the thickness: gauss 1..9, lobatto 2..9
   ThroughThicknessRule integration_rule = ThroughThicknessRule::gauss;
-  std::string material;  ///< name of a [materials.NAME] table
+  std::string material;  ///< name of a [materials.NAME] table; empty with `parts`
+  /// The blank's parts (a tailor-welded blank); empty: one part, of `thickness` and `material`.
+  std::vector<BlankPartConfig> parts;
   /// The quadrilaterals' formulation: "assumed_strain" (the default: one point, directors, MITC4
   /// transverse shear, physical stabilisation: no hourglass keys) or "belytschko_tsay" (one point,
   /// Flanagan-Belytschko hourglass control, the two keys below). docs/element-and-material.md
@@ -532,8 +546,14 @@ struct CaseConfig {
   std::optional<SpringbackConfig> springback;                   ///< [springback]
   std::vector<OperationConfig> operations;                      ///< [[operations]]
 
-  /// The material named by blank.material (the reader guarantees it exists).
+  /// The material named by blank.material (the reader guarantees it exists). InputError for a
+  /// blank of several parts (blank_parts names each one's).
   const MaterialConfig& blank_material() const;
+  /// The blank's parts: blank.parts, or the one part a blank without them is (named "blank", the
+  /// whole mesh, blank.thickness, blank.material).
+  std::vector<BlankPartConfig> blank_parts() const;
+  /// The material of this name (InputError naming the case file if there is none).
+  const MaterialConfig& material_named(const std::string& name) const;
   /// The tool with this name, or nullptr.
   const ToolConfig* find_tool(const std::string& name) const;
 };

@@ -85,6 +85,10 @@ std::string format_resolved_case(const CaseConfig& config) {
   write_fields(top_level_fields(), w, config);
   w.header("blank");
   write_fields(blank_fields(), w, config.blank);
+  for (const BlankPartConfig& part : config.blank.parts) {
+    w.array_header("blank.parts");
+    write_fields(blank_part_fields(), w, part);
+  }
   for (const auto& material : config.materials) {
     write_material(w, material);
   }

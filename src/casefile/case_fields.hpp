@@ -13,6 +13,7 @@ namespace sf {
 // Parts (case_fields_parts.cpp).
 const FieldTable<MeshSourceConfig>& mesh_source_fields();
 const FieldTable<BlankConfig>& blank_fields();
+const FieldTable<BlankPartConfig>& blank_part_fields();
 const FieldTable<ToolConfig>& tool_fields();
 const FieldTable<MotionConfig>& motion_fields();
 const FieldTable<ContactConfig>& contact_fields();

@@ -195,7 +195,13 @@ FieldTable<BlankConfig> make_blank_fields() {
       "how a `.geo` or CAD blank is meshed. Quadrilaterals become shells of the `formulation` "
       "below and triangles C0 (DSG3) shell triangles either way, so a blank may hold quads, "
       "triangles or both; a `.msh` is read as it is"));
-  t.push_back(number_field<B>("thickness", &B::thickness, greater_than(0.0, "mm")).required());
+  const auto one_part = [](const B& b) { return b.parts.empty(); };
+  const std::string parts_own =
+      "a blank of several parts (`[[blank.parts]]`) gives each part's thickness and material in "
+      "its own table";
+  t.push_back(number_field<B>("thickness", &B::thickness, greater_than(0.0, "mm"))
+                  .required()
+                  .when(one_part, "without `[[blank.parts]]`", parts_own));
   t.push_back(choice_field<B, ThroughThicknessRule>(
       "integration_rule", &B::integration_rule, kThroughThicknessRuleNames,
       "elastic bending is integrated exactly with Gauss n >= 2, Lobatto n >= 3"));
@@ -208,7 +214,8 @@ FieldTable<BlankConfig> make_blank_fields() {
       },
       "1 … 9 (Gauss), 2 … 9 (Lobatto)", "points through the thickness"));
   t.push_back(string_field<B>("material", &B::material, "the name of a `[materials.NAME]` table")
-                  .required());
+                  .required()
+                  .when(one_part, "without `[[blank.parts]]`", parts_own));
   t.push_back(choice_field<B, ShellFormulation>(
       "formulation", &B::formulation, kShellFormulationNames,
       "the quadrilaterals' formulation (docs/element-and-material.md)"));
@@ -246,6 +253,24 @@ FieldTable<BlankConfig> make_blank_fields() {
           },
           [](TomlWriter& w, const B& b) { w.string("formed_part", b.formed_part.string()); })
           .write_if([](const B& b) { return !b.formed_part.empty(); }));
+  return t;
+}
+
+FieldTable<BlankPartConfig> make_blank_part_fields() {
+  using P = BlankPartConfig;
+  FieldTable<P> t;
+  t.push_back(name_field<P>("name", &P::name,
+                            "unique among the parts; names the part in the banner, the summary "
+                            "and the results' `part` field")
+                  .required());
+  t.push_back(string_field<P>("group", &P::group,
+                              "a 2-D physical group of the blank's mesh: the part's elements. "
+                              "Every element of the blank is in exactly one part; the parts "
+                              "share the nodes of their weld lines")
+                  .required());
+  t.push_back(number_field<P>("thickness", &P::thickness, greater_than(0.0, "mm")).required());
+  t.push_back(string_field<P>("material", &P::material, "the name of a `[materials.NAME]` table")
+                  .required());
   return t;
 }
 
@@ -441,6 +466,11 @@ FieldTable<ContactConfig> make_contact_fields() {
 
 const FieldTable<MeshSourceConfig>& mesh_source_fields() {
   static const FieldTable<MeshSourceConfig> table = make_mesh_source_fields();
+  return table;
+}
+
+const FieldTable<BlankPartConfig>& blank_part_fields() {
+  static const FieldTable<BlankPartConfig> table = make_blank_part_fields();
   return table;
 }
 

@@ -9,6 +9,7 @@ std::vector<SchemaSection> case_schema() {
   return {
       {"top level", field_docs(top_level_fields())},
       {"blank", field_docs(blank_fields())},
+      {"blank.parts", field_docs(blank_part_fields())},
       {"materials.NAME", field_docs(material_fields())},
       {"materials.NAME.kinematic", field_docs(kinematic_fields())},
       {"materials.NAME.cowper_symonds", field_docs(cowper_symonds_fields())},

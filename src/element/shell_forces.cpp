@@ -31,6 +31,7 @@ void check_sizes(const ShellPart& part, const ElementInputs& in, const ShellStat
       state.thickness.size() != n_el || state.hourglass.size() != n_el * kHourglassModes ||
       (directors && state.director.size() != n_el * 3 * kDirectorNodes) ||
       (!part.material_angle.empty() && part.material_angle.size() != n_el) ||
+      (!part.element_material.empty() && part.element_material.size() != n_el) ||
       (!element_dt.empty() && element_dt.size() != n_el)) {
     throw std::invalid_argument("run_element_pass: inconsistent array sizes");
   }
@@ -80,19 +81,26 @@ void run_share(const ShellPart& part, const ElementInputs& in, ShellState& state
   const int quads = run_length(quad_runs);
   const int triangles = run_length(triangle_runs);
   const bool assumed_strain = part.formulation == ShellFormulation::assumed_strain;
-  auto quad_piece = [&](int q0, int q1) {
-    assumed_strain ? compute_assumed_strain_quad_forces(part, in, state, q0, q1, out)
-                   : compute_bt_quad_forces(part, in, state, q0, q1, out);
+  // A piece of one material at a time (the kernels take one law).
+  auto quad_run = [&](int q0, int q1, const ShellMaterial& m) {
+    if (!out.failure.failed()) {
+      assumed_strain ? compute_assumed_strain_quad_forces(part, m, in, state, q0, q1, out)
+                     : compute_bt_quad_forces(part, m, in, state, q0, q1, out);
+    }
   };
-  auto triangle_piece = [&](int e0, int e1) {
+  auto triangle_run = [&](int e0, int e1, const ShellMaterial& m) {
     const int t0 = e0 - n_quads;
     const int t1 = e1 - n_quads;
-    assumed_strain ? compute_assumed_strain_triangle_forces(part, in, state, t0, t1, out)
-                   : compute_triangle_forces(part, in, state, t0, t1, out);
+    if (!out.failure.failed()) {
+      assumed_strain ? compute_assumed_strain_triangle_forces(part, m, in, state, t0, t1, out)
+                     : compute_triangle_forces(part, m, in, state, t0, t1, out);
+    }
     if (out.element_dt && !out.failure.failed()) {
       compute_triangle_time_steps(part, in.x, {out.element_dt, state.thickness.size()}, t0, t1);
     }
   };
+  auto quad_piece = [&](int q0, int q1) { for_each_material_run(part, q0, q1, quad_run); };
+  auto triangle_piece = [&](int e0, int e1) { for_each_material_run(part, e0, e1, triangle_run); };
   try {
     for_each_piece(quad_runs, share_begin(quads, t, shares, kBlockLanes),
                    share_begin(quads, t + 1, shares, kBlockLanes), out, quad_piece);

@@ -19,7 +19,7 @@ void compute_lumped_mass(const ShellPart& part, const Matrix3X& x, const ShellSt
   for (int e = 0; e < part.quads.cols(); ++e) {
     compute_shell_geometry_or_throw(gather_quad(x, part.quads, e), e, "mass", g);
     const double t = state.thickness[e];
-    const double m_node = 0.25 * part.density * t * g.area;
+    const double m_node = 0.25 * material_of(part, e).density * t * g.area;
     const double i_node = rotational_inertia_factor(g.area, t) * m_node;
     for (int i = 0; i < 4; ++i) {
       mass(part.quads(i, e)) += m_node;
@@ -32,7 +32,7 @@ void compute_lumped_mass(const ShellPart& part, const Matrix3X& x, const ShellSt
     const int e = n_quads + k;
     compute_triangle_geometry_or_throw(gather_triangle(x, part.triangles, k), e, k, "mass", tg);
     const double t = state.thickness[e];
-    const double m_node = part.density * t * tg.area / 3.0;
+    const double m_node = material_of(part, e).density * t * tg.area / 3.0;
     const double i_node = rotational_inertia_factor(tg.area, t) * m_node;
     for (int i = 0; i < 3; ++i) {
       mass(part.triangles(i, k)) += m_node;
@@ -42,6 +42,25 @@ void compute_lumped_mass(const ShellPart& part, const Matrix3X& x, const ShellSt
 }
 
 namespace {
+
+// The wave speed of element e's material, evaluated again only when the material changes.
+class WaveSpeeds {
+ public:
+  explicit WaveSpeeds(const ShellPart& part) : part_(part) {}
+  double of(int e) {
+    const int m = material_index(part_, e);
+    if (m != material_) {
+      material_ = m;
+      speed_ = material_wave_speed(part_.materials[static_cast<std::size_t>(m)]);
+    }
+    return speed_;
+  }
+
+ private:
+  const ShellPart& part_;
+  int material_ = -1;
+  double speed_ = 0.0;
+};
 
 // L / c of triangle e (element index, quads first): L = 2 A / max side, the smallest altitude.
 double triangle_time_step(const Matrix3X& x, const ShellPart& part, int e, double c,
@@ -55,7 +74,7 @@ double triangle_time_step(const Matrix3X& x, const ShellPart& part, int e, doubl
 // kBlockLanes from the SIMD geometry kernel (the time loop evaluates this every cycle).
 template <class Step>
 void for_each_time_step(const ShellPart& part, const Matrix3X& x, Step step) {
-  const double c = part_wave_speed(part);
+  WaveSpeeds c(part);
   const int n_quads = static_cast<int>(part.quads.cols());
   for (int e0 = 0; e0 < n_quads; e0 += kBlockLanes) {
     const int count = std::min(kBlockLanes, n_quads - e0);
@@ -67,20 +86,20 @@ void for_each_time_step(const ShellPart& part, const Matrix3X& x, Step step) {
       if (!ok[j]) {
         throw_invalid_geometry(e, "time step");
       }
-      step(e, quad_time_step(gather_quad(x, part.quads, e), area[j], c));
+      step(e, quad_time_step(gather_quad(x, part.quads, e), area[j], c.of(e)));
     }
   }
   TriangleGeometry tg;
   for (int e = n_quads; e < element_count(part); ++e) {
-    step(e, triangle_time_step(x, part, e, c, tg));
+    step(e, triangle_time_step(x, part, e, c.of(e), tg));
   }
 }
 
 }  // namespace
 
-double part_wave_speed(const ShellPart& part) {
-  return plane_stress_wave_speed(young_modulus(part.material), poisson_ratio(part.material),
-                                 part.density);
+double material_wave_speed(const ShellMaterial& material) {
+  return plane_stress_wave_speed(young_modulus(material.law), poisson_ratio(material.law),
+                                 material.density);
 }
 
 double quad_time_step(const Quad3& xe, double area, double wave_speed) {
@@ -93,12 +112,12 @@ double quad_time_step(const Quad3& xe, double area, double wave_speed) {
 
 void compute_triangle_time_steps(const ShellPart& part, const Matrix3X& x,
                                  std::span<double> element_dt, int begin, int end) {
-  const double c = part_wave_speed(part);
+  WaveSpeeds c(part);
   const int n_quads = static_cast<int>(part.quads.cols());
   const int last = end < 0 ? static_cast<int>(part.triangles.cols()) : end;
   TriangleGeometry tg;
   for (int e = n_quads + begin; e < n_quads + last; ++e) {
-    element_dt[static_cast<std::size_t>(e)] = triangle_time_step(x, part, e, c, tg);
+    element_dt[static_cast<std::size_t>(e)] = triangle_time_step(x, part, e, c.of(e), tg);
   }
 }
 
@@ -153,7 +172,7 @@ void compute_element_masses(const ShellPart& part, const Matrix3X& x, const Shel
       area = tg.area;
     }
     const double t = state.thickness[e];
-    mass[e] = part.density * t * area;
+    mass[e] = material_of(part, ei).density * t * area;
     inertia_factor[e] = rotational_inertia_factor(area, t);
   }
 }

@@ -3,7 +3,9 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "core/errors.hpp"
 
@@ -142,6 +144,53 @@ void size_shell_state_for_material(ShellState& state, const Material& material) 
                                static_cast<std::size_t>(state.n_points) * 3 *
                                static_cast<std::size_t>(n_back),
                            0.0);
+}
+
+namespace {
+
+int back_stress_count(const Material& material) {
+  const auto* law = std::get_if<GeneralPlasticity>(&material);
+  return law ? law->kinematic.count : 0;
+}
+
+}  // namespace
+
+int material_run_end(const ShellPart& part, int begin, int end) {
+  if (part.element_material.empty()) {
+    return end;
+  }
+  const int m = part.element_material[static_cast<std::size_t>(begin)];
+  int e = begin + 1;
+  while (e < end && part.element_material[static_cast<std::size_t>(e)] == m) {
+    ++e;
+  }
+  return e;
+}
+
+void set_element_materials(ShellPart& part, std::vector<ShellMaterial> materials,
+                           std::vector<int> element_material) {
+  if (materials.empty() ||
+      element_material.size() != static_cast<std::size_t>(element_count(part))) {
+    throw std::invalid_argument("set_element_materials: one material index per element expected");
+  }
+  for (const int m : element_material) {
+    if (m < 0 || static_cast<std::size_t>(m) >= materials.size()) {
+      throw std::invalid_argument("set_element_materials: material index out of range");
+    }
+  }
+  part.materials = std::move(materials);
+  part.element_material = std::move(element_material);
+}
+
+void size_shell_state_for_part(ShellState& state, const ShellPart& part) {
+  const int n_back = back_stress_count(part.materials.front().law);
+  for (const ShellMaterial& m : part.materials) {
+    if (back_stress_count(m.law) != n_back) {
+      throw std::invalid_argument(
+          "size_shell_state_for_part: the materials keep different numbers of back stresses");
+    }
+  }
+  size_shell_state_for_material(state, part.materials.front().law);
 }
 
 }  // namespace sf

@@ -89,17 +89,26 @@ enum class StabilizationUnloading {
   as_loading,
 };
 
+/// The material of some of a part's elements: its law and its density.
+struct ShellMaterial {
+  Material law = ElasticPlaneStress{};
+  double density = 0.0;  ///< tonne/mm^3
+};
+
 /// A shell part: connectivity (node indices, counter-clockwise seen from the +normal side) of its
-/// quads and triangles, section, material and the hourglass control (quads only). A part may hold
-/// quads, triangles or both; its elements are numbered quads first, then triangles: element e <
-/// quads.cols() is quad e, otherwise triangle e - quads.cols(). State arrays, stable-step
-/// elements and output cells use this numbering.
+/// quads and triangles, section, materials and the hourglass control (quads only). A part may
+/// hold quads, triangles or both; its elements are numbered quads first, then triangles: element
+/// e < quads.cols() is quad e, otherwise triangle e - quads.cols(). State arrays, stable-step
+/// elements and output cells use this numbering. A part of several materials (a tailor-welded
+/// blank) names each element's material; elements of one material are best kept consecutive
+/// (the element loops take a run of one material at a time).
 struct ShellPart {
   QuadConn quads;
   TriConn triangles;  ///< 3-node C0 shell triangles (DSG3 transverse shear)
   ShellSection section = make_gauss_section(5);
-  Material material = ElasticPlaneStress{};
-  double density = 0.0;                                             ///< tonne/mm^3
+  std::vector<ShellMaterial> materials{ShellMaterial{}};  ///< at least one
+  /// Per element, its index into `materials`; empty: every element has materials[0].
+  std::vector<int> element_material;
   ShellFormulation formulation = ShellFormulation::assumed_strain;  ///< of the quads
   /// -, viscous: fraction (x 4) of critical damping; stiffness: hourglass mode stiffness as a
   /// fraction of the element's membrane / bending stiffness. See docs/element-and-material.md.
@@ -118,5 +127,38 @@ struct ShellPart {
 inline int element_count(const ShellPart& part) {
   return static_cast<int>(part.quads.cols() + part.triangles.cols());
 }
+
+/// The index into part.materials of element e's material.
+inline int material_index(const ShellPart& part, int e) {
+  return part.element_material.empty() ? 0 : part.element_material[static_cast<std::size_t>(e)];
+}
+
+/// Element e's material.
+inline const ShellMaterial& material_of(const ShellPart& part, int e) {
+  return part.materials[static_cast<std::size_t>(material_index(part, e))];
+}
+
+/// The end of the run of elements from `begin` (up to `end`) that share element begin's material.
+int material_run_end(const ShellPart& part, int begin, int end);
+
+/// Calls piece(b, e, material) for the runs of one material that make up elements [begin, end),
+/// in order.
+template <class Piece>
+void for_each_material_run(const ShellPart& part, int begin, int end, const Piece& piece) {
+  for (int b = begin; b < end;) {
+    const int e = material_run_end(part, b, end);
+    piece(b, e, material_of(part, b));
+    b = e;
+  }
+}
+
+/// Sets the part's materials and each element's (an index into `materials`, one per element).
+/// Throws std::invalid_argument on an index out of range or a count that is not the part's.
+void set_element_materials(ShellPart& part, std::vector<ShellMaterial> materials,
+                           std::vector<int> element_material);
+
+/// Sizes the materials' own per-point arrays of `state` (see size_shell_state_for_material) for
+/// a part of several materials: the back stresses of the law with the most of them.
+void size_shell_state_for_part(ShellState& state, const ShellPart& part);
 
 }  // namespace sf

@@ -136,11 +136,12 @@ DirectorResultants make_director_resultants(const CartesianMap& map, double area
 }
 
 template <class Law>
-void compute_forces(const ShellPart& part, const Law& law, const ElementInputs& in, ShellState& st,
-                    int begin, int end, ElementOutputs& out) {
+void compute_forces(const ShellPart& part, const ShellMaterial& material, const Law& law,
+                    const ElementInputs& in, ShellState& st, int begin, int end,
+                    ElementOutputs& out) {
   const Matrix3X& x = in.x;
   const double dt = in.dt;
-  const double wave_speed = part_wave_speed(part);  // mm/s, for the elements' time steps
+  const double wave_speed = material_wave_speed(material);  // mm/s, for the elements' time steps
   const Constants c{law.E, law.nu, 5.0 / 6.0 * 0.5 * law.E / (1.0 + law.nu),
                     plane_stress_stiffness(law.E, law.nu)};
   const SectionConstants section = make_section_constants(part.section);
@@ -241,11 +242,12 @@ void compute_forces(const ShellPart& part, const Law& law, const ElementInputs& 
 
 }  // namespace
 
-void compute_assumed_strain_quad_forces(const ShellPart& part, const ElementInputs& in,
-                                        ShellState& state, int begin, int end,
-                                        ElementOutputs& out) {
-  std::visit([&](const auto& law) { compute_forces(part, law, in, state, begin, end, out); },
-             part.material);
+void compute_assumed_strain_quad_forces(const ShellPart& part, const ShellMaterial& material,
+                                        const ElementInputs& in, ShellState& state, int begin,
+                                        int end, ElementOutputs& out) {
+  std::visit(
+      [&](const auto& law) { compute_forces(part, material, law, in, state, begin, end, out); },
+      material.law);
 }
 
 }  // namespace sf

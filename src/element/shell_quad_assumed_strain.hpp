@@ -10,13 +10,14 @@
 
 namespace sf {
 
-/// Quads [begin, end) of `part` (begin a multiple of kBlockLanes): their corner forces and
-/// moments into out.corners, their state updated (stresses, thickness, stabilisation resultants
-/// and directors: the directors are turned by dt omega), their works summed into `out`, their
-/// critical steps into out.element_dt (when not null). The directors must have been set
-/// (initialize_directors). Stops at the first failing element, recorded in out.failure.
-/// Conventions: compute_shell_internal_forces.
-void compute_assumed_strain_quad_forces(const ShellPart& part, const ElementInputs& in,
-                                        ShellState& state, int begin, int end, ElementOutputs& out);
+/// Quads [begin, end) of `part` (of one material; begin best a multiple of kBlockLanes): their
+/// corner forces and moments into out.corners, their state updated (stresses, thickness,
+/// stabilisation resultants and directors: the directors are turned by dt omega), their works
+/// summed into `out`, their critical steps into out.element_dt (when not null). The directors must
+/// have been set (initialize_directors). Stops at the first failing element, recorded in
+/// out.failure. Conventions: compute_shell_internal_forces.
+void compute_assumed_strain_quad_forces(const ShellPart& part, const ShellMaterial& material,
+                                        const ElementInputs& in, ShellState& state, int begin,
+                                        int end, ElementOutputs& out);
 
 }  // namespace sf

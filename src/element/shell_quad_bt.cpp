@@ -24,13 +24,14 @@ constexpr int kBtModes = 5;
 
 // The element loop, instantiated once per material type (the variant is visited outside it).
 template <class Law>
-void compute_forces(const ShellPart& part, const Law& law, const ElementInputs& in, ShellState& st,
-                    int begin, int end, ElementOutputs& out) {
+void compute_forces(const ShellPart& part, const ShellMaterial& material, const Law& law,
+                    const ElementInputs& in, ShellState& st, int begin, int end,
+                    ElementOutputs& out) {
   const Matrix3X& x = in.x;
   const double dt = in.dt;
   const double shear_modulus = 0.5 * law.E / (1.0 + law.nu);
   const double ks_g = 5.0 / 6.0 * shear_modulus;  // shear correction factor 5/6
-  const double c = plane_stress_wave_speed(law.E, law.nu, part.density);
+  const double c = plane_stress_wave_speed(law.E, law.nu, material.density);
   const double plate = law.E / (12.0 * (1.0 - law.nu * law.nu));  // D / t^3
   const double membrane = law.E / (1.0 - law.nu * law.nu);        // membrane stiffness / t
   const double kappa = part.hourglass_coefficient;
@@ -43,7 +44,7 @@ void compute_forces(const ShellPart& part, const Law& law, const ElementInputs& 
   const double* wd = in.omega.data();
   double* hg_state = st.hourglass.data();
   const double* material_angle = part.material_angle.empty() ? nullptr : part.material_angle.data();
-  const double wave_speed = part_wave_speed(part);  // mm/s, for the elements' time steps
+  const double wave_speed = material_wave_speed(material);  // mm/s, for the elements' time steps
 
   QuadGeometryBlock geometry;  // of the block of elements holding e
   for (int e = begin; e < end; ++e) {
@@ -171,7 +172,7 @@ void compute_forces(const ShellPart& part, const Law& law, const ElementInputs& 
         // 1/2 (Q_n + Q_n+1) q; with a q^2 instead, a mode that alternates sign every step (the
         // highest ones) would be counted as dissipating what the trapezoidal element work does
         // not see, and the internal energy, the rest of that work, would go negative.
-        const double m_node = 0.25 * part.density * t * a;
+        const double m_node = 0.25 * material.density * t * a;
         const double i_node = rotational_inertia_factor(a, t) * m_node;
         coef[0] = 0.5 * kappa * m_node * 2.0 * c / std::sqrt(a);
         coef[1] = coef[0];
@@ -218,10 +219,12 @@ void compute_forces(const ShellPart& part, const Law& law, const ElementInputs& 
 
 }  // namespace
 
-void compute_bt_quad_forces(const ShellPart& part, const ElementInputs& in, ShellState& state,
-                            int begin, int end, ElementOutputs& out) {
-  std::visit([&](const auto& law) { compute_forces(part, law, in, state, begin, end, out); },
-             part.material);
+void compute_bt_quad_forces(const ShellPart& part, const ShellMaterial& material,
+                            const ElementInputs& in, ShellState& state, int begin, int end,
+                            ElementOutputs& out) {
+  std::visit(
+      [&](const auto& law) { compute_forces(part, material, law, in, state, begin, end, out); },
+      material.law);
 }
 
 }  // namespace sf

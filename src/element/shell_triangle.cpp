@@ -18,8 +18,9 @@ namespace {
 
 // The triangle loop, instantiated once per material type (the variant is visited outside it).
 template <class Law>
-void compute_forces(const ShellPart& part, const Law& law, const ElementInputs& in, ShellState& st,
-                    int begin, int end, ElementOutputs& out) {
+void compute_forces(const ShellPart& part, const ShellMaterial& material, const Law& law,
+                    const ElementInputs& in, ShellState& st, int begin, int end,
+                    ElementOutputs& out) {
   const Matrix3X& x = in.x;
   const double dt = in.dt;
   const int n_quads = static_cast<int>(part.quads.cols());
@@ -116,10 +117,12 @@ void compute_forces(const ShellPart& part, const Law& law, const ElementInputs& 
 
 }  // namespace
 
-void compute_triangle_forces(const ShellPart& part, const ElementInputs& in, ShellState& state,
-                             int begin, int end, ElementOutputs& out) {
-  std::visit([&](const auto& law) { compute_forces(part, law, in, state, begin, end, out); },
-             part.material);
+void compute_triangle_forces(const ShellPart& part, const ShellMaterial& material,
+                             const ElementInputs& in, ShellState& state, int begin, int end,
+                             ElementOutputs& out) {
+  std::visit(
+      [&](const auto& law) { compute_forces(part, material, law, in, state, begin, end, out); },
+      material.law);
 }
 
 }  // namespace sf

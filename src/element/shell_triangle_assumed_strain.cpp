@@ -22,8 +22,9 @@ CartesianMap make_triangle_map(const Tri3& x, const Mat3& frame) {
 }
 
 template <class Law>
-void compute_forces(const ShellPart& part, const Law& law, const ElementInputs& in, ShellState& st,
-                    int first, int last, ElementOutputs& out) {
+void compute_forces(const ShellPart& part, const ShellMaterial& material, const Law& law,
+                    const ElementInputs& in, ShellState& st, int first, int last,
+                    ElementOutputs& out) {
   const Matrix3X& x = in.x;
   const double dt = in.dt;
   const int n_quads = static_cast<int>(part.quads.cols());
@@ -116,11 +117,12 @@ void compute_forces(const ShellPart& part, const Law& law, const ElementInputs& 
 
 }  // namespace
 
-void compute_assumed_strain_triangle_forces(const ShellPart& part, const ElementInputs& in,
-                                            ShellState& state, int begin, int end,
-                                            ElementOutputs& out) {
-  std::visit([&](const auto& law) { compute_forces(part, law, in, state, begin, end, out); },
-             part.material);
+void compute_assumed_strain_triangle_forces(const ShellPart& part, const ShellMaterial& material,
+                                            const ElementInputs& in, ShellState& state, int begin,
+                                            int end, ElementOutputs& out) {
+  std::visit(
+      [&](const auto& law) { compute_forces(part, material, law, in, state, begin, end, out); },
+      material.law);
 }
 
 }  // namespace sf

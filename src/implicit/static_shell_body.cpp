@@ -10,6 +10,27 @@
 
 namespace sf {
 
+namespace {
+
+// Young's modulus (MPa) and Poisson's ratio of the part's material, or their means over the
+// elements for a part of several materials.
+std::pair<double, double> mean_elastic_constants(const ShellPart& part) {
+  if (part.materials.size() == 1) {
+    const Material& law = part.materials.front().law;
+    return {young_modulus(law), poisson_ratio(law)};
+  }
+  double young = 0.0;
+  double poisson = 0.0;
+  for (int e = 0; e < element_count(part); ++e) {
+    young += young_modulus(material_of(part, e).law);
+    poisson += poisson_ratio(material_of(part, e).law);
+  }
+  const double n = element_count(part);
+  return {young / n, poisson / n};
+}
+
+}  // namespace
+
 StaticShellBody::StaticShellBody(const ShellPart& part, const Matrix3X& x, const ShellState& state)
     : part_(part),
       x_(x),
@@ -31,8 +52,7 @@ StaticShellBody::StaticShellBody(const ShellPart& part, const Matrix3X& x, const
   length_scale_ = mean_edge_length(x_, part_.quads, part_.triangles);
   const double t = std::accumulate(state_.thickness.begin(), state_.thickness.end(), 0.0) /
                    static_cast<double>(state_.thickness.size());
-  const auto [young, poisson] =
-      std::visit([](const auto& law) { return std::pair(law.E, law.nu); }, part_.material);
+  const auto [young, poisson] = mean_elastic_constants(part_);
   membrane_stiffness_ = young * t;
   drilling_stiffness_ =
       kDrillingStiffnessFraction * young * t * t * t / (12.0 * (1.0 - poisson * poisson));

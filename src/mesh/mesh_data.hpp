@@ -18,6 +18,9 @@ struct PartMesh {
   /// Elements reversed when read, to agree with their neighbours' orientation (the minority of
   /// each connected piece: extract_part_mesh).
   int reoriented = 0;
+  /// gmsh tag of each element, quads first then triangles (as the ShellPart numbering); empty
+  /// where the elements have none (a formed part's mesh).
+  std::vector<std::size_t> gmsh_element_tags;
 };
 
 /// A named set of nodes of a part (boundary curves, points), from a gmsh physical group.

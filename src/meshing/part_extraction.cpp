@@ -173,6 +173,7 @@ PartMesh extract_part_mesh(const GmshModel& model, const std::string& group,
   part.quads.resize(4, quad_count);
   part.triangles.resize(3, triangle_count);
   part.reoriented = static_cast<int>(std::count(reverse.begin(), reverse.end(), 1));
+  part.gmsh_element_tags = element_tags;  // quads first, as `elements`
   int q = 0, t = 0;
   for (std::size_t e = 0; e < elements.size(); ++e) {
     std::vector<int> el = elements[e];

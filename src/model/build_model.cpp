@@ -15,6 +15,7 @@
 #include "core/log.hpp"
 #include "material/anisotropy_fit.hpp"
 #include "meshing/gmsh_reader.hpp"
+#include "model/blank_parts.hpp"
 #include "model/constraint_assembly.hpp"
 #include "model/node_selection.hpp"
 #include "model/operation_plan.hpp"
@@ -164,6 +165,33 @@ NodeGroup blank_group(const GmshModel* gmsh_model, const BlankMesh* given, const
   throw InputError(fmt::format("no node group '{}' in {}", name, given->source));
 }
 
+// The blank's parts' names, thicknesses and materials; element_part (empty: one part) gives each
+// element's part.
+void set_blank_materials(const CaseConfig& config, std::vector<int> element_part, Blank& blank) {
+  std::vector<ShellMaterial> materials;
+  blank.parts.clear();
+  for (const BlankPartConfig& p : config.blank_parts()) {
+    const MaterialConfig& material = config.material_named(p.material);
+    materials.push_back({make_material(config, material), material.density});
+    blank.parts.push_back({p.name, p.thickness});
+  }
+  if (element_part.empty()) {
+    blank.part.materials = std::move(materials);
+    blank.part.element_material.clear();
+    return;
+  }
+  set_element_materials(blank.part, std::move(materials), std::move(element_part));
+  try {
+    ShellState probe;
+    size_shell_state_for_part(probe, blank.part);
+  } catch (const std::invalid_argument&) {
+    throw InputError(
+        fmt::format("{}: blank.parts: the parts' materials keep different numbers of back stresses "
+                    "(kinematic hardening); expected the same number in every part's material",
+                    config.file.string()));
+  }
+}
+
 void read_blank(const CaseConfig& config, Model& model, const BlankMesh* given) {
   const BlankConfig& bc = config.blank;
   // "quad": a .geo is meshed with every surface recombined (quads wherever gmsh can make them);
@@ -184,6 +212,25 @@ void read_blank(const CaseConfig& config, Model& model, const BlankMesh* given) 
   if (blank.mesh.quads.cols() + blank.mesh.triangles.cols() == 0) {
     throw InputError(fmt::format("{}: group '{}' holds no quadrilaterals or triangles",
                                  bc.mesh.file.string(), bc.mesh.group));
+  }
+  std::vector<int> element_part;
+  if (!bc.parts.empty()) {
+    if (!gmsh_model) {  // the blank is a formed part's mesh
+      throw InputError(fmt::format(
+          "{}: [[blank.parts]] with blank.formed_part: a formed part does not carry its "
+          "elements' parts yet; expected a blank of one part to start from a formed part",
+          config.file.string()));
+    }
+    const bool trims =
+        std::any_of(config.operations.begin(), config.operations.end(),
+                    [](const auto& o) { return o.kind == OperationConfig::Kind::trim; });
+    if (trims) {
+      throw InputError(fmt::format(
+          "{}: a blank of several parts ([[blank.parts]]) cannot be trimmed yet (the formed part "
+          "does not carry the elements' parts); expected no trim operation",
+          config.file.string()));
+    }
+    element_part = sort_blank_by_part(*gmsh_model, bc.parts, config.file.string(), blank.mesh);
   }
   // Every node group the case names, read once, with the entry that first names it (a missing
   // group's message names the case file, the entry's line where known, and its key).
@@ -284,20 +331,20 @@ void read_blank(const CaseConfig& config, Model& model, const BlankMesh* given) 
   }
   blank.inverse_element_count = blank.inverse_element_count.cwiseInverse();
 
-  const MaterialConfig& material = config.blank_material();
   blank.part.quads = blank.mesh.quads;
   blank.part.triangles = blank.mesh.triangles;
   blank.node_corners = build_node_corners(blank.part, static_cast<int>(blank.mesh.nodes.cols()));
   blank.part.section = make_section(bc.integration_points, bc.integration_rule);
-  blank.part.material = make_material(config, material);
-  blank.part.density = material.density;
+  set_blank_materials(config, element_part, blank);
   blank.part.hourglass_coefficient = bc.hourglass_coefficient;
   blank.part.hourglass_form = bc.hourglass_form;
   blank.part.formulation = bc.formulation;
   blank.formed_part = bc.formed_part;
-  const bool material_axes =
-      std::visit([](const auto& law) { return kUsesMaterialAxes<std::decay_t<decltype(law)>>; },
-                 blank.part.material);
+  const bool material_axes = std::any_of(
+      blank.part.materials.begin(), blank.part.materials.end(), [](const ShellMaterial& m) {
+        return std::visit(
+            [](const auto& law) { return kUsesMaterialAxes<std::decay_t<decltype(law)>>; }, m.law);
+      });
   if (material_axes) {
     blank.part.material_angle = make_material_angles(config, blank.mesh);
   }
@@ -350,6 +397,13 @@ void read_tools(const CaseConfig& config, Model& model) {
                       tc.mesh.file.string(), tc.name, tc.mesh.group));
     }
     if (tc.position == ToolConfig::Position::touch) {
+      if (!config.blank.parts.empty()) {
+        throw InputError(fmt::format(
+            "{}: tools[{}].position = \"touch\" ('{}'): a blank of several parts has several "
+            "thicknesses, and placing a tool to touch it is not supported yet; expected the "
+            "tool placed by its mesh (position = \"as_meshed\")",
+            config.file.string(), t, tc.name));
+      }
       tool.touch_shift = move_to_touch(config, t, model.blank, tool.mesh);
     }
     tool.surface = TriangleSurface(tc.name, tool.mesh.nodes, tool.mesh.triangles);
@@ -469,8 +523,24 @@ void set_mass_and_time_step(const CaseConfig& config, Model& model, const ShellS
   }
 }
 
+// The blank's material with the largest bulk modulus (the stiffest penalty; the stability cap
+// bounds it per node).
+const MaterialConfig& stiffest_blank_material(const CaseConfig& config) {
+  const MaterialConfig* best = nullptr;
+  double best_bulk = 0.0;
+  for (const BlankPartConfig& p : config.blank_parts()) {
+    const MaterialConfig& m = config.material_named(p.material);
+    const double bulk = m.young / (3.0 * (1.0 - 2.0 * m.poisson));
+    if (best == nullptr || bulk > best_bulk) {
+      best = &m;
+      best_bulk = bulk;
+    }
+  }
+  return *best;
+}
+
 void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& state) {
-  const MaterialConfig& material = config.blank_material();
+  const MaterialConfig& material = stiffest_blank_material(config);
   for (const ContactConfig& cc : config.contacts) {
     ContactInterface contact;
     contact.search = cc.search;
@@ -712,8 +782,10 @@ Model build_model(const CaseConfig& config, const BlankMesh* blank) {
   copy_plans(config, model);
   read_blank(config, model, blank);
   read_tools(config, model);
-  const ShellState state = make_shell_state(
-      element_count(model.blank.part), config.blank.integration_points, config.blank.thickness);
+  if (!config.blank.parts.empty()) {
+    model.initial.element_thickness = element_thicknesses(model.blank);
+  }
+  const ShellState state = make_blank_shell_state(model.blank, model.initial);
   set_mass_and_time_step(config, model, state);
   check_physical_ranges(config, model);
   set_up_contacts(config, model, state);

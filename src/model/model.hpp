@@ -22,9 +22,19 @@
 namespace sf {
 
 /// The deformable blank: mesh, element description, mass and named node groups.
+/// One part of the blank (a tailor-welded blank has several; element e belongs to part
+/// material_index(part, e)).
+struct BlankPartInfo {
+  std::string name;
+  double thickness = 0.0;  ///< mm, initial
+};
+
 struct Blank {
   PartMesh mesh;
   ShellPart part;
+  /// The blank's parts, in the case's order: part i has material part.materials[i]. One part
+  /// named "blank" for a blank without [[blank.parts]].
+  std::vector<BlankPartInfo> parts;
   /// tonne per node at time 0, after the initial mass scaling (the run's masses, which grow under
   /// mass scaling, are SolutionState::mass)
   VectorX mass;
@@ -156,8 +166,10 @@ struct OutputPlan {
 
 /// The blank's state at time 0 besides its mesh.
 struct InitialConditions {
-  int integration_points = 5;                     ///< through the thickness
-  double thickness = 0.0;                         ///< mm
+  int integration_points = 5;  ///< through the thickness
+  double thickness = 0.0;      ///< mm, the largest part's
+  /// mm per element, initial (each element's part's); empty: `thickness` everywhere
+  std::vector<double> element_thickness;
   std::vector<InitialVelocityConfig> velocities;  ///< in the case's order
 };
 

@@ -99,19 +99,21 @@ double proof_stress(const Material& material) {
       material);
 }
 
-void check_material(const CaseConfig& config, const Model& model, const UnitSystem& u,
-                    Findings& out) {
-  const MaterialConfig& m = config.blank_material();
+// The blank's part `index` (its material and the wave speed at its density).
+void check_material(const CaseConfig& config, const Model& model, std::size_t index,
+                    const UnitSystem& u, Findings& out) {
+  const ShellMaterial& shell = model.blank.part.materials[index];
+  const MaterialConfig& m = config.material_named(config.blank_parts()[index].material);
   const std::string key = "materials." + m.name;
   check_value(key + ".young", m.young, u.stress, kYoungRange, u, out);
   const bool explicit_run = !model.analysis.is_static();
   if (explicit_run) {  // a static analysis does not use the density
     check_value(key + ".density", m.density, u.density(), kDensityRange, u, out);
-    const double c = part_wave_speed(model.blank.part);
+    const double c = material_wave_speed(shell);
     check_value(key + "'s wave speed sqrt(young / (density (1 - poisson^2)))", c, u.velocity(),
                 kWaveSpeedRange, u, out);
   }
-  const double yield = proof_stress(model.blank.part.material);
+  const double yield = proof_stress(shell.law);
   if (yield > 0.0) {
     check_value(key + ".hardening's yield stress at 0.2 % plastic strain", yield, u.stress,
                 kYieldRange, u, out);
@@ -138,8 +140,14 @@ BlankSize measure_blank(const PartMesh& mesh) {
 }
 
 void check_blank(const CaseConfig& config, const Model& model, const UnitSystem& u, Findings& out) {
-  const double t = config.blank.thickness;
-  check_value("blank.thickness", t, u.length, kThicknessRange, u, out);
+  for (std::size_t i = 0; i < config.blank.parts.size(); ++i) {
+    check_value(fmt::format("blank.parts[{}].thickness", i), config.blank.parts[i].thickness,
+                u.length, kThicknessRange, u, out);
+  }
+  const double t = config.blank.thickness;  // the largest part's
+  if (config.blank.parts.empty()) {
+    check_value("blank.thickness", t, u.length, kThicknessRange, u, out);
+  }
   if (config.blank.mesh.element_size > 0.0) {
     check_value("blank.element_size", config.blank.mesh.element_size, u.length, kElementSizeRange,
                 u, out);
@@ -183,7 +191,10 @@ double peak_speed(const MotionConfig& motion) {
 
 void check_tool_speeds(const CaseConfig& config, const Model& model, const UnitSystem& u,
                        Findings& out) {
-  const double c = part_wave_speed(model.blank.part);
+  double c = std::numeric_limits<double>::infinity();  // the slowest part's
+  for (const ShellMaterial& m : model.blank.part.materials) {
+    c = std::min(c, material_wave_speed(m));
+  }
   for (std::size_t i = 0; i < config.tools.size(); ++i) {
     const ToolConfig& tool = config.tools[i];
     if (tool.motion.type != MotionConfig::Type::velocity &&
@@ -224,7 +235,15 @@ std::pair<double, double> range_in_any_units(const PhysicalRange& range) {
 void check_physical_ranges(const CaseConfig& config, const Model& model) {
   const UnitSystem units = parse_unit_system(config.units);
   Findings findings;
-  check_material(config, model, units, findings);
+  const std::vector<BlankPartConfig> parts = config.blank_parts();
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const bool first_use =
+        std::none_of(parts.begin(), parts.begin() + static_cast<long>(i),
+                     [&](const auto& p) { return p.material == parts[i].material; });
+    if (first_use) {  // each material once
+      check_material(config, model, i, units, findings);
+    }
+  }
   check_blank(config, model, units, findings);
   if (!model.analysis.is_static()) {
     check_tool_speeds(config, model, units, findings);

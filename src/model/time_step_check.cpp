@@ -67,13 +67,16 @@ void check_critical_time_step(const CaseConfig& config, const Blank& blank,
   if (usable_step(physical.dt)) {
     return;
   }
-  const double c = part_wave_speed(blank.part);
+  // The limiting element's material (its part's).
+  const int part = physical.element >= 0 ? material_index(blank.part, physical.element) : 0;
+  const double c = material_wave_speed(blank.part.materials[static_cast<std::size_t>(part)]);
   // The element's length L = dt c is a mesh's length whenever c is usable; otherwise (or when
   // L is an ordinary length) the material made the step.
   const double length = physical.dt * c;
   const bool material = !usable_step(c) || usable_step(length);
   if (material) {
-    refuse_wave_speed(config, config.blank_material(), c, physical.dt);
+    const BlankPartConfig p = config.blank_parts()[static_cast<std::size_t>(part)];
+    refuse_wave_speed(config, config.material_named(p.material), c, physical.dt);
   }
   refuse_element(config, physical, c);
 }

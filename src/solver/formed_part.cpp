@@ -161,8 +161,11 @@ void write_section(h5::File& out, int n_points, const std::string& rule, const s
 void write_mesh(h5::File& out, const Model& model) {
   const PartMesh& mesh = model.blank.mesh;
   const std::vector<double> tags(mesh.gmsh_node_tags.begin(), mesh.gmsh_node_tags.end());
-  const std::vector<double> t0(static_cast<std::size_t>(element_count(model.blank.part)),
-                               model.initial.thickness);
+  const std::vector<double> t0 =
+      model.initial.element_thickness.empty()
+          ? std::vector<double>(static_cast<std::size_t>(element_count(model.blank.part)),
+                                model.initial.thickness)
+          : model.initial.element_thickness;
   std::map<std::string, std::vector<int>> groups;
   for (const NodeGroup& g : model.blank.groups) {
     groups[g.name] = g.nodes;
@@ -189,6 +192,14 @@ std::string material_law_kind(const Material& material) {
       material);
 }
 
+std::string material_law_kinds(const ShellPart& part) {
+  std::string kinds;
+  for (const ShellMaterial& m : part.materials) {
+    kinds += (kinds.empty() ? "" : ", ") + material_law_kind(m.law);
+  }
+  return kinds;
+}
+
 void write_formed_part(const std::filesystem::path& file, const Model& model,
                        const SolutionState& state) {
   write_hdf5_atomically(file, "formed part", [&](h5::File& out) {
@@ -198,7 +209,7 @@ void write_formed_part(const std::filesystem::path& file, const Model& model,
     write_section(out, part.section.n_points,
                   std::string(choice_name<ThroughThicknessRule>(kThroughThicknessRuleNames,
                                                                 part.section.rule)),
-                  material_law_kind(part.material));
+                  material_law_kinds(part));
     FieldWriter writer(out, state.shell.n_elements);
     visit_state_fields_with(field_role::formed_part, writer, state);
     for (std::size_t t = 0; t < model.tools.size(); ++t) {
@@ -441,9 +452,9 @@ void check_same_blank(const FormedPart& part, const Model& model) {
     refuse(fmt::format("{} {} points through the thickness; the case's blank has {} {}",
                        part.n_points, part.rule, shell.section.n_points, rule));
   }
-  if (part.law != material_law_kind(shell.material)) {
+  if (part.law != material_law_kinds(shell)) {
     refuse(fmt::format("material law {}; the case's blank has {}", part.law,
-                       material_law_kind(shell.material)));
+                       material_law_kinds(shell)));
   }
 }
 

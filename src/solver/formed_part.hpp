@@ -94,5 +94,7 @@ std::vector<std::string> apply_formed_part(const FormedPart& part, const Model& 
 
 /// The kind of the model's material law, as the formed part records it.
 std::string material_law_kind(const Material& material);
+/// The kinds of the part's materials, one per material in order, joined by ", ".
+std::string material_law_kinds(const ShellPart& part);
 
 }  // namespace sf

@@ -221,6 +221,13 @@ void FrameOutput::write_frame(const Model& model, const SolutionState& s) {
   };
   visit_state_fields(add_state_field, s);
   blank.fields.push_back({"plastic_strain", FieldCenter::cell, 1, plastic_strain_.data()});
+  if (model.blank.parts.size() > 1) {  // a tailor-welded blank: each element's part
+    part_index_.resize(s.shell.n_elements);
+    for (int e = 0; e < s.shell.n_elements; ++e) {
+      part_index_[e] = material_index(model.blank.part, e);
+    }
+    blank.fields.push_back({"part", FieldCenter::cell, 1, part_index_.data()});
+  }
   if (has_springback_field_) {
     if (springback_reference_.cols() > 0) {
       springback_displacement_ = s.x - springback_reference_;

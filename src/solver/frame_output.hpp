@@ -90,6 +90,7 @@ class FrameOutput {
   Matrix3X springback_reference_;     ///< mm, x_formed (empty until set)
   Matrix3X springback_displacement_;  ///< mm
   VectorX plastic_strain_;
+  VectorX part_index_;          ///< per element, its part (index into Blank::parts), as a double
   VectorX added_mass_percent_;  ///< per element, written when mass scaling is on
   Eigen::Matrix<double, 6, Eigen::Dynamic> stress_mid_, stress_top_, stress_bottom_;
   /// MPa, the back stresses of a law with kinematic hardening at the outer points (else unused).

@@ -1,6 +1,7 @@
 #include "solver/initial_state.hpp"
 
 #include "element/shell_directors.hpp"
+#include "model/blank_parts.hpp"
 #include "solver/energy_balance.hpp"
 
 namespace sf {
@@ -23,9 +24,7 @@ SolutionState make_initial_state(const Model& model) {
     s.mass_before = s.mass;
     s.inertia_before = s.rotational_inertia;
   }
-  s.shell = make_shell_state(element_count(model.blank.part), model.initial.integration_points,
-                             model.initial.thickness);
-  size_shell_state_for_material(s.shell, model.blank.part.material);
+  s.shell = make_blank_shell_state(model.blank, model.initial);
   initialize_directors(model.blank.part, model.blank.mesh.nodes, s.shell);
   s.tools.resize(model.tools.size());
   s.contacts.resize(model.contacts.size());

@@ -158,8 +158,8 @@ void print_criterion(const Material& material) {
   }
 }
 
-void print_material(const CaseConfig& config, const Material& material, const UnitSystem& units) {
-  const MaterialConfig& m = config.blank_material();
+void print_material(const CaseConfig& config, const MaterialConfig& m, const Material& material,
+                    const UnitSystem& units) {
   using Type = MaterialConfig::Type;
   using Law = HardeningConfig::Law;
   std::string law = "elastic";
@@ -502,11 +502,35 @@ void print_model(const CaseConfig& config, const Model& model) {
            units.length, units.time, units.mass, units.force, units.stress);
   print_analysis(config);
   const Blank& blank = model.blank;
-  log_info("Blank       {} nodes, {} elements, t = {} {}, material '{}'\n", blank.mesh.nodes.cols(),
-           element_count(blank.part), config.blank.thickness, units.length, config.blank.material);
+  const std::vector<BlankPartConfig> parts = config.blank_parts();
+  if (config.blank.parts.empty()) {
+    log_info("Blank       {} nodes, {} elements, t = {} {}, material '{}'\n",
+             blank.mesh.nodes.cols(), element_count(blank.part), config.blank.thickness,
+             units.length, config.blank.material);
+  } else {
+    log_info("Blank       {} nodes, {} elements, {} parts joined along shared nodes\n",
+             blank.mesh.nodes.cols(), element_count(blank.part), parts.size());
+    std::vector<int> elements(parts.size(), 0);
+    for (int e = 0; e < element_count(blank.part); ++e) {
+      ++elements[static_cast<std::size_t>(material_index(blank.part, e))];
+    }
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      log_info("  part      '{}': group '{}', {} elements, t = {} {}, material '{}'\n",
+               parts[i].name, parts[i].group, elements[i], parts[i].thickness, units.length,
+               parts[i].material);
+    }
+  }
   log_info("Elements    {}\n", describe_shell_formulation(blank.part, is_static(config)));
   print_mesh_parameters(config);
-  print_material(config, blank.part.material, units);
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const bool first_use =
+        std::none_of(parts.begin(), parts.begin() + static_cast<long>(i),
+                     [&](const auto& p) { return p.material == parts[i].material; });
+    if (first_use) {
+      print_material(config, config.material_named(parts[i].material), blank.part.materials[i].law,
+                     units);
+    }
+  }
   if (!is_static(config)) {
     print_mass(model, units);
   }

@@ -8,6 +8,7 @@
 
 #include "core/errors.hpp"
 #include "core/log.hpp"
+#include "model/blank_parts.hpp"
 
 namespace sf {
 
@@ -37,20 +38,21 @@ InitialPenetration find_penetration(const Model& model, const ContactInterface& 
   const Tool& tool = model.tools[static_cast<std::size_t>(contact.tool)];
   p.tool = tool.name;
   const ToolPlacement at_start = tool.motion.placement(0.0);
-  const double h = 0.5 * model.initial.thickness;
+  const VectorX h = initial_half_thickness(model.blank, model.initial);  // mm per node
   const Matrix3X& x = model.blank.mesh.nodes;
   ClosestPoint cp;
   for (Eigen::Index i = 0; i < x.cols(); ++i) {
     contact.pair.search->find_closest(
         at_start.rotation.transpose() * (x.col(i) - at_start.translation), contact.pair.cutoff, cp);
-    const double depth = cp.triangle >= 0 ? h - cp.signed_distance : 0.0;
+    const double depth = cp.triangle >= 0 ? h[i] - cp.signed_distance : 0.0;
     // Below a millionth of the thickness is the round-off of a blank resting on a tool.
-    if (depth > 1e-6 * model.initial.thickness) {
+    if (depth > 2e-6 * h[i]) {
       ++p.nodes;
       if (depth > p.depth) {
         p.depth = depth;
         p.deepest_node = static_cast<int>(i);
         p.position = x.col(i);
+        p.thickness = 2.0 * h[i];
       }
     }
   }
@@ -108,7 +110,7 @@ void print_run_estimate(const RunEstimate& e, const Model& model) {
         "Start       '{}' penetrates the blank at {} node{}: deepest node {} at ({:.4g}, {:.4g}, "
         "{:.4g}) by {:.4g} mm ({:.1f} % of the thickness)\n",
         p.tool, p.nodes, p.nodes == 1 ? "" : "s", p.deepest_node, p.position.x(), p.position.y(),
-        p.position.z(), p.depth, 100.0 * p.depth / model.initial.thickness);
+        p.position.z(), p.depth, 100.0 * p.depth / p.thickness);
   }
 }
 
@@ -155,13 +157,13 @@ void enforce_run_limits(const CaseConfig& config, const RunEstimate& e) {
            "give a larger element_size");
   }
   for (const InitialPenetration& p : e.penetrations) {
-    const double limit = l.max_initial_penetration * config.blank.thickness;
+    const double limit = l.max_initial_penetration * p.thickness;
     if (p.nodes > 0 && p.depth > limit) {
       refuse(
           fmt::format("tool '{}' penetrates the blank at the start at {} nodes, node {} at "
                       "({:.4g}, {:.4g}, {:.4g}) by {:.4g} mm ({:.1f} % of the thickness)",
                       p.tool, p.nodes, p.deepest_node, p.position.x(), p.position.y(),
-                      p.position.z(), p.depth, 100.0 * p.depth / config.blank.thickness),
+                      p.position.z(), p.depth, 100.0 * p.depth / p.thickness),
           fmt::format("max_initial_penetration = {:g} of the thickness", l.max_initial_penetration),
           "move the tool clear of the blank (its position, or the blank's offset)");
     }

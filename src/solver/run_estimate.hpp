@@ -19,6 +19,7 @@ struct InitialPenetration {
   int deepest_node = -1;         ///< the blank node that penetrates most (-1: none)
   double depth = 0.0;            ///< mm, half thickness - signed distance at that node
   Vec3 position = Vec3::Zero();  ///< mm, that node's coordinates
+  double thickness = 0.0;        ///< mm, the blank's thickness at that node
 };
 
 struct RunEstimate {

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <numbers>
 
@@ -104,6 +105,33 @@ void set_per_unit_costs(RunSummary& r, const PhaseTimes& t, double element_cycle
   }
 }
 
+// Each part's thinning and plastic strain (a blank of several parts; none for one part).
+std::vector<PartSummary> summarise_parts(const Model& model, const SolutionState& s) {
+  std::vector<PartSummary> parts;
+  if (model.blank.parts.size() < 2) {
+    return parts;
+  }
+  for (const BlankPartInfo& p : model.blank.parts) {
+    parts.push_back({.name = p.name,
+                     .initial_thickness = p.thickness,
+                     .min_thickness = std::numeric_limits<double>::infinity(),
+                     .max_thinning = 0.0,
+                     .max_plastic_strain = 0.0});
+  }
+  const auto n_points = static_cast<std::size_t>(s.shell.n_points);
+  for (int e = 0; e < s.shell.n_elements; ++e) {
+    PartSummary& p = parts[static_cast<std::size_t>(material_index(model.blank.part, e))];
+    const double t = s.shell.thickness[static_cast<std::size_t>(e)];
+    p.min_thickness = std::min(p.min_thickness, t);
+    p.max_thinning = std::max(p.max_thinning, 1.0 - t / p.initial_thickness);
+    for (std::size_t k = 0; k < n_points; ++k) {
+      p.max_plastic_strain =
+          std::max(p.max_plastic_strain, s.shell.eps_p[static_cast<std::size_t>(e) * n_points + k]);
+    }
+  }
+  return parts;
+}
+
 RunSummary make_run_summary(const Model& model, const SolutionState& s, double wall_seconds) {
   RunSummary r;
   r.units = model.output.units;
@@ -128,6 +156,7 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
   r.min_thickness = *tmin;
   r.max_thickness = *tmax;
   r.max_plastic_strain = *std::max_element(s.shell.eps_p.begin(), s.shell.eps_p.end());
+  r.parts = summarise_parts(model, s);
   for (std::size_t t = 0; t < model.tools.size(); ++t) {
     ToolSummary ts;
     ts.name = model.tools[t].name;
@@ -344,6 +373,13 @@ std::string format_run_summary(const RunSummary& r) {
   add(fmt::format("  thickness           {:.4f} to {:.4f} {}", r.min_thickness, r.max_thickness,
                   u.length));
   add(fmt::format("  max plastic strain  {:.4f}", r.max_plastic_strain));
+  for (const PartSummary& p : r.parts) {
+    add(
+        fmt::format("  part {:<14} t0 {:.4f} {}, min {:.4f} {} (thinning {:.1f} %), max plastic "
+                    "strain {:.4f}",
+                    p.name, p.initial_thickness, u.length, p.min_thickness, u.length,
+                    100.0 * p.max_thinning, p.max_plastic_strain));
+  }
   for (const ToolSummary& t : r.tools) {
     add(fmt::format("  tool {:<14} travel {:8.3f} {}, force {:10.1f} {}, peak {:10.1f} {}{}",
                     t.name, t.travel, u.length, t.final_force, u.force, t.peak_force, u.force,
@@ -457,6 +493,12 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
   j["min_thickness_mm"] = r.min_thickness;
   j["max_thickness_mm"] = r.max_thickness;
   j["max_plastic_strain"] = r.max_plastic_strain;
+  for (const PartSummary& p : r.parts) {
+    j["parts"][p.name] = {{"initial_thickness_mm", p.initial_thickness},
+                          {"min_thickness_mm", p.min_thickness},
+                          {"max_thinning_percent", 100.0 * p.max_thinning},
+                          {"max_plastic_strain", p.max_plastic_strain}};
+  }
   for (const ToolSummary& t : r.tools) {
     j["tools"][t.name] = {{"travel_mm", t.travel},
                           {"speed_mm_s", t.speed},

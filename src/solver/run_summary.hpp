@@ -61,6 +61,15 @@ struct HistoryGroupResult {
   GroupMeasures values;           ///< mean motion and summed reaction (group_history.hpp)
 };
 
+/// One part of a blank of several at the end of the run.
+struct PartSummary {
+  std::string name;
+  double initial_thickness = 0.0;   ///< mm
+  double min_thickness = 0.0;       ///< mm
+  double max_thinning = 0.0;        ///< -, largest 1 - t / t0 of the part's elements
+  double max_plastic_strain = 0.0;  ///< -, over the part's integration points
+};
+
 struct RunSummary {
   long cycles = 0;
   double end_time = 0.0;              ///< s
@@ -94,6 +103,9 @@ struct RunSummary {
   double min_thickness = 0.0;        ///< mm
   double max_thickness = 0.0;        ///< mm
   double max_plastic_strain = 0.0;
+  /// A blank of several parts (a tailor-welded blank): each part's figures, in the case's order;
+  /// empty for a blank of one part.
+  std::vector<PartSummary> parts;
   std::vector<ToolSummary> tools;
   std::vector<DrawInResult> draw_ins;
   std::vector<SearchAuditSummary> search_audits;  ///< filled by the driver when results are written

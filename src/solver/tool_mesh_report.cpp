@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/log.hpp"
+#include "model/blank_parts.hpp"
 
 namespace sf {
 namespace {
@@ -158,13 +159,42 @@ SurfaceApproach approach_at_start(const Tool& tool, const PartMesh& blank) {
   return approach;
 }
 
+// A blank of several thicknesses: the least over its nodes of the distance to the tool less the
+// node's half thickness, as node-on-surface contact sees it, through the tool's contact search
+// (none within its reach: nullopt). The mid-surfaces' approach alone cannot tell which thickness
+// faces the tool.
+std::optional<double> nodal_clearance(const Model& model, std::size_t tool_index,
+                                      const VectorX& half) {
+  const auto contact = std::find_if(
+      model.contacts.begin(), model.contacts.end(),
+      [&](const ContactInterface& c) { return c.tool == static_cast<int>(tool_index); });
+  if (contact == model.contacts.end()) {
+    return std::nullopt;
+  }
+  const ToolPlacement at_start = model.tools[tool_index].motion.placement(0.0);
+  const Matrix3X& x = model.blank.mesh.nodes;
+  std::optional<double> least;
+  ClosestPoint cp;
+  for (Eigen::Index i = 0; i < x.cols(); ++i) {
+    contact->pair.search->find_closest(
+        at_start.rotation.transpose() * (x.col(i) - at_start.translation), contact->pair.cutoff,
+        cp);
+    if (cp.triangle >= 0 && (!least || cp.signed_distance - half[i] < *least)) {
+      least = cp.signed_distance - half[i];
+    }
+  }
+  return least;
+}
+
 }  // namespace
 
 std::vector<ToolMeshReport> diagnose_tool_meshes(const Model& model) {
   std::vector<ToolMeshReport> reports;
   const double thickness = model.initial.thickness;
   const PartMesh& blank = model.blank.mesh;
-  for (const Tool& tool : model.tools) {
+  const VectorX half = initial_half_thickness(model.blank, model.initial);  // mm per node
+  for (std::size_t t = 0; t < model.tools.size(); ++t) {
+    const Tool& tool = model.tools[t];
     using Clock = std::chrono::steady_clock;
     const auto seconds_since = [](Clock::time_point t) {
       return std::chrono::duration<double>(Clock::now() - t).count();
@@ -181,6 +211,9 @@ std::vector<ToolMeshReport> diagnose_tool_meshes(const Model& model) {
     start = Clock::now();
     r.approach = approach_at_start(tool, blank);
     r.clearance = r.approach.distance - 0.5 * thickness;
+    if (!model.initial.element_thickness.empty()) {
+      r.clearance = nodal_clearance(model, t, half).value_or(r.approach.distance - half.minCoeff());
+    }
     r.clearance_seconds = seconds_since(start);
     reports.push_back(std::move(r));
   }

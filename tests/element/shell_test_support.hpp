@@ -17,8 +17,8 @@ inline ShellPart make_part(const QuadConn& quads, const Material& material, int 
   p.formulation = ShellFormulation::belytschko_tsay;  // the element of these tests
   p.quads = quads;
   p.section = make_gauss_section(n_points);
-  p.material = material;
-  p.density = kRho;
+  p.materials[0].law = material;
+  p.materials[0].density = kRho;
   p.hourglass_coefficient = hourglass;
   return p;
 }

@@ -29,8 +29,8 @@ ShellPart make_as_part(const QuadConn& quads, const TriConn& triangles, const Ma
   p.quads = quads;
   p.triangles = triangles;
   p.section = make_gauss_section(n_points);
-  p.material = material;
-  p.density = kRho;
+  p.materials[0].law = material;
+  p.materials[0].density = kRho;
   p.formulation = ShellFormulation::assumed_strain;
   return p;
 }

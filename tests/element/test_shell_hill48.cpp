@@ -151,7 +151,7 @@ TensionResult run_tension(const Material& material, const std::function<double(d
   const Vec3 rd(std::cos(alpha), -std::sin(alpha), 0.0);
   part.material_angle = compute_material_angles(x0, part.quads, part.triangles, rd);
   ShellState st = make_shell_state(1, 5, 1.0);
-  size_shell_state_for_material(st, part.material);
+  size_shell_state_for_material(st, part.materials[0].law);
   Matrix3X x = x0;
   const Vec2 t(std::cos(beta), std::sin(beta));
   const Vec2 n(-t(1), t(0));

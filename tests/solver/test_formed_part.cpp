@@ -154,7 +154,7 @@ TEST(FormedPart, RefusesAnotherVersionAnotherBlankAndOtherFiles) {
       std::string::npos);
   // The same mesh with another law.
   Model j2 = square_cup(0.3, {});
-  j2.blank.part.material = J2PlaneStress{};
+  j2.blank.part.materials[0].law = J2PlaneStress{};
   SolutionState sj = make_initial_state(j2);
   EXPECT_NE(error_of([&] { apply_formed_part(part, j2, sj); }).find("material law hill48"),
             std::string::npos);

@@ -83,7 +83,7 @@ TEST(Hill48Run, TabulatedHill48StripBuildsAndRunsStably) {
   const sf::ShellPart& part = model.blank.part;
 
   // The case keys reach the part.
-  const auto* hill = std::get_if<sf::Hill48PlaneStress>(&part.material);
+  const auto* hill = std::get_if<sf::Hill48PlaneStress>(&part.materials[0].law);
   ASSERT_NE(hill, nullptr);
   EXPECT_EQ(hill->r0, 0.71);
   EXPECT_EQ(hill->r45, 0.58);

@@ -78,7 +78,7 @@ TEST(TimeLoopGuard, AStepOfZeroStopsTheRun) {
       sf::read_case(fs::path(SF_SOURCE_DIR) / "cases/square_cup_aluminium/case.toml");
   config.control.stroke = 1.0;
   sf::Model model = sf::build_model(config);
-  std::visit([](auto& law) { law.E = 1e300; }, model.blank.part.material);
+  std::visit([](auto& law) { law.E = 1e300; }, model.blank.part.materials[0].law);
   model.time.time_step = 0.0;
   sf::RunOptions options;
   options.write_results = false;

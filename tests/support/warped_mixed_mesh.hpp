@@ -3,6 +3,8 @@
 // (threads and ranks must give a serial pass's bits on the geometry users have).
 #include <cmath>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "element/shell_part.hpp"
 
@@ -55,9 +57,32 @@ inline ShellPart make_part(const Mesh& mesh, ShellFormulation formulation) {
   p.quads = mesh.quads;
   p.triangles = mesh.triangles;
   p.section = make_gauss_section(5);
-  p.material = J2PlaneStress{210000.0, 0.3, LinearHardening{200.0, 1000.0}};
-  p.density = 7.85e-9;
+  p.materials[0].law = J2PlaneStress{210000.0, 0.3, LinearHardening{200.0, 1000.0}};
+  p.materials[0].density = 7.85e-9;
   p.hourglass_coefficient = 0.1;
+  return p;
+}
+
+/// The second material of two_material_part: an aluminium that yields earlier.
+inline ShellMaterial second_material() {
+  return {J2PlaneStress{70000.0, 0.33, LinearHardening{120.0, 500.0}}, 2.7e-9};
+}
+
+/// The part of make_part with a second material (a tailor-welded blank's) in runs of 37 quads and
+/// 13 triangles alternating with the first: cut at places that are not the SIMD blocks' edges.
+/// `which` receives each element's material index.
+inline ShellPart two_material_part(const Mesh& mesh, ShellFormulation formulation,
+                                   std::vector<int>* which = nullptr) {
+  ShellPart p = make_part(mesh, formulation);
+  const int n_quads = static_cast<int>(p.quads.cols());
+  std::vector<int> m(static_cast<std::size_t>(element_count(p)));
+  for (int e = 0; e < element_count(p); ++e) {
+    m[static_cast<std::size_t>(e)] = e < n_quads ? (e / 37) % 2 : ((e - n_quads) / 13) % 2;
+  }
+  if (which) {
+    *which = m;
+  }
+  set_element_materials(p, {p.materials[0], second_material()}, std::move(m));
   return p;
 }
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "element/corner_forces.hpp"
 #include "element/shell_directors.hpp"
 #include "element/shell_forces.hpp"
 #include "support/warped_mixed_mesh.hpp"
@@ -123,6 +124,41 @@ TEST_P(ElementPassThreads, ReportsTheLowestFailingElementAtAnyThreadCount) {
   EXPECT_LT(std::stoi(reports[0].substr(14)), 1150) << reports[0];
   EXPECT_EQ(reports[1], reports[0]);
   EXPECT_EQ(reports[2], reports[0]);
+}
+
+// A part of two materials (a tailor-welded blank's), their runs cut at odd places (not at the
+// SIMD blocks' boundaries): each element gets the bits it gets in a part wholly of its material,
+// at every thread count.
+TEST_P(ElementPassThreads, EachElementOfTwoMaterialsAsInAPartOfItsOwn) {
+  const Mesh mesh = make_mesh(50, 30, 7);
+  const ShellPart base = make_part(mesh, GetParam());
+  const int n = element_count(base);
+  const int n_quads = static_cast<int>(base.quads.cols());
+  std::vector<int> which;
+  const ShellPart mixed = test::two_material_part(mesh, GetParam(), &which);
+  ShellPart all_second = base;
+  all_second.materials = {test::second_material()};
+  const PassRun alone[2] = {run_passes(base, mesh.x, 1), run_passes(all_second, mesh.x, 1)};
+  // An element's corner slots (its forces and moments before they are summed at the nodes).
+  const auto corners_of = [n_quads](const std::vector<double>& corners, int e) {
+    const int first =
+        e < n_quads ? quad_corner_slot(e, 0) : triangle_corner_slot(n_quads, e - n_quads, 0);
+    const int count = e < n_quads ? 4 : 3;
+    return std::vector<double>(corners.begin() + static_cast<long>(kCornerWidth) * first,
+                               corners.begin() + static_cast<long>(kCornerWidth) * (first + count));
+  };
+  for (int threads : {1, 2, 3}) {
+    const PassRun run = run_passes(mixed, mesh.x, threads);
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    int differing = 0;
+    for (int e = 0; e < n; ++e) {
+      const PassRun& own = alone[which[static_cast<std::size_t>(e)]];
+      differing += !same_bits(corners_of(run.corners, e), corners_of(own.corners, e)) ||
+                   run.element_dt[static_cast<std::size_t>(e)] !=
+                       own.element_dt[static_cast<std::size_t>(e)];
+    }
+    EXPECT_EQ(differing, 0) << threads << " threads";
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Formulations, ElementPassThreads,
