@@ -83,8 +83,11 @@ void check_material_name(const TomlSection& s, const CaseConfig& config, const s
 }
 
 // [[blank.parts]]: read before the blank's own keys, which depend on whether there are parts.
-void read_blank_parts(const TomlSection& s, const CaseConfig& config, BlankConfig& blank) {
-  for (const TomlSection& p : s.table_array("parts")) {
+// Returns the parts' tables.
+std::vector<TomlSection> read_blank_parts(const TomlSection& s, const CaseConfig& config,
+                                          BlankConfig& blank) {
+  std::vector<TomlSection> tables = s.table_array("parts");
+  for (const TomlSection& p : tables) {
     BlankPartConfig part;
     read_table(p, blank_part_fields(), part);
     part.line = static_cast<int>(p.table().source().begin.line);
@@ -93,7 +96,7 @@ void read_blank_parts(const TomlSection& s, const CaseConfig& config, BlankConfi
       if (other.name == part.name) {
         p.fail_value("name", fmt::format("a name no other part has (\"{}\" is taken)", part.name));
       }
-      if (other.group == part.group) {
+      if (!part.group.empty() && other.group == part.group) {
         p.fail_value("group", fmt::format("a group no other part has (part \"{}\" has \"{}\")",
                                           other.name, part.group));
       }
@@ -105,12 +108,32 @@ void read_blank_parts(const TomlSection& s, const CaseConfig& config, BlankConfi
               "a blank of one part gives its thickness and material in [blank]; expected two or "
               "more [[blank.parts]]");
   }
+  return tables;
+}
+
+// A part's group names its elements in the blank's mesh; a blank that is a formed part's own
+// mesh (no `mesh`) has its elements' parts by name from the formed part.
+void check_blank_part_groups(const std::vector<TomlSection>& tables, const BlankConfig& blank) {
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    const TomlSection& p = tables[i];
+    const bool has_mesh = !blank.mesh.file.empty();
+    if (has_mesh && blank.parts[i].group.empty()) {
+      p.fail_at(p.table(), p.key_path("group"),
+                "missing: a 2-D physical group of the blank's mesh holding the part's elements");
+    }
+    if (!has_mesh && !blank.parts[i].group.empty()) {
+      p.fail_value("group",
+                   "none: the blank is the formed part's own mesh, whose elements are in "
+                   "the part of this name already");
+    }
+  }
 }
 
 void read_blank(const TomlSection& top, const CaseConfig& config, BlankConfig& blank) {
   const TomlSection s = *top.sub_table("blank", Presence::required);
-  read_blank_parts(s, config, blank);
+  const std::vector<TomlSection> part_tables = read_blank_parts(s, config, blank);
   read_table(s, blank_fields(), blank, {"parts"});
+  check_blank_part_groups(part_tables, blank);
   if (blank.parts.empty()) {
     check_material_name(s, config, blank.material);
     return;
@@ -312,6 +335,14 @@ const MaterialConfig& CaseConfig::blank_material() const {
         file.string(), blank.parts.size()));
   }
   return material_named(blank.material);
+}
+
+double CaseConfig::largest_blank_thickness() const {
+  double largest = 0.0;
+  for (const BlankPartConfig& p : blank_parts()) {
+    largest = std::max(largest, p.thickness);
+  }
+  return largest;
 }
 
 const MaterialConfig& CaseConfig::material_named(const std::string& name) const {

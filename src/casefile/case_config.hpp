@@ -552,6 +552,8 @@ struct CaseConfig {
   /// The blank's parts: blank.parts, or the one part a blank without them is (named "blank", the
   /// whole mesh, blank.thickness, blank.material).
   std::vector<BlankPartConfig> blank_parts() const;
+  /// mm: the blank's thickness, or its thickest part's for a blank of several parts.
+  double largest_blank_thickness() const;
   /// The material of this name (InputError naming the case file if there is none).
   const MaterialConfig& material_named(const std::string& name) const;
   /// The tool with this name, or nullptr.

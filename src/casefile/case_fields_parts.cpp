@@ -263,11 +263,14 @@ FieldTable<BlankPartConfig> make_blank_part_fields() {
                             "unique among the parts; names the part in the banner, the summary "
                             "and the results' `part` field")
                   .required());
-  t.push_back(string_field<P>("group", &P::group,
-                              "a 2-D physical group of the blank's mesh: the part's elements. "
-                              "Every element of the blank is in exactly one part; the parts "
-                              "share the nodes of their weld lines")
-                  .required());
+  Field<P> group = string_field<P>("group", &P::group,
+                                   "a 2-D physical group of the blank's mesh: the part's elements. "
+                                   "Every element of the blank is in exactly one part; the parts "
+                                   "share the nodes of their weld lines. A blank that is a formed "
+                                   "part's own mesh (`formed_part` without `mesh`) has none: its "
+                                   "elements are in the formed part's part of this `name`");
+  group.doc.default_text = "required with the blank's `mesh`";
+  t.push_back(std::move(group));
   t.push_back(number_field<P>("thickness", &P::thickness, greater_than(0.0, "mm")).required());
   t.push_back(string_field<P>("material", &P::material, "the name of a `[materials.NAME]` table")
                   .required());

@@ -146,14 +146,10 @@ void size_shell_state_for_material(ShellState& state, const Material& material) 
                            0.0);
 }
 
-namespace {
-
 int back_stress_count(const Material& material) {
   const auto* law = std::get_if<GeneralPlasticity>(&material);
   return law ? law->kinematic.count : 0;
 }
-
-}  // namespace
 
 int material_run_end(const ShellPart& part, int begin, int end) {
   if (part.element_material.empty()) {

@@ -157,8 +157,12 @@ void for_each_material_run(const ShellPart& part, int begin, int end, const Piec
 void set_element_materials(ShellPart& part, std::vector<ShellMaterial> materials,
                            std::vector<int> element_material);
 
+/// The number of back stresses (kinematic hardening terms) the law keeps per point.
+int back_stress_count(const Material& material);
+
 /// Sizes the materials' own per-point arrays of `state` (see size_shell_state_for_material) for
-/// a part of several materials: the back stresses of the law with the most of them.
+/// a part of several materials, which must keep the same number of back stresses
+/// (std::invalid_argument otherwise; build_model refuses such parts first).
 void size_shell_state_for_part(ShellState& state, const ShellPart& part);
 
 }  // namespace sf

@@ -1,6 +1,7 @@
 #include "model/blank_parts.hpp"
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <numeric>
@@ -131,6 +132,54 @@ std::vector<int> sort_blank_by_part(const GmshModel& model,
     element_part[to] = part_of[static_cast<std::size_t>(e)];
   }
   return element_part;
+}
+
+std::vector<int> parts_by_name(const std::vector<std::string>& names,
+                               const std::vector<int>& element_part,
+                               const std::vector<BlankPartConfig>& parts,
+                               const std::string& case_file, const std::string& source) {
+  std::string case_names;
+  for (const BlankPartConfig& p : parts) {
+    case_names += (case_names.empty() ? "" : ", ") + p.name;
+  }
+  const std::string part_names = fmt::format("{}", fmt::join(names, ", "));
+  if (names.empty() && !parts.empty()) {
+    throw InputError(fmt::format(
+        "{}: blank.parts: the formed part {} is a blank of one part; expected a blank of one part "
+        "([blank] thickness and material, no [[blank.parts]]) to start from it",
+        case_file, source));
+  }
+  if (!names.empty() && parts.empty()) {
+    throw InputError(fmt::format(
+        "{}: [blank]: the formed part {} is a blank of parts {}; expected a [[blank.parts]] for "
+        "each, of its name, with its thickness and material",
+        case_file, source, part_names));
+  }
+  std::vector<int> case_part(names.size());
+  for (std::size_t p = 0; p < names.size(); ++p) {
+    const auto found = std::find_if(parts.begin(), parts.end(),
+                                    [&](const BlankPartConfig& c) { return c.name == names[p]; });
+    if (found == parts.end()) {
+      throw InputError(fmt::format(
+          "{}: blank.parts: the formed part {} has a part '{}' the case does not name; expected a "
+          "[[blank.parts]] named '{}' (the case's parts: {})",
+          case_file, source, names[p], names[p], case_names));
+    }
+    case_part[p] = static_cast<int>(found - parts.begin());
+  }
+  for (const BlankPartConfig& c : parts) {
+    if (std::find(names.begin(), names.end(), c.name) == names.end()) {
+      throw InputError(fmt::format(
+          "{}:{}: blank.parts ('{}'): the formed part {} has no part of this name; expected one "
+          "of its parts: {}",
+          case_file, c.line, c.name, source, part_names));
+    }
+  }
+  std::vector<int> out(element_part.size());
+  for (std::size_t e = 0; e < out.size(); ++e) {
+    out[e] = case_part[static_cast<std::size_t>(element_part[e])];
+  }
+  return out;
 }
 
 std::vector<double> element_thicknesses(const Blank& blank) {

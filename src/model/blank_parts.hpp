@@ -21,6 +21,16 @@ std::vector<int> sort_blank_by_part(const GmshModel& model,
                                     const std::vector<BlankPartConfig>& parts,
                                     const std::string& case_file, PartMesh& mesh);
 
+/// Each element's part for a blank given with its parts' labels (a formed part's mesh, read from
+/// `source`): `element_part` indexes `names`; the result indexes `parts`, the case's parts of
+/// those names (in any order). Empty for a blank of one part (no names and no parts).
+/// InputError naming the case file `case_file` and `source` when the case's parts are not the
+/// formed part's: a name one has and the other not, or parts on one side only.
+std::vector<int> parts_by_name(const std::vector<std::string>& names,
+                               const std::vector<int>& element_part,
+                               const std::vector<BlankPartConfig>& parts,
+                               const std::string& case_file, const std::string& source);
+
 /// Each element's initial thickness (mm): its part's.
 std::vector<double> element_thicknesses(const Blank& blank);
 

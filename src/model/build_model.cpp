@@ -180,16 +180,16 @@ void set_blank_materials(const CaseConfig& config, std::vector<int> element_part
     blank.part.element_material.clear();
     return;
   }
-  set_element_materials(blank.part, std::move(materials), std::move(element_part));
-  try {
-    ShellState probe;
-    size_shell_state_for_part(probe, blank.part);
-  } catch (const std::invalid_argument&) {
+  const int back_stresses = back_stress_count(materials.front().law);
+  if (std::any_of(materials.begin(), materials.end(), [&](const ShellMaterial& m) {
+        return back_stress_count(m.law) != back_stresses;
+      })) {
     throw InputError(
         fmt::format("{}: blank.parts: the parts' materials keep different numbers of back stresses "
                     "(kinematic hardening); expected the same number in every part's material",
                     config.file.string()));
   }
+  set_element_materials(blank.part, std::move(materials), std::move(element_part));
 }
 
 void read_blank(const CaseConfig& config, Model& model, const BlankMesh* given) {
@@ -214,22 +214,10 @@ void read_blank(const CaseConfig& config, Model& model, const BlankMesh* given) 
                                  bc.mesh.file.string(), bc.mesh.group));
   }
   std::vector<int> element_part;
-  if (!bc.parts.empty()) {
-    if (!gmsh_model) {  // the blank is a formed part's mesh
-      throw InputError(fmt::format(
-          "{}: [[blank.parts]] with blank.formed_part: a formed part does not carry its "
-          "elements' parts yet; expected a blank of one part to start from a formed part",
-          config.file.string()));
-    }
-    const bool trims =
-        std::any_of(config.operations.begin(), config.operations.end(),
-                    [](const auto& o) { return o.kind == OperationConfig::Kind::trim; });
-    if (trims) {
-      throw InputError(fmt::format(
-          "{}: a blank of several parts ([[blank.parts]]) cannot be trimmed yet (the formed part "
-          "does not carry the elements' parts); expected no trim operation",
-          config.file.string()));
-    }
+  if (given) {  // a formed part's mesh: its elements' parts by name
+    element_part = parts_by_name(given->part_names, given->element_part, bc.parts,
+                                 config.file.string(), given->source);
+  } else if (!bc.parts.empty()) {
     element_part = sort_blank_by_part(*gmsh_model, bc.parts, config.file.string(), blank.mesh);
   }
   // Every node group the case names, read once, with the entry that first names it (a missing
@@ -351,11 +339,12 @@ void read_blank(const CaseConfig& config, Model& model, const BlankMesh* given) 
 }
 
 // position = "touch": moves the tool's mesh along its motion's direction d until it touches the
-// blank: its surface half the blank's thickness from the blank's mid-surface (quads split in two
+// blank: its surface each node's half thickness from the blank's mid-surface (quads split in two
 // triangles) along d. Returns the distance moved (mm; negative: moved back along -d).
-double move_to_touch(const CaseConfig& config, std::size_t index, const Blank& blank,
+double move_to_touch(const CaseConfig& config, std::size_t index, const Model& model,
                      PartMesh& mesh) {
   const ToolConfig& tc = config.tools[index];
+  const Blank& blank = model.blank;
   const Vec3 d =
       Vec3(tc.motion.direction[0], tc.motion.direction[1], tc.motion.direction[2]).normalized();
   TriConn blank_triangles(3, 2 * blank.mesh.quads.cols() + blank.mesh.triangles.cols());
@@ -368,8 +357,17 @@ double move_to_touch(const CaseConfig& config, std::size_t index, const Blank& b
   for (Eigen::Index e = 0; e < blank.mesh.triangles.cols(); ++e) {
     blank_triangles.col(k++) = blank.mesh.triangles.col(e);
   }
+  // The sheet's surface facing the tool less the thinnest half thickness: the mid-surface moved
+  // toward the tool by what each node's half thickness exceeds the least (nothing for a blank of
+  // one thickness).
+  const VectorX half = initial_half_thickness(blank, model.initial);
+  const double least_half = half.minCoeff();
+  Matrix3X surface = blank.mesh.nodes;
+  for (Eigen::Index i = 0; i < surface.cols(); ++i) {
+    surface.col(i) -= (half[i] - least_half) * d;
+  }
   const TriangleSurface moving(tc.name, mesh.nodes, mesh.triangles);
-  const TriangleSurface sheet("blank", blank.mesh.nodes, blank_triangles);
+  const TriangleSurface sheet("blank", surface, blank_triangles);
   const std::optional<double> clearance = clearance_along(moving, sheet, d);
   if (!clearance) {
     throw InputError(fmt::format(
@@ -377,7 +375,7 @@ double move_to_touch(const CaseConfig& config, std::size_t index, const Blank& b
         "meets the blank; check the motion's direction, or give position = \"as_meshed\"",
         config.file.string(), index, tc.name, d.x(), d.y(), d.z()));
   }
-  const double shift = *clearance - 0.5 * config.blank.thickness;
+  const double shift = *clearance - least_half;
   mesh.nodes.colwise() += shift * d;
   return shift;
 }
@@ -397,14 +395,7 @@ void read_tools(const CaseConfig& config, Model& model) {
                       tc.mesh.file.string(), tc.name, tc.mesh.group));
     }
     if (tc.position == ToolConfig::Position::touch) {
-      if (!config.blank.parts.empty()) {
-        throw InputError(fmt::format(
-            "{}: tools[{}].position = \"touch\" ('{}'): a blank of several parts has several "
-            "thicknesses, and placing a tool to touch it is not supported yet; expected the "
-            "tool placed by its mesh (position = \"as_meshed\")",
-            config.file.string(), t, tc.name));
-      }
-      tool.touch_shift = move_to_touch(config, t, model.blank, tool.mesh);
+      tool.touch_shift = move_to_touch(config, t, model, tool.mesh);
     }
     tool.surface = TriangleSurface(tc.name, tool.mesh.nodes, tool.mesh.triangles);
     tool.orientation = orient_surface(tool.surface, model.blank.mesh.nodes);
@@ -590,7 +581,7 @@ void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& s
     contact.pair.friction.dynamic_coefficient = cc.friction_dynamic;
     contact.pair.friction.decay = cc.friction_decay;
     // Nodes farther than this from the tool cannot touch it within one step.
-    contact.pair.cutoff = 2.0 * config.blank.thickness;
+    contact.pair.cutoff = 2.0 * config.largest_blank_thickness();
     model.contacts.push_back(std::move(contact));
   }
 }
@@ -733,7 +724,7 @@ std::vector<ReactionEntry> make_reaction_entries(const CaseConfig& config) {
 void copy_plans(const CaseConfig& config, Model& model) {
   model.case_file = config.file;
   model.initial.integration_points = config.blank.integration_points;
-  model.initial.thickness = config.blank.thickness;
+  model.initial.thickness = config.largest_blank_thickness();
   model.initial.velocities = config.initial_velocities;
   TimeControl& time = model.time;
   time.progress_interval = config.control.progress_interval;
@@ -781,10 +772,10 @@ Model build_model(const CaseConfig& config, const BlankMesh* blank) {
   Model model;
   copy_plans(config, model);
   read_blank(config, model, blank);
-  read_tools(config, model);
   if (!config.blank.parts.empty()) {
     model.initial.element_thickness = element_thicknesses(model.blank);
   }
+  read_tools(config, model);
   const ShellState state = make_blank_shell_state(model.blank, model.initial);
   set_mass_and_time_step(config, model, state);
   check_physical_ranges(config, model);

@@ -9,6 +9,10 @@ namespace sf {
 struct BlankMesh {
   PartMesh mesh;
   std::vector<NodeGroup> groups;
+  /// A blank of several parts: their names, and each element's index into them (both empty for
+  /// a blank of one part). The case's [[blank.parts]] of these names give their materials.
+  std::vector<std::string> part_names;
+  std::vector<int> element_part;
   std::string source;  ///< where it came from, for messages (the formed part's file)
 };
 

@@ -144,7 +144,7 @@ void check_blank(const CaseConfig& config, const Model& model, const UnitSystem&
     check_value(fmt::format("blank.parts[{}].thickness", i), config.blank.parts[i].thickness,
                 u.length, kThicknessRange, u, out);
   }
-  const double t = config.blank.thickness;  // the largest part's
+  const double t = config.largest_blank_thickness();
   if (config.blank.parts.empty()) {
     check_value("blank.thickness", t, u.length, kThicknessRange, u, out);
   }

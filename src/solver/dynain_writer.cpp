@@ -120,14 +120,31 @@ void write_nodes(std::ostream& out, const PartShell& p) {
   }
 }
 
-void write_elements(std::ostream& out, const PartShell& p) {
+// The element's part id: 1, or for a blank of several parts its part's index plus one.
+int part_id(const FormedPart& part, int e) {
+  return part.element_part.empty() ? 1 : part.element_part[static_cast<std::size_t>(e)] + 1;
+}
+
+// The header's lines naming the parts (each on its own line, within the 80 columns).
+std::string parts_comment(const FormedPart& part) {
+  if (part.part_names.empty()) {
+    return "$ Part 1";
+  }
+  std::string text = "$ Parts by pid:";
+  for (std::size_t p = 0; p < part.part_names.size(); ++p) {
+    text += fmt::format("\n$   {} = {}", p + 1, part.part_names[p]);
+  }
+  return text + "\n$ Parts";
+}
+
+void write_elements(std::ostream& out, const FormedPart& part, const PartShell& p) {
   out << "*ELEMENT_SHELL_THICKNESS\n"
          "$#   eid     pid      n1      n2      n3      n4      n5      n6      n7      n8\n"
          "$#         thic1           thic2           thic3           thic4            beta\n";
   for (int e = 0; e < p.state.n_elements; ++e) {
     const std::array<int, 4> n = element_nodes(p, e);
-    out << fmt::format("{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}\n", e + 1, 1, n[0], n[1],
-                       n[2], n[3], 0, 0, 0, 0);
+    out << fmt::format("{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}\n", e + 1,
+                       part_id(part, e), n[0], n[1], n[2], n[3], 0, 0, 0, 0);
     const std::string t = keyword_real(p.state.thickness[static_cast<std::size_t>(e)], 16);
     out << t << t << t << t << keyword_real(0.0, 16) << '\n';
   }
@@ -204,9 +221,9 @@ void write_dynain(const FormedPart& part, const std::filesystem::path& file) {
         << "$ plastic strain). *INITIAL_STRAIN_SHELL: logarithmic strains of the bottom\n"
         << "$ (t = -1) and top (t = +1) surfaces, global tensor components (epsxy is half\n"
         << "$ the engineering shear), measured from the reference and current shape.\n"
-        << "$ Part 1; material axes not written (beta = 0).\n";
+        << parts_comment(part) << "; material axes not written (beta = 0).\n";
     write_nodes(out, p);
-    write_elements(out, p);
+    write_elements(out, part, p);
     write_stresses(out, p);
     write_strains(out, part, p);
     out << "*END\n";

@@ -5,8 +5,10 @@
 // through-thickness point: its position, the stress in global components and the equivalent
 // plastic strain) and *INITIAL_STRAIN_SHELL (the logarithmic strains of the bottom and top
 // surfaces, element/shell_surface_strain.hpp), in the fixed-width fields of the LS-DYNA keyword
-// manual (LARGE = 0). Node and element numbers are the part's indices plus one; part 1. Units are
-// the part's (mm, tonne, s; N, MPa), said in the file's header comment.
+// manual (LARGE = 0). Node and element numbers are the part's indices plus one; the part id is 1,
+// or for a blank of several parts each part's index plus one, named in the header comment (the
+// crash deck's *PART cards give them sections and materials). Units are the part's (mm, tonne, s;
+// N, MPa), said in the file's header comment.
 #include <filesystem>
 #include <string>
 

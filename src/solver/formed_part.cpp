@@ -1,6 +1,7 @@
 #include "solver/formed_part.hpp"
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,7 +23,8 @@ namespace {
 
 constexpr const char* kFormat = "sheetform formed part";
 // 2: the tools' turns (rotation, angle, moment); a format 1 part's tools have not turned.
-constexpr int kFormatVersion = 2;
+// 3: the blank's parts (/mesh/element_part, /mesh/parts); a format 1 or 2 part is of one part.
+constexpr int kFormatVersion = 3;
 constexpr const char* kUnits = "mm, tonne, s; N, MPa, N mm";
 
 const char* place_name(FieldPlace place) {
@@ -133,6 +135,20 @@ void write_header(h5::File& out) {
   out.write_attribute("/", "units", std::string(kUnits));
 }
 
+// The parts of a blank of several: each element's part, and each part's name.
+void write_parts(h5::File& out, const std::vector<std::string>& names,
+                 std::span<const int> element_part) {
+  if (names.empty()) {
+    return;
+  }
+  out.write("/mesh/element_part", element_part, {element_part.size()});
+  for (std::size_t p = 0; p < names.size(); ++p) {
+    const std::string path = "/mesh/parts/" + std::to_string(p);
+    out.create_group(path);
+    out.write_attribute(path, "name", names[p]);
+  }
+}
+
 void write_mesh(h5::File& out, const Matrix3X& nodes, std::span<const double> tags,
                 const QuadConn& quads, const TriConn& triangles,
                 std::span<const double> initial_thickness,
@@ -171,6 +187,13 @@ void write_mesh(h5::File& out, const Model& model) {
     groups[g.name] = g.nodes;
   }
   write_mesh(out, mesh.nodes, tags, mesh.quads, mesh.triangles, t0, groups);
+  if (model.blank.parts.size() > 1) {
+    std::vector<std::string> names;
+    for (const BlankPartInfo& p : model.blank.parts) {
+      names.push_back(p.name);
+    }
+    write_parts(out, names, model.blank.part.element_material);
+  }
 }
 
 }  // namespace
@@ -229,6 +252,7 @@ void write_formed_part(const std::filesystem::path& file, const FormedPart& part
     write_header(out);
     write_mesh(out, part.reference_nodes, part.node_tags, part.quads, part.triangles,
                part.initial_thickness, part.groups);
+    write_parts(out, part.part_names, part.element_part);
     write_section(out, part.n_points, part.rule, part.law);
     std::string left_out;
     for (const auto& [key, field] : expected_fields(part.tools.size(), part.contact_tools.size())) {
@@ -325,6 +349,26 @@ Conn read_connectivity(const PartReader& r, const std::string& path, int nodes_p
   return conn;
 }
 
+// The parts of a blank of several (format 3; none: a blank of one part).
+void read_parts(const h5::File& in, const PartReader& r, std::size_t n_elements, FormedPart& part) {
+  if (!in.exists("/mesh/parts")) {
+    return;
+  }
+  const std::size_t count = in.list("/mesh/parts").size();
+  if (count < 2 || count > n_elements) {
+    r.fail("/mesh/parts",
+           fmt::format("holds {} parts, not 2 to the {} elements", count, n_elements));
+  }
+  for (std::size_t p = 0; p < count; ++p) {
+    part.part_names.push_back(in.read_attribute_string("/mesh/parts/" + std::to_string(p), "name"));
+  }
+  part.element_part = r.ints("/mesh/element_part", n_elements, static_cast<int>(count));
+  if (part.element_part.size() != n_elements) {
+    r.fail("/mesh/element_part", fmt::format("holds {} values, not one per element ({})",
+                                             part.element_part.size(), n_elements));
+  }
+}
+
 FormedPart read_checked_part(const std::filesystem::path& file) {
   const std::string where = file.string();
   try {
@@ -333,10 +377,10 @@ FormedPart read_checked_part(const std::filesystem::path& file) {
       throw InputError(where + ": not a sheetform formed part (a results folder's formed_part.h5)");
     }
     const int version = in.read_attribute_int("/", "format_version");
-    if (version != kFormatVersion && version != 1) {
+    if (version < 1 || version > kFormatVersion) {
       throw InputError(fmt::format(
-          "{}: formed part format {}, this build reads format {} (written by a {} build)", where,
-          version, kFormatVersion, version > kFormatVersion ? "newer" : "older"));
+          "{}: formed part format {}, this build reads formats 1 to {} (written by a {} build)",
+          where, version, kFormatVersion, version > kFormatVersion ? "newer" : "older"));
     }
     const PartReader r(in, where);
     FormedPart part;
@@ -366,6 +410,7 @@ FormedPart read_checked_part(const std::filesystem::path& file) {
     for (const std::string& name : in.list("/mesh/groups")) {
       part.groups[name] = r.ints("/mesh/groups/" + name, node_shape[0], n);
     }
+    read_parts(in, r, n_elements, part);
     part.n_points = in.read_attribute_int("/section", "n_points");
     if (part.n_points < 1 || part.n_points > 9) {
       r.fail("/section@n_points", fmt::format("is {}, not 1 to 9", part.n_points));
@@ -422,6 +467,66 @@ FormedPart read_formed_part(const std::filesystem::path& file) {
 
 namespace {
 
+// The model's parts' names (none for a blank of one part).
+std::vector<std::string> part_names(const Blank& blank) {
+  std::vector<std::string> names;
+  if (blank.parts.size() > 1) {
+    for (const BlankPartInfo& p : blank.parts) {
+      names.push_back(p.name);
+    }
+  }
+  return names;
+}
+
+// Refuses a part whose elements are in other parts than the model's, or of other laws (each
+// part's law compared by its name, whatever the order in which the case lists the parts).
+template <class Refuse>
+void check_same_parts(const FormedPart& part, const Model& model, const Refuse& refuse) {
+  const ShellPart& shell = model.blank.part;
+  const std::vector<std::string> names = part_names(model.blank);
+  if (names.empty() != part.part_names.empty()) {
+    refuse(fmt::format(
+        "a blank of {}; the case's blank is of {}",
+        part.part_names.empty() ? "one part"
+                                : fmt::format("parts {}", fmt::join(part.part_names, ", ")),
+        names.empty() ? "one part" : fmt::format("parts {}", fmt::join(names, ", "))));
+  }
+  if (names.empty()) {
+    if (part.law != material_law_kinds(shell)) {
+      refuse(fmt::format("material law {}; the case's blank has {}", part.law,
+                         material_law_kinds(shell)));
+    }
+    return;
+  }
+  std::vector<int> model_part(part.part_names.size(), -1);  // the part's parts in the model
+  for (std::size_t p = 0; p < part.part_names.size(); ++p) {
+    const auto found = std::find(names.begin(), names.end(), part.part_names[p]);
+    if (found == names.end()) {
+      refuse(fmt::format("a part '{}'; the case's blank has parts {}", part.part_names[p],
+                         fmt::join(names, ", ")));
+    }
+    model_part[p] = static_cast<int>(found - names.begin());
+  }
+  for (std::size_t e = 0; e < part.element_part.size(); ++e) {
+    const int p = part.element_part[e];
+    if (model_part[static_cast<std::size_t>(p)] != material_index(shell, static_cast<int>(e))) {
+      refuse(
+          fmt::format("element {} is in part '{}'; the case's is in part '{}'", e,
+                      part.part_names[static_cast<std::size_t>(p)],
+                      names[static_cast<std::size_t>(material_index(shell, static_cast<int>(e)))]));
+    }
+  }
+  std::string laws;  // the model's laws in the part's order of parts
+  for (const int p : model_part) {
+    laws += (laws.empty() ? "" : ", ") +
+            material_law_kind(shell.materials[static_cast<std::size_t>(p)].law);
+  }
+  if (part.law != laws) {
+    refuse(fmt::format("material laws {} (parts {}); the case's blank has {}", part.law,
+                       fmt::join(part.part_names, ", "), laws));
+  }
+}
+
 // Refuses a part whose blank is not the model's: it would put one mesh's state on another.
 void check_same_blank(const FormedPart& part, const Model& model) {
   const PartMesh& mesh = model.blank.mesh;
@@ -452,10 +557,7 @@ void check_same_blank(const FormedPart& part, const Model& model) {
     refuse(fmt::format("{} {} points through the thickness; the case's blank has {} {}",
                        part.n_points, part.rule, shell.section.n_points, rule));
   }
-  if (part.law != material_law_kinds(shell)) {
-    refuse(fmt::format("material law {}; the case's blank has {}", part.law,
-                       material_law_kinds(shell)));
-  }
+  check_same_parts(part, model, refuse);
 }
 
 // Copies the part's fields into the state, checking each one's size against the model's.
@@ -569,6 +671,8 @@ BlankMesh blank_mesh_of(const FormedPart& part) {
   for (const auto& [name, nodes] : part.groups) {
     b.groups.push_back({name, nodes});
   }
+  b.part_names = part.part_names;
+  b.element_part = part.element_part;
   b.source = part.file;
   return b;
 }

@@ -4,12 +4,14 @@
 // the blank's reference mesh (nodes, quads, triangles, node groups), its through-thickness rule
 // and material law, and every state field with the formed-part role (solver/state_fields.hpp):
 // coordinates, velocities, forces, masses, thickness, per-point stresses, plastic strains, flow
-// and back stresses, and the tools' positions. Format version 1; a reader refuses another.
+// and back stresses, and the tools' positions. Format version 3 (2 added the tools' turns, 3 the
+// blank's parts); a reader reads 1 to 3 and refuses another.
 //
 // Layout: attributes /@format = "sheetform formed part", /@format_version, /@git_hash,
 // /@units; /mesh/reference_nodes (n, 3), /mesh/node_tags (n), /mesh/quads (q, 4) and
 // /mesh/triangles (t, 3) as 0-based node indices, /mesh/initial_thickness (per element, mm),
-// /mesh/groups/NAME (node indices);
+// /mesh/groups/NAME (node indices); for a blank of several parts (a tailor-welded blank)
+// /mesh/element_part (per element, an index into the parts) and /mesh/parts/P@name;
 // /section@n_points, @rule; /material@law; /state/KEY (a field's values: per node (n, 3) or
 // (n), per element or point (elements, values per element), run numbers (1)), each with
 // attributes place and unit; /state/tools/T@name, /state/contacts/C@tool (its tool's name).
@@ -54,10 +56,14 @@ struct FormedPart {
   QuadConn quads;
   TriConn triangles;
   std::map<std::string, std::vector<int>> groups;  ///< node groups, by name
-  int n_points = 0;                                ///< through the thickness
-  std::string rule;                                ///< gauss or lobatto
-  std::string law;                                 ///< the material law's kind
-  std::vector<std::string> tools;                  ///< names, in the order of the state's tools
+  /// A blank of several parts: their names, and each element's index into them (both empty for
+  /// a blank of one part).
+  std::vector<std::string> part_names;
+  std::vector<int> element_part;
+  int n_points = 0;  ///< through the thickness
+  std::string rule;  ///< gauss or lobatto
+  std::string law;   ///< the material law's kind (a blank of several parts: each part's, ", ")
+  std::vector<std::string> tools;          ///< names, in the order of the state's tools
   std::vector<std::string> contact_tools;  ///< each contact pair's tool, in the state's order
   /// Every state field by key (state_fields.hpp), flat, in the state's memory order.
   std::map<std::string, std::vector<double>> fields;

@@ -136,6 +136,7 @@ class Remapper {
     out.n_points = part_.n_points;
     out.rule = part_.rule;
     out.law = part_.law;
+    out.part_names = part_.part_names;
     out.tools = part_.tools;
     out.contact_tools = part_.contact_tools;
     map_mesh(out);
@@ -202,6 +203,11 @@ class Remapper {
       }
     }
     out.initial_thickness = element_values("initial_thickness", part_.initial_thickness);
+    for (const ElementSource* e : elements_) {  // each piece in its parent's part
+      if (!part_.element_part.empty()) {
+        out.element_part.push_back(part_.element_part[static_cast<std::size_t>(e->parent)]);
+      }
+    }
     map_groups(out);
   }
 

@@ -4,11 +4,13 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "core/errors.hpp"
 #include "core/log.hpp"
 #include "model/blank_parts.hpp"
+#include "solver/start_gaps.hpp"
 
 namespace sf {
 
@@ -37,14 +39,11 @@ InitialPenetration find_penetration(const Model& model, const ContactInterface& 
   InitialPenetration p;
   const Tool& tool = model.tools[static_cast<std::size_t>(contact.tool)];
   p.tool = tool.name;
-  const ToolPlacement at_start = tool.motion.placement(0.0);
   const VectorX h = initial_half_thickness(model.blank, model.initial);  // mm per node
+  const VectorX gaps = start_gaps(model, contact);
   const Matrix3X& x = model.blank.mesh.nodes;
-  ClosestPoint cp;
   for (Eigen::Index i = 0; i < x.cols(); ++i) {
-    contact.pair.search->find_closest(
-        at_start.rotation.transpose() * (x.col(i) - at_start.translation), contact.pair.cutoff, cp);
-    const double depth = cp.triangle >= 0 ? h[i] - cp.signed_distance : 0.0;
+    const double depth = std::isnan(gaps[i]) ? 0.0 : -gaps[i];
     // Below a millionth of the thickness is the round-off of a blank resting on a tool.
     if (depth > 2e-6 * h[i]) {
       ++p.nodes;

@@ -8,6 +8,7 @@
 
 #include "core/log.hpp"
 #include "model/blank_parts.hpp"
+#include "solver/start_gaps.hpp"
 
 namespace sf {
 namespace {
@@ -163,24 +164,17 @@ SurfaceApproach approach_at_start(const Tool& tool, const PartMesh& blank) {
 // node's half thickness, as node-on-surface contact sees it, through the tool's contact search
 // (none within its reach: nullopt). The mid-surfaces' approach alone cannot tell which thickness
 // faces the tool.
-std::optional<double> nodal_clearance(const Model& model, std::size_t tool_index,
-                                      const VectorX& half) {
+std::optional<double> nodal_clearance(const Model& model, std::size_t tool_index) {
   const auto contact = std::find_if(
       model.contacts.begin(), model.contacts.end(),
       [&](const ContactInterface& c) { return c.tool == static_cast<int>(tool_index); });
   if (contact == model.contacts.end()) {
     return std::nullopt;
   }
-  const ToolPlacement at_start = model.tools[tool_index].motion.placement(0.0);
-  const Matrix3X& x = model.blank.mesh.nodes;
   std::optional<double> least;
-  ClosestPoint cp;
-  for (Eigen::Index i = 0; i < x.cols(); ++i) {
-    contact->pair.search->find_closest(
-        at_start.rotation.transpose() * (x.col(i) - at_start.translation), contact->pair.cutoff,
-        cp);
-    if (cp.triangle >= 0 && (!least || cp.signed_distance - half[i] < *least)) {
-      least = cp.signed_distance - half[i];
+  for (const double gap : start_gaps(model, *contact)) {
+    if (!std::isnan(gap) && (!least || gap < *least)) {
+      least = gap;
     }
   }
   return least;
@@ -212,7 +206,7 @@ std::vector<ToolMeshReport> diagnose_tool_meshes(const Model& model) {
     r.approach = approach_at_start(tool, blank);
     r.clearance = r.approach.distance - 0.5 * thickness;
     if (!model.initial.element_thickness.empty()) {
-      r.clearance = nodal_clearance(model, t, half).value_or(r.approach.distance - half.minCoeff());
+      r.clearance = nodal_clearance(model, t).value_or(r.approach.distance - half.minCoeff());
     }
     r.clearance_seconds = seconds_since(start);
     reports.push_back(std::move(r));

@@ -2,9 +2,10 @@
 // HDF5 wrapper and libhdf5), as a case with `blank.formed_part` meets it: a file another run, a
 // colleague or a supplier wrote. Each input is written as formed_part.h5 and read. Checks:
 // read_formed_part returns or throws sf::InputError, nothing else (no crash, no sanitizer report,
-// no other exception), and what it returns is consistent (node indices within the nodes). The
-// seed (tests/fuzz/seeds/formed_part, cases/verify_bounce at t = 1e-5 s, written by an earlier
-// build) must be accepted.
+// no other exception), and what it returns is consistent (node indices within the nodes, element
+// parts within the parts). The seed (tests/fuzz/seeds/formed_part, cases/verify_bounce at
+// t = 1e-5 s, written by an earlier build) must be accepted.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -27,9 +28,12 @@ void check_consistent(const sf::FormedPart& part) {
   const bool in_range =
       (part.quads.size() == 0 || (part.quads.minCoeff() >= 0 && part.quads.maxCoeff() < n)) &&
       (part.triangles.size() == 0 ||
-       (part.triangles.minCoeff() >= 0 && part.triangles.maxCoeff() < n));
+       (part.triangles.minCoeff() >= 0 && part.triangles.maxCoeff() < n)) &&
+      std::all_of(part.element_part.begin(), part.element_part.end(), [&](int p) {
+        return p >= 0 && static_cast<std::size_t>(p) < part.part_names.size();
+      });
   if (!in_range) {
-    std::fprintf(stderr, "fuzz: read_formed_part returned a node index out of range\n");
+    std::fprintf(stderr, "fuzz: read_formed_part returned a node or part index out of range\n");
     std::abort();
   }
 }

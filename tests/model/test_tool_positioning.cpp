@@ -3,9 +3,15 @@
 // mid-surface. verify_bounce: a 10 x 10 x 1 mm plate at z = 0 over a floor at z = -0.6 (0.1 mm
 // below the plate's bottom face). Moved up along +z, the floor ends at z = -0.5 exactly (to the
 // rounding of -0.6 + 0.1), having moved 0.1 mm; moved down it never meets the plate.
+// A tailor-welded strip (tests/data/twb_strip.geo: 1.2 mm for x < 40, 0.8 mm beyond) under a flat
+// tool at z = 5 moving down: the tool stops on the thick part's top face (z = 0.6) when it spans
+// both parts, on the thin part's (z = 0.4) when it spans only the thin part.
 #include <gtest/gtest.h>
 
+#include <fmt/core.h>
+
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "casefile/case_config.hpp"
@@ -64,6 +70,59 @@ TEST(ToolPositioning, AFixedToolCannotTouch) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("tools[0].position"), std::string::npos) << e.what();
   }
+}
+
+// The strip of two parts under a flat tool at z = 5 mm over x in [x0, x1], moving down, "touch".
+Model tailor_welded_strip_under_a_tool(const std::string& name, double x0, double x1) {
+  const fs::path folder = fs::path(SF_BINARY_DIR) / "test_output" / "tool_positioning" / name;
+  fs::create_directories(folder);
+  std::ofstream(folder / "plate.geo") << fmt::format(
+      "Point(1) = {{{0}, -1, 5}}; Point(2) = {{{1}, -1, 5}}; Point(3) = {{{1}, 11, 5}};\n"
+      "Point(4) = {{{0}, 11, 5}};\nLine(1) = {{1, 2}}; Line(2) = {{2, 3}}; Line(3) = {{3, 4}};\n"
+      "Line(4) = {{4, 1}};\nCurve Loop(1) = {{1, 2, 3, 4}};\nPlane Surface(1) = {{1}};\n"
+      "Physical Surface(\"plate\") = {{1}};\n",
+      x0, x1);
+  std::ofstream(folder / "case.toml")
+      << fmt::format(R"([blank]
+mesh = "{}"
+[[blank.parts]]
+name = "thick"
+group = "inner"
+thickness = 1.2
+material = "steel"
+[[blank.parts]]
+name = "thin"
+group = "outer"
+thickness = 0.8
+material = "steel"
+[materials.steel]
+type = "elastic"
+density = 7.85e-9
+young = 210000.0
+poisson = 0.3
+[[tools]]
+name = "plate"
+mesh = "plate.geo"
+element_size = 4.0
+position = "touch"
+[tools.motion]
+type = "velocity"
+direction = [0.0, 0.0, -1.0]
+curve = [[0.0, 0.0], [1.0, 0.0]]
+[control]
+end_time = 1e-4
+)",
+                     (fs::path(SF_TEST_DATA_DIR) / "twb_strip.geo").string());
+  return build_model(read_case(folder / "case.toml"));
+}
+
+TEST(ToolPositioning, TouchOnABlankOfTwoThicknessesStopsAtEachPartsOwnFace) {
+  const Model both = tailor_welded_strip_under_a_tool("twb_both", -5.0, 105.0);
+  EXPECT_NEAR(both.tools[0].touch_shift, 4.4, 1e-12);
+  EXPECT_NEAR(both.tools[0].surface.nodes().row(2).maxCoeff(), 0.6, 1e-12);
+  const Model thin = tailor_welded_strip_under_a_tool("twb_thin", 50.0, 105.0);
+  EXPECT_NEAR(thin.tools[0].touch_shift, 4.6, 1e-12);
+  EXPECT_NEAR(thin.tools[0].surface.nodes().row(2).minCoeff(), 0.4, 1e-12);
 }
 
 }  // namespace

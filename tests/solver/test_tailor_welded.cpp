@@ -264,26 +264,6 @@ TEST(TailorWelded, RefusesPartsThatDoNotMakeTheBlank) {
       {"blank.parts: gmsh nodes", "not joined", "share the nodes of their weld line"});
 }
 
-// What the formed part cannot carry yet (the elements' parts) is refused before the run.
-TEST(TailorWelded, RefusesATrimOfABlankOfSeveralParts) {
-  const std::string operations = R"(
-[control]
-[[operations]]
-name = "OP10"
-kind = "forming"
-end = "time"
-time = 1e-4
-[[operations]]
-name = "OP20"
-kind = "trim"
-line = [[-1.0, -1.0], [90.0, -1.0], [90.0, 11.0], [-1.0, 11.0]]
-keep = "inside"
-)";
-  expect_input_error(
-      [&] { sf::build_model(strip_case("twb_trim", steel_aluminium_parts(), operations)); },
-      {"several parts", "cannot be trimmed yet", "no trim operation"});
-}
-
 TEST(TailorWelded, RefusesKeysInTheWrongTable) {
   const std::string control = "[control]\nend_time = 1e-4\n";
   expect_input_error(
