@@ -360,7 +360,12 @@ void read_parts(const h5::File& in, const PartReader& r, std::size_t n_elements,
            fmt::format("holds {} parts, not 2 to the {} elements", count, n_elements));
   }
   for (std::size_t p = 0; p < count; ++p) {
-    part.part_names.push_back(in.read_attribute_string("/mesh/parts/" + std::to_string(p), "name"));
+    std::string name = in.read_attribute_string("/mesh/parts/" + std::to_string(p), "name");
+    if (std::find(part.part_names.begin(), part.part_names.end(), name) != part.part_names.end()) {
+      r.fail("/mesh/parts/" + std::to_string(p),
+             fmt::format("names part '{}' a second time (each part's name is its own)", name));
+    }
+    part.part_names.push_back(std::move(name));
   }
   part.element_part = r.ints("/mesh/element_part", n_elements, static_cast<int>(count));
   if (part.element_part.size() != n_elements) {

@@ -19,6 +19,7 @@
 
 #include "core/errors.hpp"
 #include "model/build_model.hpp"
+#include "results/hdf5_file.hpp"
 #include "solver/case_model.hpp"
 #include "solver/dynain_writer.hpp"
 #include "solver/explicit_driver.hpp"
@@ -296,6 +297,15 @@ TEST(TailorWeldedChain, PartsThatAreNotTheFormedPartsAreRefused) {
   file = write_case(folder, {kBend});
   edit(file, "group = \"outer\"\n", "");
   expect_input_error([&] { read_case(file); }, {"blank.parts[1].group", "missing"});
+  // A damaged part naming one part twice.
+  const fs::path twice = folder / "twice.h5";
+  fs::copy_file(part, twice, fs::copy_options::overwrite_existing);
+  {
+    h5::File f(twice, h5::FileMode::read_write);
+    f.write_attribute("/mesh/parts/1", "name", std::string("inner"));
+  }
+  expect_input_error([&] { read_formed_part(twice); },
+                     {"twice.h5", "/mesh/parts/1", "names part 'inner' a second time"});
   // The formed part of a blank of one part, into a case of parts.
   const fs::path one_part = folder_of("refusals_one_part");
   std::ofstream(one_part / "case.toml") << "operations = [" << kBend << "]\n[blank]\nmesh = \""
