@@ -135,6 +135,17 @@ void write_header(h5::File& out) {
   out.write_attribute("/", "units", std::string(kUnits));
 }
 
+// The model's parts' names (none for a blank of one part).
+std::vector<std::string> part_names(const Blank& blank) {
+  std::vector<std::string> names;
+  if (blank.parts.size() > 1) {
+    for (const BlankPartInfo& p : blank.parts) {
+      names.push_back(p.name);
+    }
+  }
+  return names;
+}
+
 // The parts of a blank of several: each element's part, and each part's name.
 void write_parts(h5::File& out, const std::vector<std::string>& names,
                  std::span<const int> element_part) {
@@ -187,13 +198,7 @@ void write_mesh(h5::File& out, const Model& model) {
     groups[g.name] = g.nodes;
   }
   write_mesh(out, mesh.nodes, tags, mesh.quads, mesh.triangles, t0, groups);
-  if (model.blank.parts.size() > 1) {
-    std::vector<std::string> names;
-    for (const BlankPartInfo& p : model.blank.parts) {
-      names.push_back(p.name);
-    }
-    write_parts(out, names, model.blank.part.element_material);
-  }
+  write_parts(out, part_names(model.blank), model.blank.part.element_material);
 }
 
 }  // namespace
@@ -471,17 +476,6 @@ FormedPart read_formed_part(const std::filesystem::path& file) {
 }
 
 namespace {
-
-// The model's parts' names (none for a blank of one part).
-std::vector<std::string> part_names(const Blank& blank) {
-  std::vector<std::string> names;
-  if (blank.parts.size() > 1) {
-    for (const BlankPartInfo& p : blank.parts) {
-      names.push_back(p.name);
-    }
-  }
-  return names;
-}
 
 // Refuses a part whose elements are in other parts than the model's, or of other laws (each
 // part's law compared by its name, whatever the order in which the case lists the parts).

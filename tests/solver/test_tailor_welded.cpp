@@ -23,6 +23,7 @@
 #include "solver/case_fixture.hpp"
 #include "solver/initial_state.hpp"
 #include "solver/static_driver.hpp"
+#include "support/expect_input_error.hpp"
 
 namespace {
 
@@ -216,17 +217,7 @@ TEST(TailorWelded, TwoEqualPartsGiveTheOnePartBlanksBits) {
   EXPECT_EQ(a.energies.internal, b.energies.internal);
 }
 
-void expect_input_error(const std::function<void()>& f, const std::vector<std::string>& parts) {
-  try {
-    f();
-    ADD_FAILURE() << "expected an InputError";
-  } catch (const sf::InputError& e) {
-    const std::string text = e.what();
-    for (const std::string& p : parts) {
-      EXPECT_NE(text.find(p), std::string::npos) << "'" << p << "' not in: " << text;
-    }
-  }
-}
+using sf::test::expect_input_error;
 
 TEST(TailorWelded, RefusesPartsThatDoNotMakeTheBlank) {
   const std::string control = "[control]\nend_time = 1e-4\n";
