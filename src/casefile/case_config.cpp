@@ -12,6 +12,7 @@
 
 #include "casefile/case_config_common.hpp"
 #include "casefile/case_config_constraints.hpp"
+#include "casefile/case_config_drawbeads.hpp"
 #include "casefile/case_config_history.hpp"
 #include "casefile/case_config_implicit.hpp"
 #include "casefile/case_config_node_groups.hpp"
@@ -388,11 +389,27 @@ CaseConfig read_case(const fs::path& case_file, const CaseOptions& options) {
   const fs::path folder = config.file.parent_path();
 
   const TomlSection top(root, "", file);
-  read_table(
-      top, top_level_fields(), config,
-      {"blank", "materials", "tools", "contact", "boundary", "draw_in", "load", "initial_velocity",
-       "prescribed_velocity", "prescribed_motion", "control", "output", "analysis", "implicit",
-       "springback", "history", "node_group", "limits", "operations"});
+  read_table(top, top_level_fields(), config,
+             {"blank",
+              "materials",
+              "tools",
+              "contact",
+              "boundary",
+              "draw_in",
+              "load",
+              "initial_velocity",
+              "prescribed_velocity",
+              "prescribed_motion",
+              "control",
+              "output",
+              "analysis",
+              "implicit",
+              "springback",
+              "history",
+              "node_group",
+              "limits",
+              "operations",
+              "drawbeads"});
   read_materials(top, config.materials);
   read_blank(top, config, config.blank);
   read_tools(top, config.tools);
@@ -409,6 +426,7 @@ CaseConfig read_case(const fs::path& case_file, const CaseOptions& options) {
   read_history_groups(top, config);
   read_node_groups(top, config);
   read_operations(top, config);
+  read_drawbeads(top, config);
   return config;
 }
 

@@ -292,6 +292,32 @@ struct ContactConfig {
   double search_margin = 0.0;      ///< mm, the cached search's candidate margin; 0 = its default
 };
 
+/// A drawbead line ([[drawbeads]], docs/drawbeads.md): the force of a bead of a tool on the sheet
+/// drawn across it, per unit length of bead, instead of the bead meshed.
+struct DrawbeadConfig {
+  /// Where the force per unit length comes from: curves against the closure, or a round bead's
+  /// geometry (contact/round_drawbead.hpp).
+  enum class Force { curve, round_bead };
+  std::string name;  ///< unique among the beads; names it in the banner and the summary
+  std::string tool;  ///< the [[tools]] entry it belongs to (with a [[contact]]): it moves with it
+  /// mm, an open polyline of at least 2 points on the tool's surface, where the tool is meshed
+  std::vector<std::array<double, 3>> line;
+  double width = 0.0;   ///< mm, the band across the line the force acts in
+  double height = 0.0;  ///< mm, the closing travel from first touch to closed; 0: the bead's depth
+  Force force = Force::curve;
+  bool locking = false;                   ///< the sheet does not pass (no restraint limit)
+  std::vector<double> closure;            ///< -, in [0, 1], increasing: the curves' abscissae
+  std::vector<double> restraining_force;  ///< N/mm at each closure
+  std::vector<double> uplift_force;       ///< N/mm at each closure; empty: none
+  double bead_radius = 0.0;               ///< mm, round bead
+  double shoulder_radius = 0.0;           ///< mm, round bead
+  double depth = 0.0;                     ///< mm, round bead: its crest's depth into the groove
+  double clearance = 0.0;                 ///< mm, round bead: side clearance
+  double friction = -1.0;                 ///< -, round bead; < 0: the tool's [[contact]] friction
+  double flow_stress = 0.0;  ///< MPa, round bead; 0: the blank material's (docs/drawbeads.md)
+  double thickness = 0.0;    ///< mm, round bead; 0: the blank's
+};
+
 /// A local frame of axes given by two vectors (global components, unit length: normalised on
 /// reading): x as given; y the part of the second vector perpendicular to x (made so on reading);
 /// z = x cross y.
@@ -545,6 +571,7 @@ struct CaseConfig {
   ImplicitConfig implicit;                                      ///< [implicit]
   std::optional<SpringbackConfig> springback;                   ///< [springback]
   std::vector<OperationConfig> operations;                      ///< [[operations]]
+  std::vector<DrawbeadConfig> drawbeads;                        ///< [[drawbeads]]
 
   /// The material named by blank.material (the reader guarantees it exists). InputError for a
   /// blank of several parts (blank_parts names each one's).

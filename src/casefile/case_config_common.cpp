@@ -3,6 +3,8 @@
 #include <fmt/core.h>
 
 #include <cmath>
+#include <optional>
+#include <string>
 
 namespace sf {
 
@@ -41,6 +43,46 @@ void read_curve(const TomlSection& s, std::string_view key, CurveConfig& curve) 
     curve.times.push_back(*t);
     curve.values.push_back(*v);
   }
+}
+
+bool read_polyline(const TomlSection& s, std::string_view key, std::size_t min_points,
+                   std::vector<std::array<double, 3>>& points) {
+  const std::string expected =
+      fmt::format("an array of at least {} points [x, y] or [x, y, z] (mm)", min_points);
+  const toml::node* node = s.find(key);
+  if (!node) {
+    return false;
+  }
+  const toml::array* array = node->as_array();
+  if (!array || array->size() < min_points) {
+    s.fail_value(key, expected);
+  }
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const toml::array* point = array->get(i)->as_array();
+    if (!point || point->size() < 2 || point->size() > 3) {
+      s.fail_value(key, expected);
+    }
+    std::array<double, 3> p{0.0, 0.0, 0.0};
+    for (std::size_t c = 0; c < point->size(); ++c) {
+      const std::optional<double> v = point->get(c)->value<double>();
+      if (!v || !std::isfinite(*v)) {
+        s.fail_value(key, fmt::format("{}; point {} holds a value that is not a finite number",
+                                      expected, i + 1));
+      }
+      p[c] = *v;
+    }
+    points.push_back(p);
+  }
+  return true;
+}
+
+std::string format_polyline(const std::vector<std::array<double, 3>>& points) {
+  std::string text;
+  for (const auto& p : points) {
+    text += fmt::format("{}[{}, {}, {}]", text.empty() ? "" : ", ", format_toml_number(p[0]),
+                        format_toml_number(p[1]), format_toml_number(p[2]));
+  }
+  return "[" + text + "]";
 }
 
 void read_vector(const TomlSection& s, std::string_view key, std::array<double, 3>& value) {

@@ -19,6 +19,14 @@ void read_curve(const TomlSection& s, std::string_view key, CurveConfig& curve);
 /// `value` as it is.
 void read_vector(const TomlSection& s, std::string_view key, std::array<double, 3>& value);
 
+/// Reads `key`, when present, as a polyline: an array of at least `min_points` points [x, y, z]
+/// or [x, y] (z = 0) of finite numbers (mm), appended to `points`; returns whether it was there.
+bool read_polyline(const TomlSection& s, std::string_view key, std::size_t min_points,
+                   std::vector<std::array<double, 3>>& points);
+
+/// A polyline as a TOML array of [x, y, z] points.
+std::string format_polyline(const std::vector<std::array<double, 3>>& points);
+
 /// Reads `key` as an array of whole gmsh entity tags >= 1 (`what`: "surface" or "curve", for the
 /// message) into `tags`; absent leaves it empty (an error when required).
 void read_entity_tags(const TomlSection& s, std::string_view key, std::string_view what,

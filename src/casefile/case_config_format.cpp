@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "casefile/case_config.hpp"
+#include "casefile/case_config_drawbeads.hpp"
 #include "casefile/case_config_operations.hpp"
 #include "casefile/case_fields.hpp"
 #include "casefile/toml_reader.hpp"
@@ -134,6 +135,7 @@ std::string format_resolved_case(const CaseConfig& config) {
   write_fields(control_fields(), w, config.control);
   write_implicit_sections(w, config);
   write_operations(w, config);
+  write_drawbeads(w, config);
   w.header("output");
   write_fields(output_fields(), w, config.output);
   w.header("limits");

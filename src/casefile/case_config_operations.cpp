@@ -80,33 +80,8 @@ constexpr std::array<Choice<OperationConfig::Keep>, 2> kKeeps{{
 
 // [[x, y, z], ...] or [[x, y], ...] (z = 0): a closed polyline of at least 3 points.
 void read_line(const TomlSection& s, Op& o, Presence presence) {
-  const char* expected = "an array of at least 3 points [x, y] or [x, y, z] (mm)";
-  const toml::node* node = s.find("line");
-  if (!node) {
-    if (presence == Presence::required) {
-      s.fail_missing("line", expected);
-    }
-    return;
-  }
-  const toml::array* points = node->as_array();
-  if (!points || points->size() < 3) {
-    s.fail_value("line", expected);
-  }
-  for (std::size_t i = 0; i < points->size(); ++i) {
-    const toml::array* point = points->get(i)->as_array();
-    if (!point || point->size() < 2 || point->size() > 3) {
-      s.fail_value("line", expected);
-    }
-    std::array<double, 3> p{0.0, 0.0, 0.0};
-    for (std::size_t c = 0; c < point->size(); ++c) {
-      const std::optional<double> v = point->get(c)->value<double>();
-      if (!v || !std::isfinite(*v)) {
-        s.fail_value("line", fmt::format("{}; point {} holds a value that is not a finite number",
-                                         expected, i + 1));
-      }
-      p[c] = *v;
-    }
-    o.line.push_back(p);
+  if (!read_polyline(s, "line", 3, o.line) && presence == Presence::required) {
+    s.fail_missing("line", "an array of at least 3 points [x, y] or [x, y, z] (mm)");
   }
 }
 
@@ -141,12 +116,7 @@ void check_line_source(const TomlSection& s, const Op& o, const CaseConfig& conf
 }
 
 void write_line(TomlWriter& w, const Op& o) {
-  std::string points;
-  for (const auto& p : o.line) {
-    points += fmt::format("{}[{}, {}, {}]", points.empty() ? "" : ", ", format_toml_number(p[0]),
-                          format_toml_number(p[1]), format_toml_number(p[2]));
-  }
-  w.raw("line", "[" + points + "]");
+  w.raw("line", format_polyline(o.line));
 }
 bool ends_by(const Op& o, std::initializer_list<End> ends) {
   return std::find(ends.begin(), ends.end(), o.end) != ends.end();

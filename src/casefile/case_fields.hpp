@@ -48,6 +48,9 @@ const FieldTable<UChannelMeasureConfig>& u_channel_fields();
 const FieldTable<OperationConfig>& operation_fields();
 const FieldTable<OperationMotionConfig>& operation_motion_fields();
 
+// Drawbead lines (case_config_drawbeads.cpp).
+const FieldTable<DrawbeadConfig>& drawbead_fields();
+
 // Materials (case_fields_material.cpp).
 const FieldTable<MaterialConfig>& material_fields();
 const FieldTable<HardeningConfig>& hardening_fields();

@@ -34,6 +34,7 @@ std::vector<SchemaSection> case_schema() {
       {"springback.u_channel", field_docs(u_channel_fields())},
       {"operations", field_docs(operation_fields())},
       {"operations.motion", field_docs(operation_motion_fields())},
+      {"drawbeads", field_docs(drawbead_fields())},
   };
 }
 

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "core/errors.hpp"
+#include "mesh/nodal_area.hpp"
 
 namespace sf {
 
@@ -323,15 +324,13 @@ VectorX compute_penalty_stiffness(const Matrix3X& nodes, const QuadConn& quads,
   }
   const int n = static_cast<int>(nodes.cols());
   const double bulk = youngs_modulus / (3.0 * (1.0 - 2.0 * poisson_ratio));
-  VectorX area = VectorX::Zero(n);
+  const VectorX area = nodal_tributary_area(nodes, quads, triangles);
   VectorX diagonal = VectorX::Zero(n);
   for (int e = 0; e < quads.cols(); ++e) {
     const Vec3 d1 = nodes.col(quads(2, e)) - nodes.col(quads(0, e));
     const Vec3 d2 = nodes.col(quads(3, e)) - nodes.col(quads(1, e));
-    const double a = 0.5 * d1.cross(d2).norm();  // exact for a flat quad
     const double d = std::max(d1.norm(), d2.norm());
     for (int k = 0; k < 4; ++k) {
-      area[quads(k, e)] += 0.25 * a;
       diagonal[quads(k, e)] = std::max(diagonal[quads(k, e)], d);
     }
   }
@@ -339,11 +338,9 @@ VectorX compute_penalty_stiffness(const Matrix3X& nodes, const QuadConn& quads,
     const Vec3 x1 = nodes.col(triangles(0, e));
     const Vec3 e1 = nodes.col(triangles(1, e)) - x1;
     const Vec3 e2 = nodes.col(triangles(2, e)) - x1;
-    const double a = 0.5 * e1.cross(e2).norm();
     const double d =
         std::sqrt(std::max({e1.squaredNorm(), e2.squaredNorm(), (e2 - e1).squaredNorm()}));
     for (int k = 0; k < 3; ++k) {
-      area[triangles(k, e)] += a / 3.0;
       diagonal[triangles(k, e)] = std::max(diagonal[triangles(k, e)], d);
     }
   }

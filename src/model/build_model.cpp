@@ -17,6 +17,7 @@
 #include "meshing/gmsh_reader.hpp"
 #include "model/blank_parts.hpp"
 #include "model/constraint_assembly.hpp"
+#include "model/drawbead_setup.hpp"
 #include "model/node_selection.hpp"
 #include "model/operation_plan.hpp"
 #include "model/physical_ranges.hpp"
@@ -780,6 +781,7 @@ Model build_model(const CaseConfig& config, const BlankMesh* blank) {
   set_mass_and_time_step(config, model, state);
   check_physical_ranges(config, model);
   set_up_contacts(config, model, state);
+  set_up_drawbeads(config, model);
   set_up_force_controlled_tools(config, model);
   set_end_time(config, model);
   build_operations(config, model);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "casefile/case_config.hpp"
+#include "contact/drawbead_line.hpp"
 #include "contact/penalty_contact.hpp"
 #include "element/shell_bt.hpp"
 #include "mesh/mesh_data.hpp"
@@ -126,6 +127,14 @@ struct ContactInterface {
   ContactPair pair;    ///< fixed for the run (its changing state: SolutionState::contacts)
 };
 
+/// A drawbead line of a tool ([[drawbeads]], docs/drawbeads.md).
+struct DrawbeadInterface {
+  int tool = -1;      ///< index into Model::tools
+  DrawbeadLine line;  ///< fixed for the run (its changing state: SolutionState::drawbeads)
+  /// How its force per length was found, for the banner ("curve", "round bead: ...").
+  std::string source;
+};
+
 /// How the run steps and when it ends.
 struct TimeControl {
   double end_time = 0.0;      ///< s, from control.end_time or the stroke
@@ -186,6 +195,7 @@ struct Model {
   Blank blank;
   std::vector<Tool> tools;
   std::vector<ContactInterface> contacts;
+  std::vector<DrawbeadInterface> drawbeads;
   NodalConstraints constraints;  ///< held and prescribed degrees of freedom, node frames
   std::vector<PrescribedMotion> prescribed_motions;  ///< what drives the prescribed ones
   ExternalLoads loads;

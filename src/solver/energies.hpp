@@ -33,6 +33,9 @@ struct Energies {
   /// Work dissipated by Coulomb friction (slip times the friction force). Informational: it is
   /// PART of `contact` (the work done against all contact forces), not a term of its own.
   double friction_work = 0.0;
+  /// Work dissipated by slip across the drawbead lines (their restraint times the slip).
+  /// Informational: PART of `contact` (the bead forces are contact forces), like friction_work.
+  double drawbead_work = 0.0;
   /// The half-kick energy D = 1/2 sum m |dt/2 u|^2 (translations and rotations; u the
   /// acceleration of the next half kick, dt the step just taken) at the step end: the
   /// central-difference scheme keeps total - supplied = D - D_ref exactly, for any forces, so D

@@ -52,6 +52,9 @@ std::vector<HistoryValue> history_values(const Model& model) {
       {{"scaled_elements", "-"},
        [](M, S s, A) { return static_cast<double>(s.scaling.scaled_elements); }},
   };
+  if (!model.drawbeads.empty()) {
+    v.push_back({{"drawbead_work", energy}, [](M, S s, A) { return s.energies.drawbead_work; }});
+  }
   for (std::size_t t = 0; t < model.tools.size(); ++t) {
     const std::string& name = model.tools[t].name;
     v.push_back({{name + "_travel", units.length}, [t](M, S s, A) { return s.tools[t].travel; }});

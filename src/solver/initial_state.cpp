@@ -28,6 +28,10 @@ SolutionState make_initial_state(const Model& model) {
   initialize_directors(model.blank.part, model.blank.mesh.nodes, s.shell);
   s.tools.resize(model.tools.size());
   s.contacts.resize(model.contacts.size());
+  s.drawbeads.resize(model.drawbeads.size());
+  for (DrawbeadState& bead : s.drawbeads) {
+    size_drawbead_state(bead, static_cast<int>(n));
+  }
   for (const InitialVelocityConfig& iv : model.initial.velocities) {
     const auto set = [&](int node) {
       const Vec3 p = model.blank.mesh.nodes.col(node);  // mm, the initial coordinates

@@ -403,6 +403,22 @@ void print_contacts(const CaseConfig& config, const Model& model, const UnitSyst
   }
 }
 
+void print_drawbeads(const Model& model, const UnitSystem& units) {
+  const std::string& mm = units.length;
+  const std::string per_length = units.stiffness();  // force per length: N/mm
+  for (const DrawbeadInterface& b : model.drawbeads) {
+    const DrawbeadLine& line = b.line;
+    const std::string force =
+        line.locking ? std::string("locking")
+                     : fmt::format("restraining {:.4g} {}", line.restraining_at(1.0), per_length);
+    log_info(
+        "Drawbead    '{}' on '{}': {:.4g} {} long, {:.4g} {} wide, closes over {:.4g} {}; at "
+        "full closure {}, uplift {:.4g} {} ({})\n",
+        line.name, model.tools[static_cast<std::size_t>(b.tool)].name, line.length(), mm,
+        line.width, mm, line.height, mm, force, line.uplift_at(1.0), per_length, b.source);
+  }
+}
+
 void print_mesh_parameters(const CaseConfig& config) {
   const auto print = [](const std::string& part, const MeshSourceConfig& mesh) {
     if (mesh.parameters.empty()) {
@@ -540,6 +556,7 @@ void print_model(const CaseConfig& config, const Model& model) {
   print_tools(model, units);
   print_tool_positions(config, model, units);
   print_contacts(config, model, units);
+  print_drawbeads(model, units);
   print_history_groups(config, model);
   print_time_control(config, model, units);
 }

@@ -18,12 +18,18 @@ namespace {
 using End = OperationConfig::End;
 using Kind = OperationConfig::Kind;
 
-// The contact pairs with tool t start afresh: no stick forces, and a full search first.
+// The contact pairs and drawbeads of tool t start afresh: no stick forces, and a full search
+// first.
 void reset_pairs_of(const Model& model, std::size_t t, SolutionState& s) {
   for (std::size_t c = 0; c < model.contacts.size() && c < s.contacts.size(); ++c) {
     if (static_cast<std::size_t>(model.contacts[c].tool) == t) {
       s.contacts[c].stick_force.setZero();
       s.contacts[c].distance_bounds.resize(s.contacts[c].distance_bounds.node_count());
+    }
+  }
+  for (std::size_t b = 0; b < model.drawbeads.size() && b < s.drawbeads.size(); ++b) {
+    if (static_cast<std::size_t>(model.drawbeads[b].tool) == t) {
+      s.drawbeads[b].restraint.setZero();
     }
   }
 }

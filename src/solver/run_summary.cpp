@@ -144,6 +144,7 @@ RunSummary make_run_summary(const Model& model, const SolutionState& s, double w
   set_per_unit_costs(r, s.times, static_cast<double>(r.cycles) * r.elements,
                      static_cast<double>(r.cycles) * r.nodes);
   r.energies = s.energies;
+  r.drawbeads = !model.drawbeads.empty();
   r.peak_kinetic_ratio = s.peak_kinetic_ratio;
   r.physical_mass = model.blank.physical_mass;
   r.added_mass = s.scaling.added_mass;
@@ -299,6 +300,10 @@ void add_energy_lines(const RunSummary& r, const UnitSystem& u, const Add& add) 
         fmt::format("                      damping {:.4e}, mass scaling {:.4e}; plastic work "
                     "{:.4e} (part of internal), friction work {:.4e} (part of contact)",
                     e.damping, e.mass_scaling, e.plastic_work, e.friction_work));
+    if (r.drawbeads) {
+      add(fmt::format("                      drawbead work {:.4e} (part of contact)",
+                      e.drawbead_work));
+    }
   }
   add(fmt::format("  energy balance      {:+.3e} (total - external work, relative)",
                   e.balance_error()));
@@ -481,6 +486,9 @@ void write_run_summary_json(const RunSummary& r, const std::filesystem::path& fi
                      {"external_work", r.energies.external_work},
                      {"half_kick", r.energies.half_kick_change()},
                      {"balance_error", r.energies.balance_error()}};
+  if (r.drawbeads) {
+    j["energy_Nmm"]["drawbead_work"] = r.energies.drawbead_work;
+  }
   j["kinetic_ratio_end"] = r.energies.kinetic_ratio();
   j["kinetic_ratio_peak"] = r.peak_kinetic_ratio;
   j["physical_mass_tonne"] = r.physical_mass;

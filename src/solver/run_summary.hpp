@@ -92,6 +92,7 @@ struct RunSummary {
   /// the load balance of a distributed run
   std::vector<std::array<double, 6>> phase_seconds_per_rank;
   Energies energies;
+  bool drawbeads = false;            ///< the run has drawbead lines (their work is reported)
   double peak_kinetic_ratio = 0.0;   ///< largest kinetic/internal after the first tenth
   double physical_mass = 0.0;        ///< tonne, the blank's mass before scaling
   double added_mass = 0.0;           ///< tonne, added by mass scaling (at the start and in the run)

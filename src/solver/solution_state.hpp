@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "contact/contact_state.hpp"
+#include "contact/drawbead_line.hpp"
 #include "contact/penalty_contact.hpp"
 #include "element/shell_bt.hpp"
 #include "model/mass_scaling.hpp"
@@ -110,6 +111,8 @@ struct SolutionState {
   /// first contact call).
   std::vector<ContactState> contacts;
   std::vector<ExactSum> contact_sums;  ///< scratch: every pair's exact sums of a contact call
+  /// One per Model::drawbeads: each node's stick force across the bead (sized by the first call).
+  std::vector<DrawbeadState> drawbeads;
   /// Springback by dynamic relaxation: the contact is off, and the forces the tools held the
   /// blank with act as these nodal loads (released over time) besides the model's own.
   bool contact_off = false;

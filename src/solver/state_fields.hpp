@@ -261,6 +261,15 @@ inline constexpr StateField stick_force{
 inline constexpr StateField bound_anchor{
     "bound_anchor", contact, "mm",
     kCheckpoint,    reset,   "distance bound: position at the last search"};
+// A drawbead line's stick forces: a restart needs them; the next case's beads start afresh.
+inline constexpr StateField bead_restraint{
+    "restraint", contact, "N", kCheckpoint, reset, "a drawbead's stick force across its line"};
+inline constexpr StateField drawbead_work{"energies/drawbead_work",
+                                          run,
+                                          "N mm",
+                                          kCheckpoint,
+                                          none,
+                                          "slip work across the drawbead lines (part of contact)"};
 inline constexpr StateField bound_slack{
     "bound_slack", contact, "mm",
     kCheckpoint,   reset,   "distance bound: distance left before a search"};
@@ -268,13 +277,14 @@ inline constexpr StateField bound_slack{
 
 /// SolutionState members visit_state_fields does not visit, and why (tests/solver/
 /// test_state_fields.cpp counts the members: one added must be described above or named here).
-inline constexpr std::array<std::string_view, 13> kStateLeftOut = {
+inline constexpr std::array<std::string_view, 14> kStateLeftOut = {
     "mass_before: scratch of one cycle's mass scaling",
     "inertia_before: scratch of one cycle's mass scaling",
     "scaling.target_dt, safety, element_mass, inertia_factor: the model's, set at the start",
     "element_pass: the corner buffer and per-thread sums, scratch",
     "domain: how the process shares the blank, not state",
     "contact_sums: scratch of one contact call",
+    "drawbeads' shares: per-thread scratch",
     "contacts' search caches: rebuilt exactly (the cached search answers as the modified one)",
     "contacts' shares: per-thread scratch",
     "contact_off: the springback's dynamic relaxation only, which writes no checkpoint",
@@ -411,6 +421,13 @@ void visit_state_fields(Visitor& v, State& s) {
     v(f::stick_force, p + "stick_force", contact.stick_force);
     v(f::bound_anchor, p + "bound_anchor", contact.distance_bounds.anchors());
     v(f::bound_slack, p + "bound_slack", contact.distance_bounds.slacks());
+  }
+  // A case with drawbeads only (a case without keeps the layout of format 3).
+  if (!s.drawbeads.empty()) {
+    v(f::drawbead_work, std::string(f::drawbead_work.name), s.energies.drawbead_work);
+  }
+  for (std::size_t b = 0; b < s.drawbeads.size(); ++b) {
+    v(f::bead_restraint, "drawbeads/" + std::to_string(b) + "/restraint", s.drawbeads[b].restraint);
   }
 }
 

@@ -92,6 +92,24 @@ void update_contact_offsets(const Model& model, SolutionState& s) {
                                     model.blank.inverse_element_count, s.half_thickness);
 }
 
+// The blank against a tool over the step dt just taken (s.v its mid-step velocity; dt = 0 on the
+// first call).
+ContactKinematics kinematics_against(const SolutionState& s, const ToolState& tool, double dt) {
+  const Vec3 tool_step =
+      dt > 0.0 ? Vec3(tool.displacement - tool.previous_displacement) : Vec3::Zero();
+  return ContactKinematics{
+      .x = s.x,
+      .v = s.v,
+      .half_thickness = s.half_thickness,
+      .tool_displacement = tool.displacement,
+      .tool_displacement_increment = tool_step,
+      .dt = dt,
+      .owned_nodes = s.domain->owned_nodes(),
+      .ghost_nodes = s.domain->ghost_nodes(),
+      .tool_rotation = tool.rotation,
+      .tool_rotation_previous = dt > 0.0 ? tool.previous_rotation : tool.rotation};
+}
+
 // The exact sums of one contact call (left in the pair's first share), kContactSums of them.
 constexpr int kContactSums = 12;
 
@@ -151,20 +169,7 @@ void compute_contact_forces(const Model& model, SolutionState& s, double dt) {
       std::fill_n(sums.data() + kContactSums * k, kContactSums, ExactSum());
       continue;
     }
-    // s.v is the mid-step velocity of the step dt just taken (dt = 0 on the first call).
-    const Vec3 tool_step =
-        dt > 0.0 ? Vec3(tool.displacement - tool.previous_displacement) : Vec3::Zero();
-    const ContactKinematics kinematics{
-        .x = s.x,
-        .v = s.v,
-        .half_thickness = s.half_thickness,
-        .tool_displacement = tool.displacement,
-        .tool_displacement_increment = tool_step,
-        .dt = dt,
-        .owned_nodes = s.domain->owned_nodes(),
-        .ghost_nodes = s.domain->ghost_nodes(),
-        .tool_rotation = tool.rotation,
-        .tool_rotation_previous = dt > 0.0 ? tool.previous_rotation : tool.rotation};
+    const ContactKinematics kinematics = kinematics_against(s, tool, dt);
     PhaseError pair_failure = phase_error_of(
         LONG_MAX, [&] { compute_penalty_contact(c.pair, s.contacts[k], kinematics, s.f_contact); });
     if (pair_failure.failed() && !failure.failed()) {
@@ -190,6 +195,44 @@ void compute_contact_forces(const Model& model, SolutionState& s, double dt) {
   }
 }
 
+// The exact sums of one drawbead call: the reaction (3), its moment (3), the slip work.
+constexpr int kBeadSums = 7;
+
+// The drawbead lines' forces into state.f_contact (after the contact pairs'), their reactions to
+// their tools' forces and moments, their slip work to the energies. A bead of a tool out of play
+// acts on nothing and starts afresh.
+void add_drawbead_forces(const Model& model, SolutionState& s, double dt) {
+  if (s.contact_off || model.drawbeads.empty()) {
+    return;
+  }
+  std::vector<ExactSum>& sums = s.contact_sums;  // scratch, after the contact's use of it
+  sums.assign(kBeadSums * model.drawbeads.size(), ExactSum());
+  for (std::size_t b = 0; b < model.drawbeads.size(); ++b) {
+    const DrawbeadInterface& bead = model.drawbeads[b];
+    const ToolState& tool = s.tools[static_cast<std::size_t>(bead.tool)];
+    if (tool.held) {
+      s.drawbeads[b].restraint.setZero();
+      continue;
+    }
+    compute_drawbead_forces(bead.line, s.drawbeads[b], kinematics_against(s, tool, dt),
+                            s.f_contact);
+    const DrawbeadShare& total = s.drawbeads[b].shares[0];
+    for (int c = 0; c < 3; ++c) {
+      sums[kBeadSums * b + c] = total.force_on_tool[c];
+      sums[kBeadSums * b + 3 + c] = total.moment_on_tool[c];
+    }
+    sums[kBeadSums * b + 6] = total.work;
+  }
+  s.domain->reduce(sums);
+  for (std::size_t b = 0; b < model.drawbeads.size(); ++b) {
+    ToolState& tool = s.tools[static_cast<std::size_t>(model.drawbeads[b].tool)];
+    const ExactSum* r = sums.data() + kBeadSums * b;
+    tool.force += Vec3(r[0].round(), r[1].round(), r[2].round());
+    tool.moment += Vec3(r[3].round(), r[4].round(), r[5].round());
+    s.energies.drawbead_work += r[6].round();
+  }
+}
+
 }  // namespace
 
 ShellForceResult compute_forces(const Model& model, SolutionState& s, double dt) {
@@ -202,6 +245,7 @@ ShellForceResult compute_forces(const Model& model, SolutionState& s, double dt)
     update_contact_offsets(model, s);  // only the contact uses them
   }
   compute_contact_forces(model, s, dt);
+  add_drawbead_forces(model, s, dt);
   s.times.contact += seconds_since(contact_start);
   return elements;
 }

@@ -1,0 +1,180 @@
+#include "model/drawbead_setup.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <variant>
+
+#include "contact/round_drawbead.hpp"
+#include "core/errors.hpp"
+#include "mesh/nodal_area.hpp"
+#include "mesh/triangle_distance.hpp"
+#include "model/blank_parts.hpp"
+
+namespace sf {
+namespace {
+
+std::string where(const CaseConfig& config, std::size_t b) {
+  return fmt::format("{}: drawbeads[{}] ({})", config.file.string(), b, config.drawbeads[b].name);
+}
+
+// The nearest point of the surface to p and the normal of its triangle (the first on a tie).
+struct SurfacePoint {
+  Vec3 point;
+  Vec3 normal;
+  double distance = INFINITY;
+};
+
+SurfacePoint nearest_on_surface(const TriangleSurface& surface, const Vec3& p) {
+  SurfacePoint best;
+  for (int t = 0; t < surface.num_triangles(); ++t) {
+    Tri3 tri;
+    for (int k = 0; k < 3; ++k) {
+      tri.col(k) = surface.nodes().col(surface.triangles()(k, t));
+    }
+    const Vec3 q = closest_point_on_triangle(p, tri);
+    const double d = (q - p).norm();
+    if (d < best.distance) {
+      best = {q, surface.triangle_normals().col(t), d};
+    }
+  }
+  return best;
+}
+
+// The line as the tool stands, cut into pieces no longer than a quarter of the width and laid on
+// the tool's surface.
+void lay_line(const CaseConfig& config, std::size_t b, const Tool& tool, const Vec3& shift,
+              DrawbeadLine& line) {
+  const DrawbeadConfig& bead = config.drawbeads[b];
+  const double reach = 0.5 * bead.width;
+  std::vector<Vec3> given;
+  for (const auto& p : bead.line) {
+    given.push_back(Vec3(p[0], p[1], p[2]) + shift);
+  }
+  for (std::size_t k = 0; k < given.size(); ++k) {
+    const Vec3& p = given[k];
+    const Vec3& next = k + 1 < given.size() ? given[k + 1] : p;
+    const int pieces = std::max(1, static_cast<int>(std::ceil((next - p).norm() / (0.5 * reach))));
+    for (int j = 0; j < (k + 1 < given.size() ? pieces : 1); ++j) {
+      const SurfacePoint on =
+          nearest_on_surface(tool.surface, p + (double(j) / pieces) * (next - p));
+      if (!(on.distance <= reach)) {
+        const auto& g = bead.line[k];
+        const std::string what =
+            j == 0 ? fmt::format("point {} ({:g}, {:g}, {:g})", k + 1, g[0], g[1], g[2])
+                   : fmt::format("the line between points {} and {}", k + 1, k + 2);
+        throw InputError(fmt::format(
+            "{}: {} is {:.4g} mm from tool '{}' surface, more than half the bead's width "
+            "({:g} mm): the bead line misses the tool (give its points on the tool's surface, "
+            "where the tool is meshed)",
+            where(config, b), what, on.distance, tool.name, reach));
+      }
+      line.points.push_back(on.point);
+      line.normals.push_back(on.normal);
+    }
+  }
+}
+
+// The round bead's hardening curve (MPa against the equivalent plastic strain): the constant
+// `flow_stress` given, or the blank material's.
+std::function<double(double)> bead_flow_stress(const CaseConfig& config, std::size_t b,
+                                               const Model& model) {
+  const DrawbeadConfig& bead = config.drawbeads[b];
+  if (bead.flow_stress > 0.0) {
+    return [stress = bead.flow_stress](double) { return stress; };
+  }
+  const Material& law = model.blank.part.materials.front().law;
+  if (std::holds_alternative<ElasticPlaneStress>(law) || model.blank.part.materials.size() > 1) {
+    throw InputError(fmt::format(
+        "{}: a round bead needs the sheet's flow_stress (MPa): the blank {}", where(config, b),
+        model.blank.part.materials.size() > 1 ? "has several parts" : "is elastic"));
+  }
+  const Hardening hardening = std::visit(
+      [](const auto& m) -> Hardening {
+        if constexpr (requires { m.hardening; }) {
+          return m.hardening;
+        } else {
+          return LinearHardening{};  // not reached: elastic refused above
+        }
+      },
+      law);
+  return [hardening](double eps) { return flow_stress(hardening, eps); };
+}
+
+// The force curves: the case's, or the round bead's force at its depth times the closure.
+std::string set_force(const CaseConfig& config, std::size_t b, const Model& model,
+                      const ContactInterface& contact, DrawbeadLine& line) {
+  const DrawbeadConfig& bead = config.drawbeads[b];
+  if (bead.force == DrawbeadConfig::Force::curve) {
+    line.closure = bead.closure;
+    line.restraining = bead.restraining_force;
+    line.uplift = bead.uplift_force;
+    line.height = bead.height;
+    return "curve";
+  }
+  if (bead.thickness == 0.0 && config.blank_parts().size() > 1) {
+    throw InputError(
+        fmt::format("{}: a round bead on a blank of several parts needs the sheet's thickness (mm)",
+                    where(config, b)));
+  }
+  const double t = bead.thickness > 0.0 ? bead.thickness : config.blank.thickness;
+  const RoundBeadGeometry geometry{.bead_radius = bead.bead_radius,
+                                   .shoulder_radius = bead.shoulder_radius,
+                                   .depth = bead.depth,
+                                   .clearance = bead.clearance};
+  const RoundBeadSheet sheet{
+      .thickness = t,
+      .flow_stress = bead_flow_stress(config, b, model),
+      .friction = bead.friction >= 0.0 ? bead.friction : contact.pair.friction.dynamic_coefficient};
+  const RoundBeadForces forces = round_bead_forces(geometry, sheet);
+  line.closure = {0.0, 1.0};
+  line.restraining = {0.0, forces.restraining};
+  line.uplift = {0.0, forces.uplift};
+  line.height = bead.height > 0.0 ? bead.height : bead.depth;
+  return fmt::format(
+      "round bead R_b {:g} mm, R_s {:g} mm, depth {:g} mm, wrap {:.1f} deg, t {:g} mm, {}, mu {:g}",
+      bead.bead_radius, bead.shoulder_radius, bead.depth, forces.wrap_angle * 180.0 / M_PI, t,
+      bead.flow_stress > 0.0 ? fmt::format("flow stress {:g} MPa", bead.flow_stress)
+                             : std::string("the blank's hardening over the six bends"),
+      sheet.friction);
+}
+
+}  // namespace
+
+void set_up_drawbeads(const CaseConfig& config, Model& model) {
+  if (config.drawbeads.empty()) {
+    return;
+  }
+  const Blank& blank = model.blank;
+  const VectorX area =
+      nodal_tributary_area(blank.mesh.nodes, blank.mesh.quads, blank.mesh.triangles);
+  const VectorX half_thickness = initial_half_thickness(blank, model.initial);
+  for (std::size_t b = 0; b < config.drawbeads.size(); ++b) {
+    const DrawbeadConfig& bead = config.drawbeads[b];
+    DrawbeadInterface out;
+    const auto tool = std::find_if(model.tools.begin(), model.tools.end(),
+                                   [&](const Tool& t) { return t.name == bead.tool; });
+    out.tool = static_cast<int>(tool - model.tools.begin());
+    const auto contact =
+        std::find_if(model.contacts.begin(), model.contacts.end(),
+                     [&](const ContactInterface& c) { return c.tool == out.tool; });
+    const ToolConfig& tc = *config.find_tool(bead.tool);
+    const Vec3 direction =
+        Vec3(tc.motion.direction[0], tc.motion.direction[1], tc.motion.direction[2]).normalized();
+    DrawbeadLine& line = out.line;
+    line.name = bead.name;
+    line.width = bead.width;
+    line.locking = bead.locking;
+    lay_line(config, b, *tool, tool->touch_shift * direction, line);
+    out.source = set_force(config, b, model, *contact, line);
+    line.stiffness = kDrawbeadStiffnessRatio * contact->pair.stiffness;
+    line.area = area;
+    line.start_half_thickness = half_thickness;
+    line.set_box(config.largest_blank_thickness());
+    model.drawbeads.push_back(std::move(out));
+  }
+}
+
+}  // namespace sf
