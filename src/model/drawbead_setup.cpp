@@ -71,8 +71,11 @@ void lay_line(const CaseConfig& config, std::size_t b, const Tool& tool, const V
             "where the tool is meshed)",
             where(config, b), what, on.distance, tool.name, reach));
       }
-      line.points.push_back(on.point);
-      line.normals.push_back(on.normal);
+      // Two pieces' ends can land on one surface point (a concave corner): keep one.
+      if (line.points.empty() || (on.point - line.points.back()).norm() > 1e-9 * reach) {
+        line.points.push_back(on.point);
+        line.normals.push_back(on.normal);
+      }
     }
   }
 }
@@ -168,6 +171,10 @@ void set_up_drawbeads(const CaseConfig& config, Model& model) {
     line.width = bead.width;
     line.locking = bead.locking;
     lay_line(config, b, *tool, tool->touch_shift * direction, line);
+    if (line.points.size() < 2) {
+      throw InputError(fmt::format("{}: the bead line lies on one point of tool '{}' surface",
+                                   where(config, b), tool->name));
+    }
     out.source = set_force(config, b, model, *contact, line);
     line.stiffness = kDrawbeadStiffnessRatio * contact->pair.stiffness;
     line.area = area;
