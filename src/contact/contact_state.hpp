@@ -43,6 +43,11 @@ struct ContactState {
   /// Per blank node: the stored elastic stick force on the node, N (zero out of contact; sized
   /// only with friction).
   Matrix3X stick_force;
+  /// Per blank node: the normal contact force of the last call, N (zero out of contact), and
+  /// the path it has slid over the tool while in contact, mm (its steps relative to the tool's
+  /// point at it, in the tangent plane, summed since time 0): results, not forces.
+  VectorX normal_force;
+  VectorX sliding_distance;
   std::vector<ContactShare> shares;  ///< one per thread (scratch)
   /// One per thread: the sums of the ghost nodes (ContactKinematics::ghost_nodes), computed for
   /// their forces and then dropped, their owner counting them (scratch).

@@ -29,6 +29,10 @@ void size_state(const ContactPair& pair, ContactState& state, int n, bool fricti
   if (friction && state.stick_force.cols() != n) {
     state.stick_force.setZero(3, n);
   }
+  if (state.normal_force.size() != n) {
+    state.normal_force.setZero(n);
+    state.sliding_distance.setZero(n);
+  }
 }
 
 // Bounds node i's distance to the tool afresh at p; whether that proves it beyond the cutoff.
@@ -78,13 +82,15 @@ void add_node_force(const ContactPair& pair, ContactState& state,
   Vec3 f = normal_force * normal;
   result.energy.add(0.5 * k * g * g);
   ++result.nodes_in_contact;
+  // The node's step relative to the tool's point where it is (a translating tool's: its own).
+  const Vec3 tool_step =
+      rotating ? Vec3((kinematics.tool_rotation - kinematics.tool_rotation_previous) * p +
+                      kinematics.tool_displacement_increment)
+               : kinematics.tool_displacement_increment;
+  const Vec3 increment = kinematics.dt * kinematics.v.col(i) - tool_step;
+  state.normal_force[i] = normal_force;
+  state.sliding_distance[i] += (increment - increment.dot(normal) * normal).norm();
   if (pair.friction.active()) {
-    // The step of the tool's point where the node is (a translating tool's: its own step).
-    const Vec3 tool_step =
-        rotating ? Vec3((kinematics.tool_rotation - kinematics.tool_rotation_previous) * p +
-                        kinematics.tool_displacement_increment)
-                 : kinematics.tool_displacement_increment;
-    const Vec3 increment = kinematics.dt * kinematics.v.col(i) - tool_step;
     Vec3 stored = state.stick_force.col(i);
     const FrictionStep step =
         coulomb_friction_update(pair.friction, stored, normal, increment, kinematics.dt,
@@ -183,14 +189,18 @@ void contact_block(const ContactPair& pair, ContactState& state,
     const Vec3 p = rotating ? Vec3(kinematics.tool_rotation.transpose() *
                                    (kinematics.x.col(i) - kinematics.tool_displacement))
                             : Vec3(kinematics.x.col(i) - kinematics.tool_displacement);
-    // A skipped node's stick force is zero already, so it is not written (memory traffic is
-    // most of a skipped node's cost): a node is skipped only while its bound is positive, and a
-    // bound is set in a call where the node is out of contact -- skipped, or searched and apart
-    // (its stick force reset then) -- and lost (slack -1) when a search finds the tool.
+    // A skipped node's stick and normal forces are zero already, so they are not written (memory
+    // traffic is most of a skipped node's cost): a node is skipped only while its bound is
+    // positive, and a bound is set in a call where the node is out of contact -- skipped, or
+    // searched and apart (its stick force reset then) -- and lost (slack -1) when a search finds
+    // the tool.
     const NodeOutcome outcome =
         node_contact(pair, state, kinematics, rotating, i, p, share, f_contact);
-    if (friction && outcome == NodeOutcome::apart) {
-      state.stick_force.col(i).setZero();
+    if (outcome == NodeOutcome::apart) {
+      state.normal_force[i] = 0.0;
+      if (friction) {
+        state.stick_force.col(i).setZero();
+      }
     }
   }
 }

@@ -94,6 +94,8 @@ struct ContactResult {
 /// on the tangent plane of n, drives coulomb_friction_update with the normal force k_i (-g) and k_t
 /// = ratio * k_i; its force is added likewise and its dissipation summed. A node out of contact has
 /// its stick force reset to zero. Orthogonal: the normal force is minus the gradient of 1/2 k g^2.
+/// For the results, state.normal_force[i] is set to the normal force k_i (-g) (0 out of contact)
+/// and the node's relative step in the tangent plane of n is added to state.sliding_distance[i].
 /// Interpolated: it is not a gradient in general (`energy` is then only the penalty spring's stored
 /// energy). With pair.distance_bound, a node whose distance bound (state.distance_bounds) proves it
 /// beyond the cutoff is not searched: the search would have found nothing, so the result is the

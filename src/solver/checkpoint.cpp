@@ -19,7 +19,9 @@ namespace sf {
 namespace {
 
 constexpr const char* kFormat = "sheetform checkpoint";
-constexpr int kFormatVersion = 3;  // 2: the operation and the tools' motion origins; 3: turns
+// 2: the operation and the tools' motion origins; 3: turns; 4: the contact's normal forces and
+// sliding distances
+constexpr int kFormatVersion = 4;
 
 std::span<const double> values(const double* data, Eigen::Index size) {
   return {data, static_cast<std::size_t>(size)};

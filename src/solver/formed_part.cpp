@@ -24,7 +24,8 @@ namespace {
 constexpr const char* kFormat = "sheetform formed part";
 // 2: the tools' turns (rotation, angle, moment); a format 1 part's tools have not turned.
 // 3: the blank's parts (/mesh/element_part, /mesh/parts); a format 1 or 2 part is of one part.
-constexpr int kFormatVersion = 3;
+// 4: the contact's results (normal forces, sliding distances); an earlier part's start at zero.
+constexpr int kFormatVersion = 4;
 constexpr const char* kUnits = "mm, tonne, s; N, MPa, N mm";
 
 const char* place_name(FieldPlace place) {
@@ -119,6 +120,14 @@ bool is_turn_field(const StateField& field) {
   };
   return is(f::tool_rotation) || is(f::tool_previous_rotation) || is(f::tool_angle) ||
          is(f::tool_moment) || is(f::tool_previous_moment);
+}
+
+// A field format 4 added: the contact's results (earlier parts' pairs start them at zero).
+bool is_contact_result_field(const StateField& field) {
+  namespace f = state_field;
+  return field.place == FieldPlace::contact &&
+         (std::string_view(field.name) == f::contact_normal_force.name ||
+          std::string_view(field.name) == f::sliding_distance.name);
 }
 
 // A field a part may lack: one the next model makes again from its mesh (a trimmed part's
@@ -451,6 +460,9 @@ FormedPart read_checked_part(const std::filesystem::path& file) {
       if (version == 1 && is_turn_field(field)) {
         part.fields[key] = {unturned.at(key)};
         continue;
+      }
+      if (version <= 3 && is_contact_result_field(field)) {
+        continue;  // the pair starts them at zero (FieldCopy: a contact field may be left out)
       }
       if (!in.exists("/state/" + key) && may_be_left_out(field) &&
           std::find(left_out.begin(), left_out.end(), key) != left_out.end()) {

@@ -8,6 +8,7 @@
 
 #include "model/model.hpp"
 #include "results/results_writer.hpp"
+#include "solver/contact_output.hpp"
 #include "solver/group_history.hpp"
 #include "solver/search_audit_recorder.hpp"
 #include "solver/solution_state.hpp"
@@ -97,6 +98,7 @@ class FrameOutput {
   Eigen::Matrix<double, 6, Eigen::Dynamic> back_stress_top_, back_stress_bottom_;
   std::vector<Matrix3X> tool_coordinates_;
   std::vector<Matrix3X> tool_displacement_;
+  ContactFieldsOutput contact_fields_;
   std::vector<HistoryReader> history_readers_;  ///< the columns before the groups', in order
   std::vector<double> row_;
   long last_history_cycle_ = -1;  ///< one row per cycle at most

@@ -258,6 +258,13 @@ inline constexpr StateField tool_origin_angle{"origin_angle", tool, "rad",
 // of the search and start afresh.
 inline constexpr StateField stick_force{
     "stick_force", contact, "N", kHandedOn, reset, "elastic stick force of the friction"};
+// The contact's results: the normal force of the last call and the path slid over the tool,
+// written per tool in every frame (as pressure and sliding distance) and handed on with their
+// pair's tool, so that a chain's sliding distances add up.
+inline constexpr StateField contact_normal_force{
+    "normal_force", contact, "N", kShown, reset, "normal contact force (0 out of contact)"};
+inline constexpr StateField sliding_distance{
+    "sliding_distance", contact, "mm", kShown, reset, "path slid over the tool in contact"};
 inline constexpr StateField bound_anchor{
     "bound_anchor", contact, "mm",
     kCheckpoint,    reset,   "distance bound: position at the last search"};
@@ -419,6 +426,9 @@ void visit_state_fields(Visitor& v, State& s) {
     auto& contact = s.contacts[c];
     const std::string p = "contacts/" + std::to_string(c) + "/";
     v(f::stick_force, p + "stick_force", contact.stick_force);
+    // (format 4: the contact's results)
+    v(f::contact_normal_force, p + "normal_force", contact.normal_force);
+    v(f::sliding_distance, p + "sliding_distance", contact.sliding_distance);
     v(f::bound_anchor, p + "bound_anchor", contact.distance_bounds.anchors());
     v(f::bound_slack, p + "bound_slack", contact.distance_bounds.slacks());
   }

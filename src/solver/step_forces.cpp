@@ -154,6 +154,9 @@ void compute_contact_forces(const Model& model, SolutionState& s, double dt) {
     t.nodes_in_contact = 0;
   }
   if (s.contact_off || model.contacts.empty()) {
+    for (ContactState& c : s.contacts) {
+      c.normal_force.setZero();  // the results: nothing presses
+    }
     return;
   }
   const std::size_t pairs = model.contacts.size();
@@ -166,6 +169,7 @@ void compute_contact_forces(const Model& model, SolutionState& s, double dt) {
     const ToolState& tool = s.tools[static_cast<std::size_t>(c.tool)];
     if (tool.held) {  // out of play: an operation leaves it out (or springback holds it)
       size_contact_state(c.pair, s.contacts[k], static_cast<int>(s.x.cols()));
+      s.contacts[k].normal_force.setZero();
       std::fill_n(sums.data() + kContactSums * k, kContactSums, ExactSum());
       continue;
     }

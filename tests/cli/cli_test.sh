@@ -73,6 +73,7 @@ if command -v pvpython >/dev/null; then
   [ "$(wc -w <<<"$times")" -eq 41 ] && passed=$((passed+1)) || { echo "FAIL run: expected 41 frames, got: $times"; failures=$((failures+1)); }
   expect "ParaView reads blank.xdmf" 0 "" -- pvpython "$src/scripts/check_xdmf.py" "$work/run/blank.xdmf" --times $times \
     --points 961 --cells 900 --point-arrays displacement:3 velocity:3 contact_force:3 \
+    contact_pressure_punch:1 sliding_distance_punch:1 contact_pressure_die:1 sliding_distance_die:1 contact_pressure_holder:1 sliding_distance_holder:1 contact_tool:1 \
     --cell-arrays thickness:1 plastic_strain:1 stress_mid:6 stress_top:6 stress_bottom:6
   for tool in punch die holder; do
     expect "ParaView reads $tool.xdmf" 0 "" -- pvpython "$src/scripts/check_xdmf.py" "$work/run/$tool.xdmf" --times $times \

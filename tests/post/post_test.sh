@@ -83,6 +83,7 @@ sizes() {  # sizes PART -> "points cells"
 read -r points cells <<<"$(sizes blank)"
 expect "ParaView reads blank.xdmf" 0 "OK \($(wc -w <<<"$times") time steps\)" -- pvpython "$src/scripts/check_xdmf.py" "$run/blank.xdmf" --times $times \
   --points "$points" --cells "$cells" --point-arrays displacement:3 velocity:3 contact_force:3 \
+  contact_pressure_punch:1 sliding_distance_punch:1 contact_pressure_die:1 sliding_distance_die:1 contact_pressure_holder:1 sliding_distance_holder:1 contact_tool:1 \
   --cell-arrays thickness:1 plastic_strain:1 stress_mid:6 stress_top:6 stress_bottom:6
 for tool in punch die holder; do
   read -r points cells <<<"$(sizes "$tool")"

@@ -25,6 +25,20 @@ inline CaseConfig write_case(const std::string& name, const std::string& geo,
   return read_case(folder / "case.toml");
 }
 
+/// A flat rectangular tool in the plane z, [x0, x1] x [y0, y1] (mm), as a .geo whose surface is
+/// the physical group "plate", meshed at most `size` mm.
+inline std::string flat_tool_geo(double x0, double y0, double x1, double y1, double z,
+                                 double size) {
+  const auto point = [&](int id, double x, double y) {
+    return "Point(" + std::to_string(id) + ") = {" + std::to_string(x) + ", " + std::to_string(y) +
+           ", " + std::to_string(z) + "};\n";
+  };
+  return point(1, x0, y0) + point(2, x1, y0) + point(3, x1, y1) + point(4, x0, y1) +
+         "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
+         "Curve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\nMesh.MeshSizeMax = " +
+         std::to_string(size) + ";\nPhysical Surface(\"plate\") = {1};\n";
+}
+
 /// Central-difference steps from the state until model.time.end_time (no output); calls
 /// `after_step(state)` after every step.
 template <class AfterStep>

@@ -40,25 +40,12 @@ Physical Surface("blank") = {1};
 Physical Curve("pull") = {2};
 )";
 
-std::string plate_geo(double z) {
-  return fmt::format(R"(
-Point(1) = {{-10, -10, {0}}}; Point(2) = {{80, -10, {0}}}; Point(3) = {{80, 20, {0}}};
-Point(4) = {{-10, 20, {0}}};
-Line(1) = {{1, 2}}; Line(2) = {{2, 3}}; Line(3) = {{3, 4}}; Line(4) = {{4, 1}};
-Curve Loop(1) = {{1, 2, 3, 4}};
-Plane Surface(1) = {{1}};
-Mesh.MeshSizeMax = 15;
-Physical Surface("plate") = {{1}};
-)",
-                     z);
-}
-
 // The strip's case with `bead` as its [[drawbeads]] table (empty: none).
 CaseConfig strip_case(const std::string& name, const std::string& bead) {
   const fs::path folder = fs::path(SF_BINARY_DIR) / "test_output" / name;
   fs::create_directories(folder);
-  std::ofstream(folder / "die.geo") << plate_geo(-0.5);
-  std::ofstream(folder / "binder.geo") << plate_geo(0.5);
+  std::ofstream(folder / "die.geo") << test::flat_tool_geo(-10.0, -10.0, 80.0, 20.0, -0.5, 15.0);
+  std::ofstream(folder / "binder.geo") << test::flat_tool_geo(-10.0, -10.0, 80.0, 20.0, 0.5, 15.0);
   return test::write_case(name, kStrip, R"(thickness = 1.0
 material = "steel"
 [materials.steel]

@@ -132,12 +132,12 @@ TEST(FormedPart, RefusesAnotherVersionAnotherBlankAndOtherFiles) {
   fs::copy_file(formed_part_path(folder), newer);
   {
     h5::File f(newer, h5::FileMode::read_write);
-    f.write_attribute("/", "format_version", 4);
+    f.write_attribute("/", "format_version", 5);
   }
   EXPECT_NE(
       error_of([&] {
         read_formed_part(newer);
-      }).find("formed part format 4, this build reads formats 1 to 3 (written by a newer build)"),
+      }).find("formed part format 5, this build reads formats 1 to 4 (written by a newer build)"),
       std::string::npos);
   EXPECT_NE(error_of([&] {
               read_formed_part(folder / "results.h5");

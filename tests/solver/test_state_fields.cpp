@@ -53,9 +53,9 @@ TEST(StateFields, EveryMemberIsDescribedOrLeftOut) {
   EXPECT_EQ(member_count<Energies>(), 13u);         // all visited
   EXPECT_EQ(member_count<ToolState>(), 16u);        // all visited
   EXPECT_EQ(member_count<ToolMotionOrigin>(), 6u);  // all visited
-  // stick_force and distance_bounds (anchors, slacks) visited; node_count, search_cache,
-  // search, shares, ghost_shares rebuilt or scratch.
-  EXPECT_EQ(member_count<ContactState>(), 7u);
+  // stick_force, normal_force, sliding_distance and distance_bounds (anchors, slacks) visited;
+  // node_count, search_cache, search, shares, ghost_shares rebuilt or scratch.
+  EXPECT_EQ(member_count<ContactState>(), 9u);
   // restraint visited; shares, ghost_shares scratch.
   EXPECT_EQ(member_count<DrawbeadState>(), 3u);
 }
@@ -94,8 +94,8 @@ TEST(StateFields, KeysAreUniqueAndEveryFieldHasAUnitAndAMeaning) {
   }
   // 11 + 5 of the operation + 19 node + 4 mass scaling + 12 shell + 12 energies + a tool's (6
   // scalars, 4 x 3 vectors, 2 x 9 rotations, the angle, 2 x 3 moments, the origin's 3 + 3 + 9 +
-  // 1) + 3 of a pair
-  EXPECT_EQ(keys.size(), 11u + 5u + 19u + 4u + 12u + 12u + 59u + 3u);
+  // 1) + 5 of a pair
+  EXPECT_EQ(keys.size(), 11u + 5u + 19u + 4u + 12u + 12u + 59u + 5u);
 }
 
 TEST(StateFields, RolesAgree) {
@@ -109,13 +109,16 @@ TEST(StateFields, RolesAgree) {
       EXPECT_TRUE(f.has(field_role::formed_part)) << e.key;
       // Only arrays are gathered; run numbers are the same on every process.
       EXPECT_TRUE(f.place == FieldPlace::node || f.place == FieldPlace::element ||
-                  f.place == FieldPlace::point)
+                  f.place == FieldPlace::point || f.place == FieldPlace::contact)
           << e.key;
     }
-    // Of a contact pair's history only the friction's stick forces are handed on (the
-    // distance bounds are a shortcut of the search, which starts afresh).
+    // Of a contact pair's history the friction's stick forces and the results (normal forces,
+    // sliding distances) are handed on; the distance bounds are a shortcut of the search, which
+    // starts afresh, and a drawbead's springs start afresh in the next case.
     if (f.place == FieldPlace::contact) {
-      EXPECT_EQ(f.has(field_role::formed_part), f.name == "stick_force") << e.key;
+      EXPECT_EQ(f.has(field_role::formed_part),
+                f.name == "stick_force" || f.name == "normal_force" || f.name == "sliding_distance")
+          << e.key;
     }
     // The mesh's fields say how they follow a new mesh; the rest are not of the mesh.
     const bool of_the_mesh = f.place == FieldPlace::node || f.place == FieldPlace::element ||
