@@ -5,7 +5,9 @@
 # stroke (force-controlled holder, friction, the cached search, quads), then the same blank as
 # triangles (assumed strain, the modified search); the U-channel to 4 mm with its implicit
 # springback (on rank 0 after the gather); a closing then a draw as two operations (issue 32) at
-# 2 ranks, and a draw, a trim (removing, then cutting) and a draw on at 2 ranks. Then what a distributed run refuses or stops with:
+# 2 ranks, and a draw, a trim (removing, then cutting) and a draw on at 2 ranks; the cup with two
+# drawbead lines on the holder across the flange (issue 33: lines that cross the partitions) at 2
+# ranks. Then what a distributed run refuses or stops with:
 # mass scaling (exit 2, the key named), more ranks than elements (exit 2), an energy blow-up
 # (exit 3, said once, the results readable up to the stop), and an element failure met by one
 # rank (exit 3, the serial run's message on every rank count).
@@ -43,6 +45,23 @@ cup=(--stroke 0.5 --set blank.element_size=1.875)
 run_variant quads "$work/case/case.toml" -- "${cup[@]}"
 run_variant triangles "$work/case_triangles/case.toml" -- "${cup[@]}" \
   --set 'blank.element="as_meshed"' --set 'blank.formulation="assumed_strain"' --search modified
+
+# Drawbead lines (issue 33) crossing the ranks' partitions, and the contact's result fields:
+# 2 ranks give the serial bits (3 ranks too, checked by hand when they were added).
+cp -r "$work/case" "$work/case_beads"
+for axis in x y; do
+  if [ "$axis" = x ]; then line='[[55.0, 0.0, 0.39], [55.0, 80.0, 0.39]]'
+  else line='[[0.0, 55.0, 0.39], [80.0, 55.0, 0.39]]'; fi
+  printf '\n[[drawbeads]]\nname = "bead_%s"\ntool = "holder"\nline = %s\nwidth = 8.0\nheight = 1.0\nclosure = [0.0, 1.0]\nrestraining_force = [0.0, 50.0]\nuplift_force = [0.0, 10.0]\n' \
+    "$axis" "$line" >> "$work/case_beads/case.toml"
+done
+"$sheetform" run "$work/case_beads/case.toml" --threads 1 -q -o "$work/beads-serial" "${cup[@]}" \
+  > "$work/beads-serial.log" 2>&1 || fail "beads serial"
+"$mpiexec" -np 2 --bind-to none "$sheetform" run "$work/case_beads/case.toml" --threads 1 -q \
+  -o "$work/beads-2" "${cup[@]}" > "$work/beads-2.log" 2>&1 || fail "beads at 2 ranks"
+grep -q '"drawbead_work"' "$work/beads-2/summary.json" || fail "beads at 2 ranks: no bead work"
+/usr/bin/python3 "$src/scripts/compare_results.py" "$work/beads-serial" "$work/beads-2" ||
+  fail "beads at 2 ranks: not the serial bits"
 
 # The U-channel with its implicit springback, at 2 ranks.
 "$sheetform" run "$src/cases/u_channel_bhf_2450N/case.toml" --stroke 4 -q -o "$work/uch-serial" \
