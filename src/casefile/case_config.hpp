@@ -302,7 +302,14 @@ struct DrawbeadConfig {
   std::string tool;  ///< the [[tools]] entry it belongs to (with a [[contact]]): it moves with it
   /// mm, an open polyline of at least 2 points on the tool's surface, where the tool is meshed
   std::vector<std::array<double, 3>> line;
-  double width = 0.0;   ///< mm, the band across the line the force acts in
+  /// The line from a file instead (absolute; empty: none): a .geo or .msh file's 1-D physical
+  /// group `line_group` (default: the bead's name), or a CAD file's curves `line_curves` (all
+  /// when empty), meshed by gmsh into points `line_element_size` apart, joined into one open line
+  std::filesystem::path line_file;
+  std::string line_group;
+  std::vector<int> line_curves;
+  double line_element_size = 1.0;  ///< mm
+  double width = 0.0;              ///< mm, the band across the line the force acts in
   double height = 0.0;  ///< mm, the closing travel from first touch to closed; 0: the bead's depth
   Force force = Force::curve;
   bool locking = false;                   ///< the sheet does not pass (no restraint limit)

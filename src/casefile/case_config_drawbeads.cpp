@@ -8,6 +8,7 @@
 
 #include "casefile/case_config_common.hpp"
 #include "casefile/case_fields.hpp"
+#include "meshing/mesh_import.hpp"
 
 namespace sf {
 namespace {
@@ -23,6 +24,21 @@ constexpr std::array<Choice<Force>, 2> kForces{{
      "the bead with friction on the arcs (docs/drawbeads.md), times the closure"},
 }};
 
+// The formats a bead line's file may have: a .geo or .msh with a physical curve, or CAD curves.
+bool is_line_format(const std::filesystem::path& file) {
+  const std::optional<MeshFormat> format = find_mesh_format(file);
+  return format && (*format == MeshFormat::geo || *format == MeshFormat::msh || is_cad(*format));
+}
+
+bool line_file_is(const B& b, bool (*test)(MeshFormat)) {
+  const std::optional<MeshFormat> format = find_mesh_format(b.line_file);
+  return format && test(*format);
+}
+
+bool named_curve_format(MeshFormat f) {
+  return f == MeshFormat::geo || f == MeshFormat::msh;
+}
+
 bool curve(const B& b) {
   return b.force == Force::curve;
 }
@@ -34,7 +50,7 @@ bool round_bead(const B& b) {
 // repeating the one before it.
 void read_line(const TomlSection& s, B& b, Presence) {
   if (!read_polyline(s, "line", 2, b.line)) {
-    s.fail_missing("line", "an array of at least 2 points [x, y] or [x, y, z] (mm)");
+    return;  // line_file, or neither (check_line_source)
   }
   for (std::size_t k = 1; k < b.line.size(); ++k) {
     if (b.line[k] == b.line[k - 1]) {
@@ -56,10 +72,62 @@ FieldTable<B> make_drawbead_fields() {
                               "the `[[tools]]` entry the bead belongs to; it needs a `[[contact]]` "
                               "and the bead moves with it")
                   .required());
-  t.push_back(custom_field<B>({"line", "array of [x, y] or [x, y, z]", "required", "mm",
+  t.push_back(custom_field<B>({"line", "array of [x, y] or [x, y, z]", "", "mm",
                                "the bead's centre line: an open polyline on the tool's surface, "
-                               "where the tool is meshed (each point within `width` / 2 of it)"},
-                              read_line, write_line));
+                               "where the tool is meshed (each point within `width` / 2 of it). "
+                               "This or `line_file`"},
+                              read_line, write_line)
+                  .shown_default("none")
+                  .write_if([](const B& b) { return !b.line.empty(); }));
+  t.push_back(custom_field<B>(
+                  {"line_file",
+                   "string",
+                   "",
+                   {},
+                   "the bead's centre line from a file, relative to the case file's folder "
+                   "(stored absolute), must exist: a `.geo` or `.msh` file's 1-D physical group "
+                   "`line_group`, or the curves `line_curves` of a CAD file (`.step`, `.stp`, "
+                   "`.iges`, `.igs`, `.brep`); gmsh meshes the curves into points "
+                   "`line_element_size` apart, which join into one open line (ends within a "
+                   "hundredth of `line_element_size` are one point)"},
+                  [](const TomlSection& s, B& b, Presence) {
+                    if (s.has("line_file")) {
+                      b.line_file = read_existing_file(
+                          s, "line_file", is_line_format,
+                          "a .geo, .msh, .step, .stp, .iges, .igs or .brep file");
+                    }
+                  },
+                  [](TomlWriter& w, const B& b) { w.string("line_file", b.line_file.string()); })
+                  .shown_default("none")
+                  .write_if([](const B& b) { return !b.line_file.empty(); }));
+  t.push_back(string_field<B>("line_group", &B::line_group,
+                              "the 1-D physical group (`Physical Curve`) of `line_file` that is "
+                              "the line")
+                  .shown_default("the bead's `name`")
+                  .when([](const B& b) { return line_file_is(b, named_curve_format); },
+                        "`line_file` `.geo` or `.msh` only",
+                        "a CAD file's curves are chosen by line_curves"));
+  t.push_back(custom_field<B>(
+                  {"line_curves",
+                   "array of integers",
+                   "all",
+                   {},
+                   "the CAD file's curve tags that form the line"},
+                  [](const TomlSection& s, B& b, Presence p) {
+                    read_entity_tags(s, "line_curves", "curve", b.line_curves, p);
+                  },
+                  [](TomlWriter& w, const B& b) {
+                    w.numbers("line_curves",
+                              std::vector<double>(b.line_curves.begin(), b.line_curves.end()),
+                              "the CAD file's curve tags");
+                  })
+                  .when([](const B& b) { return line_file_is(b, is_cad); }, "`line_file` CAD only",
+                        "a .geo or .msh names its line by line_group")
+                  .write_if([](const B& b) { return !b.line_curves.empty(); }));
+  t.push_back(number_field<B>("line_element_size", &B::line_element_size, greater_than(0.0, "mm"),
+                              "the spacing of the line's points along the curves")
+                  .when([](const B& b) { return line_file_is(b, is_meshed); },
+                        "`line_file` `.geo` or CAD only", "a .msh file's line is read as it is"));
   t.push_back(number_field<B>("width", &B::width, greater_than(0.0, "mm"),
                               "the band across the line the force acts in (about the groove's "
                               "width); its force is spread over it by a cosine window")
@@ -191,6 +259,15 @@ void read_drawbeads(const TomlSection& top, CaseConfig& config) {
       s.fail_value("tool", fmt::format("a tool with a [[contact]] (the bead acts on the sheet the "
                                        "tool closes on; tool {} has none)",
                                        quote_toml_string(b.tool)));
+    }
+    if (b.line.empty() && b.line_file.empty()) {
+      s.fail_missing("line", "one of line (a polyline) or line_file (a curve of a file)");
+    }
+    if (!b.line.empty() && !b.line_file.empty()) {
+      s.fail_forbidden("line_file", "the bead has a line already: give line or line_file");
+    }
+    if (!b.line_file.empty() && b.line_group.empty()) {
+      b.line_group = b.name;  // the default group is the bead's name
     }
     check_curves(s, b);
     config.drawbeads.push_back(std::move(b));

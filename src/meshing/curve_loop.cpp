@@ -61,63 +61,117 @@ std::vector<int> merged_nodes(const GmshModel& model,
   return same;
 }
 
-}  // namespace
+// The group's line elements as segments between merged points, and per point the segments that
+// meet there. Throws InputError when the group is missing or has fewer than `least` segments.
+struct CurveGraph {
+  std::vector<std::array<int, 2>> segments;
+  std::vector<std::vector<int>> at;
+  std::string where;
+};
 
-std::vector<Vec3> closed_curve_points(const GmshModel& model, const std::string& group,
-                                      double tolerance) {
+CurveGraph curve_graph(const GmshModel& model, const std::string& group, double tolerance,
+                       std::size_t least, const char* expected) {
   const GmshPhysicalGroup* curve = model.find_group(group, 1);
-  const std::string where = fmt::format("{}: curve group '{}'", quoted(model.file), group);
+  CurveGraph g;
+  g.where = fmt::format("{}: curve group '{}'", quoted(model.file), group);
   if (!curve) {
     throw InputError(
         fmt::format("{}: no 1-D physical group '{}' (a Physical Curve) in the file; "
                     "its groups: {}",
                     quoted(model.file), group, model.list_groups()));
   }
-  std::vector<std::array<int, 2>> segments = line_segments(model, *curve);
-  const std::vector<int> same = merged_nodes(model, segments, tolerance);
-  std::erase_if(segments, [&](std::array<int, 2>& s) {
+  g.segments = line_segments(model, *curve);
+  const std::vector<int> same = merged_nodes(model, g.segments, tolerance);
+  std::erase_if(g.segments, [&](std::array<int, 2>& s) {
     s = {same[s[0]], same[s[1]]};
     return s[0] == s[1];  // shorter than the tolerance
   });
-  if (segments.size() < 3) {
-    throw InputError(fmt::format("{}: {} line elements, expected a closed line of at least 3",
-                                 where, segments.size()));
+  if (g.segments.size() < least) {
+    throw InputError(
+        fmt::format("{}: {} line elements, expected {}", g.where, g.segments.size(), expected));
   }
-  // Per point, the segments that meet there (two on a closed line).
-  std::vector<std::vector<int>> at(same.size());
-  for (std::size_t k = 0; k < segments.size(); ++k) {
-    for (const int p : segments[k]) {
-      at[static_cast<std::size_t>(p)].push_back(static_cast<int>(k));
+  g.at.resize(same.size());
+  for (std::size_t k = 0; k < g.segments.size(); ++k) {
+    for (const int p : g.segments[k]) {
+      g.at[static_cast<std::size_t>(p)].push_back(static_cast<int>(k));
     }
   }
-  for (std::size_t p = 0; p < at.size(); ++p) {
-    if (!at[p].empty() && at[p].size() != 2) {
-      const auto c = model.node_coords.col(static_cast<Eigen::Index>(p));
-      throw InputError(fmt::format(
-          "{}: {} at ({:g}, {:g}, {:g}) mm: expected a closed line, each point joining two "
-          "lines",
-          where,
-          at[p].size() == 1 ? "the line is not closed: an end meets no other"
-                            : fmt::format("{} lines meet", at[p].size()),
-          c.x(), c.y(), c.z()));
-    }
-  }
+  return g;
+}
+
+// The points met walking from `point` along `segment` until the line ends or closes.
+std::vector<Vec3> walk(const GmshModel& model, const CurveGraph& g, int segment, int point) {
   std::vector<Vec3> points;
-  std::vector<char> walked(segments.size(), 0);
-  int segment = 0, point = segments[0][0];
-  for (std::size_t n = 0; n < segments.size() && !walked[static_cast<std::size_t>(segment)]; ++n) {
+  std::vector<char> walked(g.segments.size(), 0);
+  while (segment >= 0 && !walked[static_cast<std::size_t>(segment)]) {
     walked[static_cast<std::size_t>(segment)] = 1;
     points.push_back(model.node_coords.col(point));
-    const auto& s = segments[static_cast<std::size_t>(segment)];
+    const auto& s = g.segments[static_cast<std::size_t>(segment)];
     point = s[0] == point ? s[1] : s[0];
-    const auto& next = at[static_cast<std::size_t>(point)];
-    segment = next[0] == segment ? next[1] : next[0];
+    const auto& next = g.at[static_cast<std::size_t>(point)];
+    segment = next.size() < 2 ? -1 : (next[0] == segment ? next[1] : next[0]);
   }
-  if (points.size() != segments.size()) {
+  return points;
+}
+
+// "WHERE: WHAT at (x, y, z) mm: EXPECTED".
+[[noreturn]] void fail_at_point(const GmshModel& model, const CurveGraph& g, std::size_t p,
+                                const std::string& what, const char* expected) {
+  const auto c = model.node_coords.col(static_cast<Eigen::Index>(p));
+  throw InputError(fmt::format("{}: {} at ({:g}, {:g}, {:g}) mm: {}", g.where, what, c.x(), c.y(),
+                               c.z(), expected));
+}
+
+}  // namespace
+
+std::vector<Vec3> closed_curve_points(const GmshModel& model, const std::string& group,
+                                      double tolerance) {
+  const CurveGraph g = curve_graph(model, group, tolerance, 3, "a closed line of at least 3");
+  for (std::size_t p = 0; p < g.at.size(); ++p) {
+    if (!g.at[p].empty() && g.at[p].size() != 2) {
+      fail_at_point(model, g, p,
+                    g.at[p].size() == 1
+                        ? std::string("the line is not closed: an end meets no other")
+                        : fmt::format("{} lines meet", g.at[p].size()),
+                    "expected a closed line, each point joining two lines");
+    }
+  }
+  std::vector<Vec3> points = walk(model, g, 0, g.segments[0][0]);
+  if (points.size() != g.segments.size()) {
     throw InputError(
         fmt::format("{}: more than one closed line ({} of its {} line elements in "
                     "the first); expected one",
-                    where, points.size(), segments.size()));
+                    g.where, points.size(), g.segments.size()));
+  }
+  return points;
+}
+
+std::vector<Vec3> open_curve_points(const GmshModel& model, const std::string& group,
+                                    double tolerance) {
+  const CurveGraph g = curve_graph(model, group, tolerance, 1, "an open line of at least 1");
+  std::vector<std::size_t> ends;
+  for (std::size_t p = 0; p < g.at.size(); ++p) {
+    if (g.at[p].size() > 2) {
+      fail_at_point(model, g, p, fmt::format("{} lines meet", g.at[p].size()),
+                    "expected one open line");
+    }
+    if (g.at[p].size() == 1) {
+      ends.push_back(p);
+    }
+  }
+  if (ends.size() != 2) {
+    throw InputError(fmt::format(
+        "{}: {} ends, expected one open line (2 ends){}", g.where, ends.size(),
+        ends.empty() ? " (the line is closed)" : " (more than one line, or a gap between curves)"));
+  }
+  const int first = static_cast<int>(ends.front());
+  std::vector<Vec3> points = walk(model, g, g.at[ends.front()][0], first);
+  points.push_back(model.node_coords.col(static_cast<Eigen::Index>(ends.back())));
+  if (points.size() != g.segments.size() + 1) {
+    throw InputError(
+        fmt::format("{}: more than one line ({} of its {} line elements in the "
+                    "first); expected one",
+                    g.where, points.size() - 1, g.segments.size()));
   }
   return points;
 }

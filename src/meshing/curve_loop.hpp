@@ -1,6 +1,6 @@
 #pragma once
-// A closed line from the curves of a gmsh model: a trim line drawn in a .geo file (a Physical
-// Curve), kept in a .msh file, or made of a CAD file's curves (meshing/mesh_import.hpp,
+// A closed (or open) line from the curves of a gmsh model: a trim line drawn in a .geo file (a
+// Physical Curve), kept in a .msh file, or made of a CAD file's curves (meshing/mesh_import.hpp,
 // curves_only). The curves' line elements are joined end to end into one closed loop of points.
 #include <string>
 #include <vector>
@@ -20,5 +20,11 @@ namespace sf {
 /// one loop.
 std::vector<Vec3> closed_curve_points(const GmshModel& model, const std::string& group,
                                       double tolerance);
+
+/// The same for an open line (a drawbead's): its line elements joined end to end from one end
+/// to the other (from the end with the lower node index), both ends included. Throws InputError
+/// for a missing group, no line elements, a closed line, a branch, or more than one line.
+std::vector<Vec3> open_curve_points(const GmshModel& model, const std::string& group,
+                                    double tolerance);
 
 }  // namespace sf

@@ -11,6 +11,9 @@
 #include "core/errors.hpp"
 #include "mesh/nodal_area.hpp"
 #include "mesh/triangle_distance.hpp"
+#include "meshing/curve_loop.hpp"
+#include "meshing/gmsh_reader.hpp"
+#include "meshing/mesh_import.hpp"
 #include "model/blank_parts.hpp"
 
 namespace sf {
@@ -43,27 +46,55 @@ SurfacePoint nearest_on_surface(const TriangleSurface& surface, const Vec3& p) {
   return best;
 }
 
+// The line's points as given: the polyline, or the curves of its file meshed by gmsh (sandboxed)
+// and joined into one open line. Errors name the case file and the key.
+std::vector<Vec3> given_points(const CaseConfig& config, std::size_t b) {
+  const DrawbeadConfig& bead = config.drawbeads[b];
+  std::vector<Vec3> points;
+  if (bead.line_file.empty()) {
+    for (const auto& p : bead.line) {
+      points.push_back(Vec3(p[0], p[1], p[2]));
+    }
+    return points;
+  }
+  const bool meshed = is_meshed(mesh_format(bead.line_file));
+  MeshImportOptions import;
+  import.group = bead.line_group;
+  import.curves_only = true;
+  import.curves = bead.line_curves;
+  try {
+    const GmshModel curves = load_gmsh_model(bead.line_file, meshed ? bead.line_element_size : 0.0,
+                                             false, {}, import, mesh_limits(config.limits));
+    return open_curve_points(curves, bead.line_group, 0.01 * bead.line_element_size);
+  } catch (const InputError& error) {
+    throw InputError(
+        fmt::format("{}: drawbeads[{}].line_file: {}", config.file.string(), b, error.what()));
+  }
+}
+
 // The line as the tool stands, cut into pieces no longer than a quarter of the width and laid on
 // the tool's surface.
 void lay_line(const CaseConfig& config, std::size_t b, const Tool& tool, const Vec3& shift,
               DrawbeadLine& line) {
   const DrawbeadConfig& bead = config.drawbeads[b];
   const double reach = 0.5 * bead.width;
-  std::vector<Vec3> given;
-  for (const auto& p : bead.line) {
-    given.push_back(Vec3(p[0], p[1], p[2]) + shift);
+  std::vector<Vec3> given = given_points(config, b);
+  for (Vec3& p : given) {
+    p += shift;
   }
   for (std::size_t k = 0; k < given.size(); ++k) {
     const Vec3& p = given[k];
     const Vec3& next = k + 1 < given.size() ? given[k + 1] : p;
-    const int pieces = std::max(1, static_cast<int>(std::ceil((next - p).norm() / (0.5 * reach))));
+    // (a length of whole pieces, give or take rounding, is not cut once more)
+    const int pieces =
+        std::max(1, static_cast<int>(std::ceil((next - p).norm() / (0.5 * reach) - 1e-9)));
     for (int j = 0; j < (k + 1 < given.size() ? pieces : 1); ++j) {
       const SurfacePoint on =
           nearest_on_surface(tool.surface, p + (double(j) / pieces) * (next - p));
       if (!(on.distance <= reach)) {
-        const auto& g = bead.line[k];
+        const Vec3 g = given[k] - shift;
         const std::string what =
-            j == 0 ? fmt::format("point {} ({:g}, {:g}, {:g})", k + 1, g[0], g[1], g[2])
+            j == 0 ? fmt::format("point {} ({:g}, {:g}, {:g})", k + 1, g.x(), g.y(), g.z())
                    : fmt::format("the line between points {} and {}", k + 1, k + 2);
         throw InputError(fmt::format(
             "{}: {} is {:.4g} mm from tool '{}' surface, more than half the bead's width "

@@ -147,6 +147,40 @@ TEST(DrawbeadRun, PulledStripFeelsTheBeadForceTimesItsWidth) {
   EXPECT_LT(max_balance, 1e-2);
 }
 
+TEST(DrawbeadRun, LineFromAGeoCurveIsThePolylinesLine) {
+  // The same line as kBead's, drawn in a .geo as a Physical Curve: the laid line is the same.
+  const fs::path folder = fs::path(SF_BINARY_DIR) / "test_output" / "drawbead_geo";
+  fs::create_directories(folder);
+  std::ofstream(folder / "bead.geo") << R"(
+Point(1) = {30, -5, 0.5}; Point(2) = {30, 5, 0.5}; Point(3) = {30, 15, 0.5};
+Line(1) = {1, 2}; Line(2) = {2, 3};
+Physical Curve("bead") = {1, 2};
+)";
+  std::string from_file = kBead;
+  const std::string polyline = "line = [[30.0, -5.0, 0.5], [30.0, 15.0, 0.5]]";
+  from_file.replace(from_file.find(polyline), polyline.size(), "line_file = \"bead.geo\"");
+  const Model by_points = build_model(strip_case("drawbead_geo", kBead));
+  const Model by_file = build_model(strip_case("drawbead_geo", from_file));
+  const DrawbeadLine& a = by_points.drawbeads[0].line;
+  const DrawbeadLine& b = by_file.drawbeads[0].line;
+  ASSERT_EQ(a.points.size(), b.points.size());
+  for (std::size_t k = 0; k < a.points.size(); ++k) {
+    EXPECT_NEAR((a.points[k] - b.points[k]).norm(), 0.0, 1e-9) << k;
+  }
+  EXPECT_NEAR(b.length(), 20.0, 1e-9);
+  // A closed curve is not a bead line.
+  std::ofstream(folder / "loop.geo") << R"(
+Point(1) = {30, -5, 0.5}; Point(2) = {40, -5, 0.5}; Point(3) = {30, 15, 0.5};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 1};
+Physical Curve("bead") = {1, 2, 3};
+)";
+  std::string loop = from_file;
+  loop.replace(loop.find("bead.geo"), 8, "loop.geo");
+  const CaseConfig closed = strip_case("drawbead_geo", loop);
+  test::expect_input_error([&] { build_model(closed); },
+                           {"drawbeads[0].line_file", "curve group 'bead'", "the line is closed"});
+}
+
 TEST(DrawbeadRun, BadBeadLinesAreRefused) {
   // A line that misses the binder (10 mm above it).
   const std::string off = fmt::format(R"(
