@@ -111,6 +111,32 @@ void lay_line(const CaseConfig& config, std::size_t b, const Tool& tool, const V
   }
 }
 
+// Drops the laid points where the line runs straight on a flat face (the point within 1e-9 of
+// the width of the chord of its neighbours, its normal theirs within 1e-9): each segment costs
+// every node near the line a distance per cycle, and a straight bead on a flat binder is one.
+void drop_straight_points(DrawbeadLine& line) {
+  std::vector<Vec3> points{line.points.front()};
+  std::vector<Vec3> normals{line.normals.front()};
+  const double tolerance = 1e-9 * line.width;
+  for (std::size_t k = 1; k + 1 < line.points.size(); ++k) {
+    const Vec3& a = points.back();
+    const Vec3& b = line.points[k + 1];
+    const Vec3 chord = (b - a).normalized();
+    const Vec3 off = line.points[k] - a;
+    const bool straight = (off - off.dot(chord) * chord).norm() <= tolerance &&
+                          (line.normals[k] - normals.back()).norm() <= 1e-9 &&
+                          (line.normals[k + 1] - normals.back()).norm() <= 1e-9;
+    if (!straight) {
+      points.push_back(line.points[k]);
+      normals.push_back(line.normals[k]);
+    }
+  }
+  points.push_back(line.points.back());
+  normals.push_back(line.normals.back());
+  line.points = std::move(points);
+  line.normals = std::move(normals);
+}
+
 // The round bead's hardening curve (MPa against the equivalent plastic strain): the constant
 // `flow_stress` given, or the blank material's.
 std::function<double(double)> bead_flow_stress(const CaseConfig& config, std::size_t b,
@@ -202,6 +228,9 @@ void set_up_drawbeads(const CaseConfig& config, Model& model) {
     line.width = bead.width;
     line.locking = bead.locking;
     lay_line(config, b, *tool, tool->touch_shift * direction, line);
+    if (line.points.size() >= 2) {
+      drop_straight_points(line);
+    }
     if (line.points.size() < 2) {
       throw InputError(fmt::format("{}: the bead line lies on one point of tool '{}' surface",
                                    where(config, b), tool->name));
