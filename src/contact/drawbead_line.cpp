@@ -6,6 +6,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "contact/tool_frame.hpp"
+#include "mesh/nodal_area.hpp"
+
 namespace sf {
 namespace {
 
@@ -60,9 +63,7 @@ bool inside_box(const DrawbeadLine& line, const Vec3& p) {
 // The bead's force on node i, added to f_contact and its reaction to the share.
 void node_force(const DrawbeadLine& line, DrawbeadState& state, const ContactKinematics& kin,
                 bool rotating, int i, DrawbeadShare& share, Matrix3X& f_contact) {
-  const Vec3 p = rotating
-                     ? Vec3(kin.tool_rotation.transpose() * (kin.x.col(i) - kin.tool_displacement))
-                     : Vec3(kin.x.col(i) - kin.tool_displacement);
+  const Vec3 p = node_in_tool_frame(kin, rotating, i);
   double& stored = state.restraint[i];
   const LinePlace place = inside_box(line, p) ? place_on_line(line, p) : LinePlace{};
   const double half_width = 0.5 * line.width;
@@ -70,20 +71,20 @@ void node_force(const DrawbeadLine& line, DrawbeadState& state, const ContactKin
   const double closure =
       place.on_line ? std::clamp(1.0 - (std::abs(place.d) - h) / line.height, 0.0, 1.0) : 0.0;
   if (!(std::abs(place.s) < half_width) || !(closure > 0.0)) {
-    stored = 0.0;
+    if (stored != 0.0) {  // most nodes are far off every bead: no store for them
+      stored = 0.0;
+    }
     return;
   }
   const double window =
-      (1.0 + std::cos(std::numbers::pi * place.s / half_width)) / line.width;  // 1/mm
-  const double area = line.area[i] * line.start_half_thickness[i] / h;         // mm^2
-  const double share_of_line = area * window;                                  // mm of line
+      (1.0 + std::cos(std::numbers::pi * place.s / half_width)) / line.width;   // 1/mm
+  const double area = area_now(line.area[i], line.start_half_thickness[i], h);  // mm^2
+  const double share_of_line = area * window;                                   // mm of line
   const Vec3 across = rotating ? Vec3(kin.tool_rotation * place.across) : place.across;
   const Vec3 normal = rotating ? Vec3(kin.tool_rotation * place.normal) : place.normal;
   // The node's step across the line relative to the tool's point at it.
-  const Vec3 tool_step = rotating ? Vec3((kin.tool_rotation - kin.tool_rotation_previous) * p +
-                                         kin.tool_displacement_increment)
-                                  : kin.tool_displacement_increment;
-  const double du = kin.dt > 0.0 ? (kin.dt * kin.v.col(i) - tool_step).dot(across) : 0.0;
+  const double du =
+      kin.dt > 0.0 ? (kin.dt * kin.v.col(i) - tool_step_at(kin, rotating, p)).dot(across) : 0.0;
   const double k = line.stiffness[i];
   const double trial = stored - k * du;
   double restraint = trial;
@@ -198,8 +199,7 @@ DrawbeadResult compute_drawbead_forces(const DrawbeadLine& line, DrawbeadState& 
       shares->resize(static_cast<std::size_t>(threads));
     }
   }
-  const bool rotating =
-      kin.tool_rotation != Mat3::Identity() || kin.tool_rotation_previous != Mat3::Identity();
+  const bool rotating = tool_turns(kin);
   int used = 1;
   // Each node writes only its own entries; the sums are exact, so the share-out cannot change a
   // bit of the result.

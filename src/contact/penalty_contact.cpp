@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "contact/tool_frame.hpp"
 #include "core/errors.hpp"
 #include "mesh/nodal_area.hpp"
 
@@ -83,11 +84,8 @@ void add_node_force(const ContactPair& pair, ContactState& state,
   result.energy.add(0.5 * k * g * g);
   ++result.nodes_in_contact;
   // The node's step relative to the tool's point where it is (a translating tool's: its own).
-  const Vec3 tool_step =
-      rotating ? Vec3((kinematics.tool_rotation - kinematics.tool_rotation_previous) * p +
-                      kinematics.tool_displacement_increment)
-               : kinematics.tool_displacement_increment;
-  const Vec3 increment = kinematics.dt * kinematics.v.col(i) - tool_step;
+  const Vec3 increment =
+      kinematics.dt * kinematics.v.col(i) - tool_step_at(kinematics, rotating, p);
   state.normal_force[i] = normal_force;
   state.sliding_distance[i] += (increment - increment.dot(normal) * normal).norm();
   if (pair.friction.active()) {
@@ -173,8 +171,7 @@ void contact_block(const ContactPair& pair, ContactState& state,
                    const ContactKinematics& kinematics, std::span<const int> list, int begin,
                    int end, ContactShare& share, Matrix3X& f_contact) {
   const bool friction = pair.friction.active();
-  const bool rotating = kinematics.tool_rotation != Mat3::Identity() ||
-                        kinematics.tool_rotation_previous != Mat3::Identity();
+  const bool rotating = tool_turns(kinematics);
   for (int k = begin; k < end; ++k) {
     const int i = list.empty() ? k : list[static_cast<std::size_t>(k)];
     const double h = kinematics.half_thickness[i];
@@ -186,9 +183,7 @@ void contact_block(const ContactPair& pair, ContactState& state,
       continue;
     }
     // In the tool's mesh frame, where its search, projection and distance bounds live.
-    const Vec3 p = rotating ? Vec3(kinematics.tool_rotation.transpose() *
-                                   (kinematics.x.col(i) - kinematics.tool_displacement))
-                            : Vec3(kinematics.x.col(i) - kinematics.tool_displacement);
+    const Vec3 p = node_in_tool_frame(kinematics, rotating, i);
     // A skipped node's stick and normal forces are zero already, so they are not written (memory
     // traffic is most of a skipped node's cost): a node is skipped only while its bound is
     // positive, and a bound is set in a call where the node is out of contact -- skipped, or

@@ -30,7 +30,7 @@ void ContactFieldsOutput::add_fields(const Model& model, const SolutionState& s,
     for (Eigen::Index i = 0; i < n; ++i) {
       const double force = sized ? c.normal_force[i] : 0.0;
       const double h = s.half_thickness.size() == n ? s.half_thickness[i] : 0.0;
-      const double area = h > 0.0 ? start_area_[i] * start_half_thickness_[i] / h : start_area_[i];
+      const double area = area_now(start_area_[i], start_half_thickness_[i], h);
       pressure[i] = area > 0.0 ? force / area : 0.0;
       if (force > strongest_[i]) {
         strongest_[i] = force;

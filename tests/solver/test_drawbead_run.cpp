@@ -220,17 +220,9 @@ height = 1.0
   refuses("drawbead_locking_limit",
           head + "locking = true\nclosure = [0.0, 1.0]\nrestraining_force = [0.0, 5.0]\n",
           {"drawbeads[0].restraining_force", "locking"});
-  refuses("drawbead_tool", R"(
-[[drawbeads]]
-name = "b"
-tool = "punch"
-line = [[30.0, -5.0, 0.5], [30.0, 15.0, 0.5]]
-width = 4.0
-height = 1.0
-closure = [0.0, 1.0]
-restraining_force = [0.0, 5.0]
-)",
-          {"drawbeads[0].tool", "[[tools]]"});
+  std::string punch = head + "closure = [0.0, 1.0]\nrestraining_force = [0.0, 5.0]\n";
+  punch.replace(punch.find("\"binder\""), 8, "\"punch\"");
+  refuses("drawbead_tool", punch, {"drawbeads[0].tool", "[[tools]]"});
   refuses("drawbead_round_keys",
           head + "closure = [0.0, 1.0]\nrestraining_force = [0.0, 5.0]\n" + "bead_radius = 4.0\n",
           {"drawbeads[0].bead_radius", "round_bead"});
