@@ -163,7 +163,7 @@ def flc_major(minor, curve):
 
 
 def flc_margin(minor, major, curve):
-    """Major strain minus the forming limit curve's major strain at the same minor strain
-    (`flc_major`). Positive = above the curve (beyond the limit); negative = below it, by that
-    much major strain."""
-    return np.asarray(major, dtype=float) - flc_major(minor, curve)
+    """The forming limit curve's major strain at the same minor strain (`flc_major`) minus the
+    major strain, as sheetform's `flc_margin` result field: positive = below the curve (the safe
+    side, by that much major strain); negative = above it (beyond the limit)."""
+    return flc_major(minor, curve) - np.asarray(major, dtype=float)

@@ -295,6 +295,12 @@ void read_output(const TomlSection& top, const fs::path& folder, OutputConfig& o
   }
 }
 
+void read_formability(const TomlSection& top, FormabilityConfig& formability) {
+  if (const auto s = top.sub_table("formability", Presence::optional)) {
+    read_table(*s, formability_fields(), formability);
+  }
+}
+
 void read_limits(const TomlSection& top, LimitsConfig& limits) {
   if (const auto s = top.sub_table("limits", Presence::optional)) {
     read_table(*s, limits_fields(), limits);
@@ -408,6 +414,7 @@ CaseConfig read_case(const fs::path& case_file, const CaseOptions& options) {
               "history",
               "node_group",
               "limits",
+              "formability",
               "operations",
               "drawbeads"});
   read_materials(top, config.materials);
@@ -421,6 +428,7 @@ CaseConfig read_case(const fs::path& case_file, const CaseOptions& options) {
   read_control(top, config, config.control);
   read_limits(top, config.limits);
   read_output(top, folder, config.output);
+  read_formability(top, config.formability);
   read_implicit_sections(top, config);
   check_constraints_for_analysis(top, config);
   read_history_groups(top, config);

@@ -105,8 +105,9 @@ struct MaterialConfig {
   KinematicConfig kinematic;  ///< any plastic type; empty = none
   CowperSymondsConfig cowper_symonds;  ///< any plastic type; D = 0 = none
   /// Optional forming limit curve: [minor, major] true (logarithmic) strain points, minor
-  /// strictly increasing, major > 0; empty = none. Not used by the solver: read back from
-  /// case.resolved.toml by scripts/plot_forming_limit.py.
+  /// strictly increasing, major > 0, falling to its lowest point and rising after it; empty =
+  /// the Keeler-Brazier curve from the Swift exponent n and the thickness, or none
+  /// (model/forming_limit.hpp; the formability results, docs/formability.md).
   std::vector<std::array<double, 2>> forming_limit_curve;
 };
 
@@ -489,6 +490,25 @@ struct OutputConfig {
   bool stress_layers = true;          ///< write mid, top and bottom stress per element
 };
 
+/// [formability] (docs/formability.md): how the formability results of every frame (strains,
+/// thinning, the margin to the forming limit curve, the zone) are judged. True strains, -.
+struct FormabilityConfig {
+  /// Which surface's strains decide the margin and the zone.
+  enum class Surface { mid, top, bottom, worst };
+  Surface surface = Surface::mid;
+  double safety_margin = 0.10;         ///< -, true major strain below the FLC: "risk of cracks"
+  double insufficient_stretch = 0.02;  ///< -, major true strain below which a part is loose
+  double wrinkle_thickening = 0.01;    ///< -, -(major + minor) above which: wrinkling tendency
+  double severe_thinning = 30.0;       ///< per cent of the initial thickness
+};
+
+inline constexpr std::array<Choice<FormabilityConfig::Surface>, 4> kFormabilitySurfaceNames{{
+    {FormabilityConfig::Surface::mid, "mid", "the mid-surface (membrane) strains"},
+    {FormabilityConfig::Surface::top, "top", ""},
+    {FormabilityConfig::Surface::bottom, "bottom", ""},
+    {FormabilityConfig::Surface::worst, "worst", "the surface with the least margin"},
+}};
+
 /// What the case runs: an explicit forming run (optionally followed by springback), or a static
 /// analysis of the blank under its loads and boundary conditions (docs/static-analysis.md).
 struct AnalysisConfig {
@@ -566,6 +586,7 @@ struct CaseConfig {
   std::vector<BoundaryConfig> boundaries;
   ControlConfig control;
   OutputConfig output;
+  FormabilityConfig formability;  ///< [formability]
   LimitsConfig limits;
   std::vector<DrawInConfig> draw_ins;                           ///< [[draw_in]] tables
   std::vector<HistoryGroupConfig> history_groups;               ///< [[history]] tables

@@ -138,6 +138,8 @@ std::string format_resolved_case(const CaseConfig& config) {
   write_drawbeads(w, config);
   w.header("output");
   write_fields(output_fields(), w, config.output);
+  w.header("formability");
+  write_fields(formability_fields(), w, config.formability);
   w.header("limits");
   write_fields(limits_fields(), w, config.limits);
   return w.take();

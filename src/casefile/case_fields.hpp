@@ -22,6 +22,7 @@ const FieldTable<ContactConfig>& contact_fields();
 const FieldTable<CaseConfig>& top_level_fields();
 const FieldTable<ControlConfig>& control_fields();
 const FieldTable<OutputConfig>& output_fields();
+const FieldTable<FormabilityConfig>& formability_fields();
 const FieldTable<LimitsConfig>& limits_fields();
 const FieldTable<DrawInConfig>& draw_in_fields();
 

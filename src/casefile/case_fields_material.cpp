@@ -56,6 +56,23 @@ void read_forming_limit_curve(const TomlSection& s, std::vector<std::array<doubl
     }
     curve.push_back({*minor, *major});
   }
+  // A forming limit curve falls to its lowest point (near plane strain) and rises after it.
+  const auto lowest = static_cast<std::size_t>(
+      std::min_element(curve.begin(), curve.end(),
+                       [](const auto& a, const auto& b) { return a[1] < b[1]; }) -
+      curve.begin());
+  for (std::size_t i = 1; i < curve.size(); ++i) {
+    const bool left = i <= lowest;
+    if (left ? curve[i][1] > curve[i - 1][1] : curve[i][1] < curve[i - 1][1]) {
+      s.fail_at(
+          *points->get(i), fmt::format("{}[{}]", s.key_path(key), i),
+          fmt::format("expected a curve that falls to its lowest major strain ({} at "
+                      "minor {}) and rises after it; major {} at minor {} {} after {}",
+                      format_toml_number(curve[lowest][1]), format_toml_number(curve[lowest][0]),
+                      format_toml_number(curve[i][1]), format_toml_number(curve[i][0]),
+                      left ? "rises" : "falls", format_toml_number(curve[i - 1][1])));
+    }
+  }
   out = std::move(curve);
 }
 
@@ -130,15 +147,15 @@ FieldTable<MaterialConfig> make_material_fields() {
   t.push_back(custom_field<M>(
                   {"forming_limit_curve", "array of `[minor, major]`", "none", "— (true strain)",
                    "any type: the forming limit curve, at least 2 points of finite numbers, "
-                   "minor strain strictly increasing, major strain > 0; used by "
-                   "scripts/plot_forming_limit.py only"},
+                   "minor strain strictly increasing, major strain > 0, falling to its lowest "
+                   "point and rising after it; the formability results' margin and zones "
+                   "(docs/formability.md). None: the Keeler-Brazier curve of a Swift law's n"},
                   [](const TomlSection& s, M& m, Presence) {
                     read_forming_limit_curve(s, m.forming_limit_curve);
                   },
                   [](TomlWriter& w, const M& m) {
                     w.points("forming_limit_curve", m.forming_limit_curve,
-                             "[[minor, major], ...] true strains; used by "
-                             "scripts/plot_forming_limit.py only");
+                             "[[minor, major], ...] true strains (docs/formability.md)");
                   })
                   .write_if([](const M& m) { return !m.forming_limit_curve.empty(); }));
   return t;

@@ -1,4 +1,5 @@
-// The field tables of the top level, [control], [output], [limits] and [[draw_in]].
+// The field tables of the top level, [control], [output], [formability], [limits] and
+// [[draw_in]].
 #include <fmt/core.h>
 
 #include <stdexcept>
@@ -117,6 +118,27 @@ FieldTable<OutputConfig> make_output_fields() {
   return t;
 }
 
+FieldTable<FormabilityConfig> make_formability_fields() {
+  using F = FormabilityConfig;
+  FieldTable<F> t;
+  t.push_back(choice_field<F, F::Surface>("surface", &F::surface, kFormabilitySurfaceNames,
+                                          "the strains that decide `flc_margin` and the zone"));
+  t.push_back(number_field<F>("safety_margin", &F::safety_margin, at_least(0.0),
+                              "true strain: an element less than this below its FLC is at "
+                              "risk of cracks"));
+  t.push_back(number_field<F>("insufficient_stretch", &F::insufficient_stretch, at_least(0.0),
+                              "true strain: a major strain below this is insufficient "
+                              "stretching"));
+  t.push_back(number_field<F>("wrinkle_thickening", &F::wrinkle_thickening, at_least(0.0),
+                              "true strain: -(major + minor) above this (the minor strain "
+                              "compressive beyond the major) is a wrinkling tendency"));
+  t.push_back(number_field<F>("severe_thinning", &F::severe_thinning,
+                              interval(0.0, true, 100.0, false, "%"),
+                              "thinning, per cent of the initial thickness, from which an "
+                              "element is severely thinned"));
+  return t;
+}
+
 FieldTable<LimitsConfig> make_limits_fields() {
   using L = LimitsConfig;
   FieldTable<L> t;
@@ -194,6 +216,11 @@ const FieldTable<ControlConfig>& control_fields() {
 
 const FieldTable<OutputConfig>& output_fields() {
   static const FieldTable<OutputConfig> table = make_output_fields();
+  return table;
+}
+
+const FieldTable<FormabilityConfig>& formability_fields() {
+  static const FieldTable<FormabilityConfig> table = make_formability_fields();
   return table;
 }
 

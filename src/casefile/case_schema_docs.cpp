@@ -24,6 +24,7 @@ std::vector<SchemaSection> case_schema() {
       {"history", field_docs(history_group_fields())},
       {"control", field_docs(control_fields())},
       {"output", field_docs(output_fields())},
+      {"formability", field_docs(formability_fields())},
       {"limits", field_docs(limits_fields())},
       {"load", field_docs(load_fields())},
       {"initial_velocity", field_docs(initial_velocity_fields())},

@@ -1,6 +1,8 @@
 #include "element/shell_surface_strain.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
 
 namespace sf {
 
@@ -65,6 +67,23 @@ Strain6 surface_log_strain(const ElementCorners& c, double zeta, double t0, doub
   Strain6 out;
   out << strain(0, 0), strain(1, 1), strain(2, 2), strain(0, 1), strain(1, 2), strain(0, 2);
   return out;
+}
+
+PrincipalStrains surface_principal_strains(const ElementCorners& c, double zeta, double t0,
+                                           double t) {
+  const Mat3 reference = surface_basis(c.X, c.N, 0.5 * zeta * t0);
+  const Mat3 current = surface_basis(c.x, c.n, 0.5 * zeta * t);
+  // Metrics of the tangents G_a (reference) and g_a (current); the squared principal stretches
+  // are the eigenvalues of M = G^-1 g (2 x 2).
+  const Eigen::Matrix2d big_g = reference.leftCols<2>().transpose() * reference.leftCols<2>();
+  const Eigen::Matrix2d small_g = current.leftCols<2>().transpose() * current.leftCols<2>();
+  const Eigen::Matrix2d m = big_g.inverse() * small_g;
+  const double mean = 0.5 * m.trace();
+  // mean^2 - det(M), written without its cancellation when the stretches are nearly equal.
+  const double half_difference = 0.5 * (m(0, 0) - m(1, 1));
+  const double radius =
+      std::sqrt(std::max(0.0, half_difference * half_difference + m(0, 1) * m(1, 0)));
+  return {0.5 * std::log(mean + radius), 0.5 * std::log(mean - radius)};
 }
 
 }  // namespace sf

@@ -30,4 +30,17 @@ struct ElementCorners {
 /// homogeneous deformation of a flat element.
 Strain6 surface_log_strain(const ElementCorners& corners, double zeta, double t0, double t);
 
+/// The in-plane principal true strains of a surface, major >= minor (-).
+struct PrincipalStrains {
+  double major = 0.0;
+  double minor = 0.0;
+};
+
+/// The principal strains in the surface's tangent plane at zeta (as surface_log_strain, whose
+/// in-plane eigenvalues they are: the normal is a principal direction, stretched by t / t0):
+/// half the logs of the eigenvalues of the surface's right Cauchy-Green tensor, from its
+/// reference and current tangent metrics. No allocation.
+PrincipalStrains surface_principal_strains(const ElementCorners& corners, double zeta, double t0,
+                                           double t);
+
 }  // namespace sf

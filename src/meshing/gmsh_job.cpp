@@ -67,10 +67,12 @@ void mesh_surfaces(const GmshJob& job, MeshFormat format) {
     }
     if (job.recombine) {
       gmsh::option::setNumber("Mesh.RecombineAll", 1);
-      // Frontal-Delaunay for quads; gmsh 4.8 crashes with it on a face read from a CAD file
-      // (backgroundMesh::getAngle, seen on a plane from STEP), so such faces are meshed with
-      // Frontal-Delaunay triangles and recombined.
-      gmsh::option::setNumber("Mesh.Algorithm", is_cad(format) ? 6 : 8);
+      // Frontal-Delaunay triangles, recombined (Blossom). Not Frontal-Delaunay for quads (8):
+      // gmsh 4.8.4 (Debian 12) crashes with it on a face read from a CAD file
+      // (backgroundMesh::getAngle, seen on a plane from STEP) and on every unstructured surface
+      // of a .geo tried, down to a 10 x 8 mm rectangle (SIGSEGV in the 2-D meshing; transfinite
+      // surfaces do not use the algorithm), tests/solver/test_formability_output.cpp's blank.
+      gmsh::option::setNumber("Mesh.Algorithm", 6);
     }
     gmsh::option::setNumber("Mesh.MaxNumThreads2D", 1);
     gmsh::model::mesh::generate(2);

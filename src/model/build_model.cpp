@@ -742,6 +742,7 @@ void copy_plans(const CaseConfig& config, Model& model) {
   output.draw_ins = config.draw_ins;
   output.history_groups = config.history_groups;
   output.reactions = make_reaction_entries(config);
+  model.formability = make_formability_plan(config);
   model.analysis.type = config.analysis.type;
   model.analysis.linear = config.analysis.linear;
   model.analysis.implicit = config.implicit;
@@ -764,6 +765,23 @@ CaseConfig resolve_case(const CaseConfig& config, const Model& model) {
   for (std::size_t t = 0; t < model.tools.size() && t < resolved.tools.size(); ++t) {
     if (model.tools[t].force_control) {
       resolved.tools[t].motion.mass = model.tools[t].force_control->mass();  // tonne
+    }
+  }
+  // A material judged by the Keeler-Brazier curve: that curve, when every part of it has the same
+  // (one thickness), so that the resolved case says what the run used.
+  const std::vector<BlankPartConfig> parts = config.blank_parts();
+  for (MaterialConfig& material : resolved.materials) {
+    const FormingLimitCurve* used = nullptr;
+    bool one_curve = material.forming_limit_curve.empty();
+    for (std::size_t i = 0; i < parts.size() && i < model.formability.part_curves.size(); ++i) {
+      const FormingLimitCurve& curve = model.formability.part_curves[i];
+      if (parts[i].material == material.name) {
+        one_curve = one_curve && !curve.empty() && (!used || used->points == curve.points);
+        used = &curve;
+      }
+    }
+    if (one_curve && used) {
+      material.forming_limit_curve = used->points;
     }
   }
   return resolved;

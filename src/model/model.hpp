@@ -16,6 +16,7 @@
 #include "mesh/triangle_surface.hpp"
 #include "model/boundary_conditions.hpp"
 #include "model/force_controlled_tool.hpp"
+#include "model/formability.hpp"
 #include "model/mass_scaling.hpp"
 #include "model/operation.hpp"
 #include "model/rigid_tool_motion.hpp"
@@ -202,6 +203,7 @@ struct Model {
   InitialConditions initial;
   TimeControl time;
   OutputPlan output;
+  FormabilityPlan formability;  ///< how the formability results judge the blank
   AnalysisPlan analysis;
   std::optional<SpringbackConfig> springback;  ///< the springback plan, when the case asks
   /// The press line's operations in order ([[operations]]); empty: the case runs as one forming

@@ -197,6 +197,7 @@ std::vector<PartTopology> FrameOutput::set_up(const Model& model) {
   stress_bottom_.resize(6, n_elements);
   needs_reactions_ = history_needs_reactions(model);
   contact_fields_.set_up(model);
+  formability_fields_.set_up(model);
   reaction_force_ = Matrix3X::Zero(3, model.blank.mesh.nodes.cols());
   reaction_moment_ = Matrix3X::Zero(3, model.blank.mesh.nodes.cols());
   return parts;
@@ -260,6 +261,7 @@ void FrameOutput::write_frame(const Model& model, const SolutionState& s) {
     blank.fields.push_back(
         {"back_stress_bottom", FieldCenter::cell, 6, back_stress_bottom_.data()});
   }
+  formability_fields_.add_fields(model, s.x, s.shell.thickness, blank.fields);
   contact_fields_.add_fields(model, s, blank.fields);
   for (const SearchAuditRecord& r : audits_.records()) {
     blank.fields.push_back({"search_miss_" + r.tool, FieldCenter::node, 1, r.miss.data()});

@@ -9,6 +9,7 @@
 #include "model/model.hpp"
 #include "results/results_writer.hpp"
 #include "solver/contact_output.hpp"
+#include "solver/formability_output.hpp"
 #include "solver/group_history.hpp"
 #include "solver/search_audit_recorder.hpp"
 #include "solver/solution_state.hpp"
@@ -99,6 +100,7 @@ class FrameOutput {
   std::vector<Matrix3X> tool_coordinates_;
   std::vector<Matrix3X> tool_displacement_;
   ContactFieldsOutput contact_fields_;
+  FormabilityFieldsOutput formability_fields_;
   std::vector<HistoryReader> history_readers_;  ///< the columns before the groups', in order
   std::vector<double> row_;
   long last_history_cycle_ = -1;  ///< one row per cycle at most

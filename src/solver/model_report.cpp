@@ -419,6 +419,23 @@ void print_drawbeads(const Model& model, const UnitSystem& units) {
   }
 }
 
+void print_formability(const Model& model) {
+  const FormabilityConfig& th = model.formability.thresholds;
+  for (std::size_t i = 0; i < model.formability.part_curves.size(); ++i) {
+    const FormingLimitCurve& curve = model.formability.part_curves[i];
+    log_info("FLC         part '{}': {}\n", model.blank.parts.at(i).name,
+             curve.empty() ? std::string("none (no forming_limit_curve and no Swift n): no margin, "
+                                         "no crack zones")
+                           : curve.source);
+  }
+  log_info(
+      "Formability {} surface; risk of cracks within {:.4g} of the FLC, severe thinning from "
+      "{:.4g} %, wrinkling tendency beyond {:.4g} thickening, insufficient stretching below "
+      "{:.4g} major strain\n",
+      choice_name<FormabilityConfig::Surface>(kFormabilitySurfaceNames, th.surface),
+      th.safety_margin, th.severe_thinning, th.wrinkle_thickening, th.insufficient_stretch);
+}
+
 void print_mesh_parameters(const CaseConfig& config) {
   const auto print = [](const std::string& part, const MeshSourceConfig& mesh) {
     if (mesh.parameters.empty()) {
@@ -557,6 +574,7 @@ void print_model(const CaseConfig& config, const Model& model) {
   print_tool_positions(config, model, units);
   print_contacts(config, model, units);
   print_drawbeads(model, units);
+  print_formability(model);
   print_history_groups(config, model);
   print_time_control(config, model, units);
 }

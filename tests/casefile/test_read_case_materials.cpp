@@ -205,8 +205,8 @@ std::string flc_case(std::string_view value) {
 }
 
 TEST_F(ReadCase, FormingLimitCurveReadsItsPoints) {
-  // True strains [minor, major]; integers accepted as numbers; only read and written back (the
-  // round trip is in test_read_case.cpp), the solver does not use it.
+  // True strains [minor, major]; integers accepted as numbers (the round trip is in
+  // test_read_case.cpp; the formability results use it, tests/model/test_formability.cpp).
   const sf::MaterialConfig m =
       sf::read_case(write_case(flc_case("[[-0.4, 0.6], [0, 0.25], [0.3, 0.4], [1, 1]]")))
           .blank_material();
@@ -256,6 +256,16 @@ TEST_F(ReadCase, FormingLimitCurveErrorsNameTheKeyAndThePoint) {
   text = flc_case("[[0.1, 0.3], [-0.2, 0.25]]");
   expect_error(text, line_of(text, "forming_limit_curve"),
                {"forming_limit_curve[1]", "strictly increasing", "got -0.2 after 0.1"});
+  // Falling to its lowest point, rising after it: a rise on the left and a fall on the right are
+  // refused at the point where they happen.
+  text = flc_case("[[-0.4, 0.5], [-0.2, 0.6], [0, 0.25], [0.3, 0.4]]");
+  expect_error(text, line_of(text, "forming_limit_curve"),
+               {"forming_limit_curve[1]", "falls to its lowest major strain (0.25 at minor 0.0)",
+                "major 0.6 at minor -0.2 rises after 0.5"});
+  text = flc_case("[[-0.4, 0.6], [0, 0.25], [0.2, 0.4], [0.4, 0.35]]");
+  expect_error(
+      text, line_of(text, "forming_limit_curve"),
+      {"forming_limit_curve[3]", "rises after it", "major 0.35 at minor 0.4 falls after 0.4"});
 }
 
 }  // namespace

@@ -74,7 +74,9 @@ if command -v pvpython >/dev/null; then
   expect "ParaView reads blank.xdmf" 0 "" -- pvpython "$src/scripts/check_xdmf.py" "$work/run/blank.xdmf" --times $times \
     --points 961 --cells 900 --point-arrays displacement:3 velocity:3 contact_force:3 \
     contact_pressure_punch:1 sliding_distance_punch:1 contact_pressure_die:1 sliding_distance_die:1 contact_pressure_holder:1 sliding_distance_holder:1 contact_tool:1 \
-    --cell-arrays thickness:1 plastic_strain:1 stress_mid:6 stress_top:6 stress_bottom:6
+    --cell-arrays thickness:1 plastic_strain:1 stress_mid:6 stress_top:6 stress_bottom:6 \
+    major_strain_bottom:1 minor_strain_bottom:1 major_strain_mid:1 minor_strain_mid:1 major_strain_top:1 minor_strain_top:1 \
+    thinning_percent:1 flc_margin:1 formability_zone:1 wrinkle_indicator:1
   for tool in punch die holder; do
     expect "ParaView reads $tool.xdmf" 0 "" -- pvpython "$src/scripts/check_xdmf.py" "$work/run/$tool.xdmf" --times $times \
       --points "$(grep -o 'Dimensions="[0-9]* 3"' "$work/run/$tool.xdmf" | sed -n 2p | grep -o '[0-9]*' | head -1)" \

@@ -84,7 +84,9 @@ read -r points cells <<<"$(sizes blank)"
 expect "ParaView reads blank.xdmf" 0 "OK \($(wc -w <<<"$times") time steps\)" -- pvpython "$src/scripts/check_xdmf.py" "$run/blank.xdmf" --times $times \
   --points "$points" --cells "$cells" --point-arrays displacement:3 velocity:3 contact_force:3 \
   contact_pressure_punch:1 sliding_distance_punch:1 contact_pressure_die:1 sliding_distance_die:1 contact_pressure_holder:1 sliding_distance_holder:1 contact_tool:1 \
-  --cell-arrays thickness:1 plastic_strain:1 stress_mid:6 stress_top:6 stress_bottom:6
+  --cell-arrays thickness:1 plastic_strain:1 stress_mid:6 stress_top:6 stress_bottom:6 \
+  major_strain_bottom:1 minor_strain_bottom:1 major_strain_mid:1 minor_strain_mid:1 major_strain_top:1 minor_strain_top:1 \
+  thinning_percent:1 flc_margin:1 formability_zone:1 wrinkle_indicator:1
 for tool in punch die holder; do
   read -r points cells <<<"$(sizes "$tool")"
   expect "ParaView reads $tool.xdmf" 0 "OK" -- pvpython "$src/scripts/check_xdmf.py" "$run/$tool.xdmf" --times $times \
@@ -172,7 +174,7 @@ echo "$out" | sed 's/^/     /'
 [ "$rc" -eq 0 ] && pass "plot_forming_limit.py --csv" || fail "plot_forming_limit.py: exit code $rc"
 png_ok "forming_limit.png" "$plots/forming_limit.png" 840 840
 check "forming limit CSV: one point per element, the printed count and worst margin" -- \
-  "$plots/forming_limit.csv" "$run/results.h5" "$out" "$run/case.resolved.toml" <<'EOF'
+  "$plots/forming_limit.csv" "$run/results.h5" "$out" "$run/case.resolved.toml" "$src/scripts" <<'EOF'
 import csv, re, sys, tomllib
 import h5py
 import numpy as np
@@ -185,21 +187,35 @@ assert [int(r["element"]) for r in rows] == list(range(n))
 major = np.array([float(r["major_true_strain"]) for r in rows])
 minor = np.array([float(r["minor_true_strain"]) for r in rows])
 margin = np.array([float(r["flc_margin"]) for r in rows])
+zone = np.array([int(r["formability_zone"]) for r in rows])
 assert np.all(major >= minor)
 # The curve [[-0.2, 0.02], [0.0, 0.008], [0.2, 0.02]] by hand at each minor strain (1e-15).
 limit = np.where(minor < 0.0, 0.008 - 0.06 * np.maximum(minor, -0.2), 0.008 + 0.06 * np.minimum(minor, 0.2))
-assert np.allclose(margin, major - limit, rtol=0.0, atol=1e-15)
-above = int(np.count_nonzero(margin > 0.0))
-match = re.search(r"(\d+) of (\d+) elements above the forming limit curve; worst margin (\S+)", sys.argv[3])
+assert np.allclose(margin, limit - major, rtol=0.0, atol=1e-15)
+above = int(np.count_nonzero(margin < 0.0))
+match = re.search(r"(\d+) of (\d+) elements above the forming limit curve; least margin (\S+)", sys.argv[3])
 assert match, "no count printed"
 assert int(match.group(1)) == above and int(match.group(2)) == n, (match.group(0), above, n)
 assert 0 < above < n, f"{above} of {n} above: the made-up curve should split them"
-assert abs(float(match.group(3)) - margin.max()) <= 1e-5 * abs(margin.max())  # printed to 6 digits
+assert abs(float(match.group(3)) - margin.min()) <= 1e-5 * abs(margin.min())  # printed to 6 digits
+# The solver's fields against this script's own arithmetic: its strains (forming_strains.py,
+# from the coordinates) and margin equal the frame's major_strain_mid, minor_strain_mid and
+# flc_margin to round-off (1e-12), and the elements above the curve are those of zone 5 (cracks).
+frame = sorted(blank["frames"])[-1]
+group = blank["frames"][frame]
+sys.path.insert(0, sys.argv[5])
+import forming_strains
+ref, quads, tris = forming_strains.read_blank(f, "blank", frame)
+own_major, own_minor = forming_strains.element_strains(ref, group["coordinates"][:], quads, tris)
+for name, own in (("major_strain_mid", own_major), ("minor_strain_mid", own_minor), ("flc_margin", margin)):
+    field = group[name][:].reshape(-1)
+    assert np.max(np.abs(field - own)) < 1e-12, (name, np.max(np.abs(field - own)))
+assert np.array_equal(zone == 5, margin < 0.0), "cracks are not the elements above the curve"
+assert np.all(np.abs(major - own_major) < 1e-12)  # the CSV read the fields
 # Mid-surface strains against the thickness: plastic flow keeps the volume, so
 # eps1 + eps2 + ln(t / t0) is the elastic volume strain, (1 - 2 nu) sigma_m / E < 0.5e-2 here
 # (ln(t/t0) from the element's own thickness integration, the strains from the nodes).
-frame = sorted(blank["frames"])[-1]
-thickness = blank["frames"][frame]["thickness"][:, 0]
+thickness = group["thickness"][:, 0]
 t0 = tomllib.load(open(sys.argv[4], "rb"))["blank"]["thickness"]
 volume = major + minor + np.log(thickness / t0)
 assert np.max(np.abs(volume)) < 5e-3, np.max(np.abs(volume))
@@ -219,7 +235,7 @@ mkdir -p "$work/no_flc"; cp "$run/results.h5" "$work/no_flc/"
 grep -v '^forming_limit_curve' "$run/case.resolved.toml" > "$work/no_flc/case.resolved.toml"
 expect "plot_forming_limit.py without a curve" 0 "no forming_limit_curve for material 'aluminium'" -- \
   "$py" "$src/scripts/plot_forming_limit.py" "$work/no_flc" --csv
-[ "$(head -1 "$work/no_flc/forming_limit.csv")" = "element,cell_type,major_true_strain,minor_true_strain" ] \
+[ "$(head -1 "$work/no_flc/forming_limit.csv")" = "element,cell_type,major_true_strain,minor_true_strain,formability_zone" ] \
   && pass "no margin columns without a curve" || fail "forming_limit.csv header: $(head -1 "$work/no_flc/forming_limit.csv")"
 expect "plot_forming_limit.py: no such frame" 2 "results.h5: no frame 99: the file has frames 0 to [0-9]+" -- \
   "$py" "$src/scripts/plot_forming_limit.py" "$run" -o "$work/bad" --frame 99

@@ -228,7 +228,7 @@ class FormingLimitMargin(unittest.TestCase):
         major = np.full(minor.shape, 0.3)
         # The curve's major at each minor: held 0.4 before -0.2, linear between points (0.325 at
         # -0.1, 0.35 at 0.15), held 0.45 beyond 0.3; margins exact to round-off (1e-15).
-        expected = 0.3 - np.array([0.4, 0.4, 0.325, 0.25, 0.35, 0.45, 0.45])
+        expected = np.array([0.4, 0.4, 0.325, 0.25, 0.35, 0.45, 0.45]) - 0.3
         np.testing.assert_allclose(fs.flc_margin(minor, major, self.CURVE), expected, rtol=0,
                                    atol=1e-15)
 
