@@ -387,7 +387,7 @@ TEST(PenaltyFrictionLaws, PatchPressedByAKnownHistoryAndPulledSideways) {
       worst = std::max(worst, std::abs(-f(0, i) - mu * fn) / (mu * fn));
       reaction += mu * fn;
     }
-    EXPECT_NEAR(r.force_on_tool.x(), reaction, 1e-12 * reaction) << s;
+    EXPECT_NEAR(r.force_on_tool.x(), reaction, 1e-11 * reaction) << s;  // the same leak
     EXPECT_EQ(r.beyond_table[static_cast<int>(TableEnd::pressure_below)], below) << s;
     EXPECT_EQ(r.beyond_table[static_cast<int>(TableEnd::pressure_above)], above) << s;
     if (s == 1 || s == 200) {
@@ -398,7 +398,10 @@ TEST(PenaltyFrictionLaws, PatchPressedByAKnownHistoryAndPulledSideways) {
     }
   }
   std::printf("node friction forces against mu(p_i) F_n: worst relative error %.2e\n", worst);
-  EXPECT_LT(worst, 1e-12);
+  // Above a tool triangle's edge (the nodes on y = 0 are) the normal is the node's offset from its
+  // closest point made unit, true to ~1e-15: the normal force (up to 30 N) leaks ~1e-14 N into x
+  // beside a friction force of 1 to 3 N (5.8e-13 relative at the most), so 1e-11.
+  EXPECT_LT(worst, 1e-11);
 }
 
 }  // namespace

@@ -62,6 +62,17 @@ young = 210000.0
 poisson = 0.3
 )";
 
+/// The tables that press the blank by `pressure` MPa on its top face (times the `curve`, a TOML
+/// array of [time, factor] points, when not empty) and slide it along x at 100 mm/s for 2 ms
+/// (z free), damped at 2e4 1/s: the [[load]], [[prescribed_velocity]] and [control] tables.
+inline std::string pressed_and_slid(double pressure, const std::string& curve = {}) {
+  return "[[load]]\ngroup = \"blank\"\ntype = \"pressure\"\npressure = " +
+         std::to_string(pressure) + "\n" +
+         (curve.empty() ? std::string() : "curve = " + curve + "\n") +
+         "[[prescribed_velocity]]\ngroup = \"blank\"\nvelocity = [100.0, 0.0, 0.0]\n"
+         "components = [\"x\"]\n[control]\nend_time = 2.0e-3\ndamping = 2.0e4\n";
+}
+
 /// Central-difference steps from the state until model.time.end_time (no output); calls
 /// `after_step(state)` after every step.
 template <class AfterStep>

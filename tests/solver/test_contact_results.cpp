@@ -29,9 +29,8 @@ TEST(ContactResults, PressedPlateShowsThePressureItsSlideAndItsTool) {
   fs::create_directories(folder);
   std::ofstream(folder / "die.geo") << test::flat_tool_geo(-10.0, -10.0, 25.0, 20.0, 0.0, 8.0);
   std::ofstream(folder / "punch.geo") << test::flat_tool_geo(-10.0, -10.0, 25.0, 20.0, 5.0, 8.0);
-  const CaseConfig config =
-      test::write_case(name, test::square_plate_geo(10.0, 0.5, 11),
-                       std::string(test::kElasticSteelSheet) + fmt::format(R"(
+  const CaseConfig config = test::write_case(name, test::square_plate_geo(10.0, 0.5, 11),
+                                             std::string(test::kElasticSteelSheet) + R"(
 [[tools]]
 name = "die"
 mesh = "die.geo"
@@ -44,20 +43,7 @@ group = "plate"
 tool = "die"
 [[contact]]
 tool = "punch"
-[[load]]
-group = "blank"
-type = "pressure"
-pressure = {}
-[[prescribed_velocity]]
-group = "blank"
-velocity = [100.0, 0.0, 0.0]
-components = ["x"]
-[control]
-end_time = 2.0e-3
-damping = 2.0e4
-output_frames = 2
-)",
-                                                                           kPressure));
+)" + test::pressed_and_slid(kPressure) + "output_frames = 2\n");
   const Model model = build_model(config);
   RunOptions options;
   options.output_directory = folder / "results";

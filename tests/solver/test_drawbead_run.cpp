@@ -46,14 +46,7 @@ CaseConfig strip_case(const std::string& name, const std::string& bead) {
   fs::create_directories(folder);
   std::ofstream(folder / "die.geo") << test::flat_tool_geo(-10.0, -10.0, 80.0, 20.0, -0.5, 15.0);
   std::ofstream(folder / "binder.geo") << test::flat_tool_geo(-10.0, -10.0, 80.0, 20.0, 0.5, 15.0);
-  return test::write_case(name, kStrip, R"(thickness = 1.0
-material = "steel"
-[materials.steel]
-type = "elastic"
-density = 7.85e-9
-young = 210000.0
-poisson = 0.3
-[[tools]]
+  return test::write_case(name, kStrip, std::string(test::kElasticSteelSheet) + R"([[tools]]
 name = "die"
 mesh = "die.geo"
 group = "plate"

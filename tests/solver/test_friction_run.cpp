@@ -54,19 +54,7 @@ group = "plate"
 [[contact]]
 tool = "die"
 friction_pressure_table = [[2.0, 0.15], [4.0, 0.10]]
-[[load]]
-group = "blank"
-type = "pressure"
-pressure = 1.0
-curve = [[0.0, 1.0], [2.0e-3, 5.0]]
-[[prescribed_velocity]]
-group = "blank"
-velocity = [100.0, 0.0, 0.0]
-components = ["x"]
-[control]
-end_time = 2.0e-3
-damping = 2.0e4
-)");
+)" + test::pressed_and_slid(1.0, "[[0.0, 1.0], [2.0e-3, 5.0]]"));
   Model model = build_model(config);
   const ContactPair& pair = model.contacts[0].pair;
   ASSERT_EQ(pair.start_area.size(), model.blank.mesh.nodes.cols());
