@@ -180,8 +180,9 @@ struct BlankConfig {
   double hourglass_coefficient = 0.1;
   HourglassForm hourglass_form = HourglassForm::viscous;  ///< belytschko_tsay only
   /// Rolling direction (unit vector, global axes; normalised on read), projected on each element
-  /// at the start to fix its material axes. Used by hill48 only; must not be (near) normal to an
-  /// element (build_model checks).
+  /// at the start to fix its material axes. Used by the laws with material axes (hill48, ...),
+  /// where it must not be (near) normal to an element (build_model checks), and by a contact's
+  /// friction_across_ratio (projected on the tangent plane of the contact).
   std::array<double, 3> rolling_direction{1.0, 0.0, 0.0};
   /// A formed part (another run's <results>/formed_part.h5, absolute after reading) whose state
   /// the run starts from: its blank must be this case's (docs/process-chain.md). Empty: the
@@ -289,8 +290,18 @@ struct ContactConfig {
   double friction_static = 0.0;    ///< -, Coulomb coefficient at rest
   double friction_dynamic = 0.0;   ///< -, Coulomb coefficient when sliding (<= static)
   double friction_decay = 0.0;     ///< s/mm, mu = mu_d + (mu_s - mu_d) exp(-decay |v_slip|)
-  bool audit = false;              ///< count, per frame, the nodes where this search is not exact
-  double search_margin = 0.0;      ///< mm, the cached search's candidate margin; 0 = its default
+  /// -, n of the pressure power law mu = mu_c(v) (p / p0)^(n - 1) (docs/contact.md); 1: none
+  double friction_pressure_exponent = 1.0;
+  double friction_reference_pressure = 0.0;  ///< MPa, p0 of the power law (> 0 when n != 1)
+  /// [[pressure (MPa), mu], ...]: mu against the contact pressure, instead of the Coulomb keys;
+  /// empty: none
+  std::vector<std::array<double, 2>> friction_pressure_table;
+  /// [[slip speed (mm/s), factor], ...]: a factor on mu against the slip speed; empty: none
+  std::vector<std::array<double, 2>> friction_speed_table;
+  /// -, mu across the blank's rolling_direction over mu along it (an elliptic limit); 1: isotropic
+  double friction_across_ratio = 1.0;
+  bool audit = false;          ///< count, per frame, the nodes where this search is not exact
+  double search_margin = 0.0;  ///< mm, the cached search's candidate margin; 0 = its default
 };
 
 /// A drawbead line ([[drawbeads]], docs/drawbeads.md): the force of a bead of a tool on the sheet

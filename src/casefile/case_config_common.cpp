@@ -45,6 +45,52 @@ void read_curve(const TomlSection& s, std::string_view key, CurveConfig& curve) 
   }
 }
 
+bool read_point_table(const TomlSection& s, std::string_view key, const PointTableSpec& spec,
+                      std::vector<std::array<double, 2>>& points) {
+  const toml::node* node = s.find(key);
+  if (!node) {
+    return false;
+  }
+  const auto* array = node->as_array();
+  if (!array || array->size() < spec.min_points) {
+    s.fail_value(key, fmt::format("{}an array of at least {} points {}", spec.context,
+                                  spec.min_points, spec.point));
+  }
+  std::vector<std::array<double, 2>> table;
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const toml::node& point_node = *array->get(i);
+    const std::string point_path = fmt::format("{}[{}]", s.key_path(key), i);
+    const auto fail = [&](const std::string& message) {
+      s.fail_at(point_node, point_path, fmt::format("{}{}", spec.context, message));
+    };
+    const auto* point = point_node.as_array();
+    std::optional<double> x, y;
+    if (point && point->size() == 2) {
+      x = number_of(*point->get(0));
+      y = number_of(*point->get(1));
+    }
+    if (!x || !y || !std::isfinite(*x) || !std::isfinite(*y)) {
+      fail(fmt::format("expected a point {} of 2 finite numbers, got {}", spec.point,
+                       describe_value(point_node)));
+    }
+    if (!spec.abscissa_range.contains(*x)) {
+      fail(fmt::format("expected a {} that is {}, got {}", spec.abscissa,
+                       spec.abscissa_range.describe(), format_toml_number(*x)));
+    }
+    if (!table.empty() && !(*x > table.back()[0])) {
+      fail(fmt::format("expected the {} to increase strictly from point to point, got {} after {}",
+                       spec.abscissa, format_toml_number(*x), format_toml_number(table.back()[0])));
+    }
+    if (!spec.value_range.contains(*y)) {
+      fail(fmt::format("expected a {} that is {}, got {}", spec.value, spec.value_range.describe(),
+                       format_toml_number(*y)));
+    }
+    table.push_back({*x, *y});
+  }
+  points = std::move(table);
+  return true;
+}
+
 bool read_polyline(const TomlSection& s, std::string_view key, std::size_t min_points,
                    std::vector<std::array<double, 3>>& points) {
   const std::string expected =

@@ -15,6 +15,23 @@ namespace sf {
 /// times >= 0 and strictly increasing, into `curve`.
 void read_curve(const TomlSection& s, std::string_view key, CurveConfig& curve);
 
+/// What the points of a table read by read_point_table are, for its checks and messages.
+struct PointTableSpec {
+  std::string_view point;     ///< a point as the messages show it: "[pressure (MPa), mu]"
+  std::string_view abscissa;  ///< what the first numbers are: "pressure"
+  NumberRange abscissa_range;
+  std::string_view value;  ///< what the second numbers are: "friction coefficient"
+  NumberRange value_range;
+  std::size_t min_points = 2;
+  std::string_view context;  ///< put before each message ("contact with tool 'die': "), or empty
+};
+
+/// Reads `key`, when present, as an array of at least spec.min_points points [x, y] of finite
+/// numbers, x in spec.abscissa_range and strictly increasing, y in spec.value_range, into
+/// `points` (replaced); returns whether it was there. Errors name the file, line and point.
+bool read_point_table(const TomlSection& s, std::string_view key, const PointTableSpec& spec,
+                      std::vector<std::array<double, 2>>& points);
+
 /// Reads `key` as an array of 3 finite numbers (any values, unlike read_direction); absent leaves
 /// `value` as it is.
 void read_vector(const TomlSection& s, std::string_view key, std::array<double, 3>& value);

@@ -180,7 +180,9 @@ FieldTable<B> make_drawbead_fields() {
                                          "side clearance: bead and shoulder centres are "
                                          "bead_radius + shoulder_radius + t + clearance apart")));
   t.push_back(round_only(number_field<B>("friction", &B::friction, at_least(0.0),
-                                         "Coulomb coefficient on the bead and shoulders")
+                                         "Coulomb coefficient on the bead and shoulders; "
+                                         "required when the tool's contact friction depends on "
+                                         "the pressure")
                              .shown_default("the tool's `[[contact]]` sliding friction")
                              .write_if([](const B& b) { return b.friction >= 0.0; })));
   t.push_back(round_only(number_field<B>("flow_stress", &B::flow_stress, greater_than(0.0, "MPa"),

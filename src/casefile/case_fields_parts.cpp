@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "casefile/case_config_common.hpp"
 #include "casefile/case_fields.hpp"
 #include "meshing/mesh_import.hpp"
 
@@ -231,7 +232,8 @@ FieldTable<BlankConfig> make_blank_fields() {
       "global axes. Used by the anisotropic materials: projected on each element at the start "
       "to fix its material axes (docs/material.md). It must not be within about 5.7° of an "
       "element's normal (in-plane part of the unit vector >= 0.1): building the model stops "
-      "with an error naming the element"));
+      "with an error naming the element. Also the along direction of a contact's "
+      "`friction_across_ratio`"));
   t.push_back(
       custom_field<B>(
           {"formed_part",
@@ -387,6 +389,98 @@ FieldTable<MotionConfig> make_motion_fields() {
   return t;
 }
 
+// Friction beyond Coulomb (docs/contact.md, "Friction laws"): a pressure power law or table, a
+// slip-speed table and the orthotropic ratio. Each is written only when given, so a case without
+// them resolves (and digests) as before.
+bool coulomb_friction(const ContactConfig& c) {
+  return c.friction_static > 0.0 && c.friction_pressure_table.empty();
+}
+
+bool has_friction(const ContactConfig& c) {
+  return c.friction_static > 0.0 || !c.friction_pressure_table.empty();
+}
+
+std::string needs_friction(const ContactConfig& c) {
+  return c.friction_pressure_table.empty()
+             ? "friction_static (or friction) is 0: there is no friction to shape"
+             : "friction_pressure_table gives the coefficient against the pressure itself";
+}
+
+// A friction table [[x, y], ...] of a contact: x, its unit and y name its points in the docs, the
+// messages and the resolved case ("pressure", "MPa", "mu").
+Field<ContactConfig> friction_table_field(std::string key,
+                                          std::vector<std::array<double, 2>> ContactConfig::*m,
+                                          std::string x, std::string unit, std::string y,
+                                          std::string doc) {
+  const std::string point = fmt::format("[{} ({}), {}]", x, unit, y);
+  return custom_field<ContactConfig>(
+             {key, fmt::format("array of `[{}, {}]`", x, y), "none", unit + ", —", std::move(doc)},
+             [key, m, point, x, unit, y](const TomlSection& s, ContactConfig& c, Presence) {
+               const std::string context = fmt::format("contact with tool '{}': ", c.tool);
+               const PointTableSpec spec{.point = point,
+                                         .abscissa = x,
+                                         .abscissa_range = at_least(0.0, unit),
+                                         .value = y,
+                                         .value_range = at_least(0.0),
+                                         .min_points = 2,
+                                         .context = context};
+               read_point_table(s, key, spec, c.*m);
+             },
+             [key, m, point](TomlWriter& w, const ContactConfig& c) {
+               w.points(key, c.*m, fmt::format("[{}, ...]", point));
+             })
+      .write_if([m](const ContactConfig& c) { return !(c.*m).empty(); });
+}
+
+void add_friction_law_fields(FieldTable<ContactConfig>& t) {
+  using C = ContactConfig;
+  Field<C> pressure_table = friction_table_field(
+      "friction_pressure_table", &C::friction_pressure_table, "pressure", "MPa", "mu",
+      "at least 2 points, pressures >= 0 strictly increasing, μ >= 0: μ against the contact "
+      "pressure, linear between points, the end value held beyond them (a warning, once, when "
+      "the run meets a pressure beyond them). Instead of `friction`, `friction_static`, "
+      "`friction_dynamic`, `friction_decay` and the power law");
+  const auto read_table = pressure_table.read;
+  pressure_table.read = [read_table](const TomlSection& s, C& c, Presence p) {
+    if (!s.has("friction_pressure_table")) {
+      return;
+    }
+    for (const char* key : {"friction", "friction_static", "friction_dynamic", "friction_decay"}) {
+      if (s.has(key)) {
+        s.fail_forbidden(key, fmt::format("contact with tool '{}': friction_pressure_table gives "
+                                          "the coefficient; give either it or the Coulomb keys",
+                                          c.tool));
+      }
+    }
+    read_table(s, c, p);
+  };
+  t.push_back(std::move(pressure_table));
+  t.push_back(number_field<C>("friction_pressure_exponent", &C::friction_pressure_exponent,
+                              greater_than(0.0),
+                              "n of the pressure power law μ = μc(v) (p / p0)^(n − 1), μc the "
+                              "Coulomb coefficient above and p the contact pressure; 1: none")
+                  .when(coulomb_friction, "with `friction_static` > 0", needs_friction)
+                  .write_if([](const C& c) { return c.friction_pressure_exponent != 1.0; }));
+  t.push_back(number_field<C>("friction_reference_pressure", &C::friction_reference_pressure,
+                              greater_than(0.0, "MPa"), "p0 of the power law")
+                  .required()
+                  .when([](const C& c) { return c.friction_pressure_exponent != 1.0; },
+                        "with `friction_pressure_exponent` ≠ 1",
+                        "friction_reference_pressure is p0 of the power law: it needs "
+                        "friction_pressure_exponent (not 1)"));
+  t.push_back(friction_table_field(
+                  "friction_speed_table", &C::friction_speed_table, "slip speed", "mm/s", "factor",
+                  "at least 2 points, slip speeds >= 0 strictly increasing, factors >= 0: a "
+                  "factor on μ against the slip speed, linear between points, the end value held "
+                  "beyond them")
+                  .when(has_friction, "with friction", needs_friction));
+  t.push_back(number_field<C>("friction_across_ratio", &C::friction_across_ratio, greater_than(0.0),
+                              "μ across the blank's `rolling_direction` over μ along it: an "
+                              "elliptic (orthotropic) Coulomb limit; 1: isotropic")
+                  .when(has_friction, "with friction", needs_friction)
+                  .write_if([](const C& c) { return c.friction_across_ratio != 1.0; }));
+}
+
 FieldTable<ContactConfig> make_contact_fields() {
   using C = ContactConfig;
   FieldTable<C> t;
@@ -442,14 +536,20 @@ FieldTable<ContactConfig> make_contact_fields() {
     s.read_number("friction_static", c.friction_static, at_least(0.0));
     c.friction_dynamic = c.friction_static;  // the default of friction_dynamic
   };
+  // A pressure table replaces the Coulomb keys: they are not written with it.
+  const auto coulomb_keys = [](const C& c) { return c.friction_pressure_table.empty(); };
+  static_friction.written = coulomb_keys;
   t.push_back(std::move(static_friction));
   t.push_back(number_field<C>(
                   "friction_dynamic", &C::friction_dynamic,
                   [](const C& c) { return NumberRange{.lo = 0.0, .hi = c.friction_static}; }, "",
                   "in [0, `friction_static`]", "Coulomb coefficient when sliding")
-                  .shown_default("`friction_static`"));
+                  .shown_default("`friction_static`")
+                  .write_if(coulomb_keys));
   t.push_back(number_field<C>("friction_decay", &C::friction_decay, at_least(0.0, "s/mm"),
-                              "μ = μd + (μs − μd) exp(−decay · |slip speed|)"));
+                              "μ = μd + (μs − μd) exp(−decay · |slip speed|)")
+                  .write_if(coulomb_keys));
+  add_friction_law_fields(t);
   t.push_back(bool_field<C>(
       "audit", &C::audit,
       "also run the exact search at every frame and history row and record, per blank node, "

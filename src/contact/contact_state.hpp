@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "contact/contact_search.hpp"
+#include "contact/coulomb_friction.hpp"
 #include "contact/node_distance_bounds.hpp"
 #include "core/exact_sum.hpp"
 #include "core/types.hpp"
@@ -24,7 +25,8 @@ struct alignas(64) ContactShare {
   int sliding_nodes = 0;
   int sticking_nodes = 0;
   int projection_fallbacks = 0;
-  int thin_node = INT_MAX;  ///< the lowest node whose half thickness reaches the cutoff
+  int beyond_table[kTableEnds] = {};  ///< nodes beyond each end of the friction tables
+  int thin_node = INT_MAX;            ///< the lowest node whose half thickness reaches the cutoff
   double thin_half_thickness = 0.0;
   int failed_node = INT_MAX;  ///< the lowest node of a block whose computation threw
   std::string failure;        ///< what it threw
@@ -48,6 +50,9 @@ struct ContactState {
   /// point at it, in the tangent plane, summed since time 0): results, not forces.
   VectorX normal_force;
   VectorX sliding_distance;
+  /// Per TableEnd: whether the run has warned of a node beyond that end of the friction tables
+  /// (once a run; not checkpointed: a restarted run may say it again).
+  bool warned_beyond_table[kTableEnds] = {};
   std::vector<ContactShare> shares;  ///< one per thread (scratch)
   /// One per thread: the sums of the ghost nodes (ContactKinematics::ghost_nodes), computed for
   /// their forces and then dropped, their owner counting them (scratch).

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 #include <string_view>
 
@@ -89,14 +90,25 @@ void add_node_force(const ContactPair& pair, ContactState& state,
   state.normal_force[i] = normal_force;
   state.sliding_distance[i] += (increment - increment.dot(normal) * normal).norm();
   if (pair.friction.active()) {
+    double pressure = 0.0;  // MPa
+    if (pair.friction.needs_pressure()) {
+      const double area =
+          area_now(pair.start_area[i], pair.start_half_thickness[i], kinematics.half_thickness[i]);
+      pressure = area > 0.0 ? normal_force / area : 0.0;
+    }
     Vec3 stored = state.stick_force.col(i);
-    const FrictionStep step =
-        coulomb_friction_update(pair.friction, stored, normal, increment, kinematics.dt,
-                                normal_force, pair.friction.tangential_stiffness_ratio * k);
+    const FrictionStep step = coulomb_friction_update(
+        pair.friction, stored, normal, increment, kinematics.dt, normal_force,
+        pair.friction.tangential_stiffness_ratio * k, pressure);
     state.stick_force.col(i) = stored;
     f += step.force;
     result.friction_work.add(step.work);
     ++(step.sliding ? result.sliding_nodes : result.sticking_nodes);
+    if (step.beyond != 0) {
+      for (int e = 0; e < kTableEnds; ++e) {
+        result.beyond_table[e] += (step.beyond >> e) & 1u;
+      }
+    }
   }
   f_contact.col(i) += f;
   for (int c = 0; c < 3; ++c) {
@@ -216,6 +228,9 @@ ContactResult merge_shares(std::vector<ContactShare>& shares, int used, std::str
     total.sliding_nodes += share.sliding_nodes;
     total.sticking_nodes += share.sticking_nodes;
     total.projection_fallbacks += share.projection_fallbacks;
+    for (int e = 0; e < kTableEnds; ++e) {
+      total.beyond_table[e] += share.beyond_table[e];
+    }
     if (share.thin_node < total.thin_node) {
       total.thin_node = share.thin_node;
       total.thin_half_thickness = share.thin_half_thickness;
@@ -246,6 +261,7 @@ ContactResult merge_shares(std::vector<ContactShare>& shares, int used, std::str
   result.sliding_nodes = total.sliding_nodes;
   result.sticking_nodes = total.sticking_nodes;
   result.projection_fallbacks = total.projection_fallbacks;
+  std::copy(std::begin(total.beyond_table), std::end(total.beyond_table), result.beyond_table);
   return result;
 }
 
@@ -258,6 +274,13 @@ ContactResult compute_penalty_contact(const ContactPair& pair, ContactState& sta
   const bool friction = pair.friction.active();
   if (friction) {
     pair.friction.validate(tool_name);
+    if (pair.friction.needs_pressure() &&
+        (pair.start_area.size() != n || pair.start_half_thickness.size() != n)) {
+      throw std::invalid_argument(fmt::format(
+          "contact with tool '{}': a pressure-dependent friction law needs ContactPair::"
+          "start_area and start_half_thickness for each of the {} blank nodes",
+          tool_name, n));
+    }
   }
   if (pair.projection == ContactProjection::interpolated && !pair.projector) {
     throw std::invalid_argument(fmt::format(

@@ -30,7 +30,12 @@ struct ContactPair {
   ContactProjection projection = ContactProjection::orthogonal;
   /// The interpolated projection over *surface: required with ContactProjection::interpolated.
   std::unique_ptr<const InterpolatedProjector> projector;
-  FrictionParameters friction;  ///< frictionless unless friction.static_coefficient > 0
+  FrictionParameters friction;  ///< frictionless unless friction.active()
+  /// Per blank node: its tributary area at the start (mm^2) and its half thickness then (mm), for
+  /// the contact pressure k_i (-g) / area_now (mesh/nodal_area.hpp: the area grows as the sheet
+  /// thins). Needed, one per node, when friction.needs_pressure(); else may be empty.
+  VectorX start_area;
+  VectorX start_half_thickness;
   /// Distance bounds over *surface: when set, a node that provably cannot be within the cutoff
   /// is not searched (the same forces, bit for bit); nullptr: every node is searched every call.
   std::unique_ptr<const ToolDistanceBound> distance_bound;
@@ -77,6 +82,9 @@ struct ContactResult {
   int sliding_nodes = 0;         ///< nodes in contact whose friction force is at the Coulomb limit
   int sticking_nodes = 0;        ///< nodes in contact below the limit (friction active)
   int projection_fallbacks = 0;  ///< interpolated projections that fell back to the orthogonal
+  /// Per TableEnd: the nodes whose contact pressure or slip speed lay beyond that end of the
+  /// friction tables (their end value held).
+  int beyond_table[kTableEnds] = {};
 };
 
 /// For every blank node i (or, with kinematics.owned_nodes / ghost_nodes, those nodes, the sums
@@ -91,8 +99,10 @@ struct ContactResult {
 /// relative tangential displacement over the step, dt v_i less the step of the tool's point at the
 /// node ((R - R_previous) p + tool_displacement_increment; for a translating tool the increment)
 /// projected
-/// on the tangent plane of n, drives coulomb_friction_update with the normal force k_i (-g) and k_t
-/// = ratio * k_i; its force is added likewise and its dissipation summed. A node out of contact has
+/// on the tangent plane of n, drives coulomb_friction_update with the normal force k_i (-g), k_t
+/// = ratio * k_i and (for a pressure-dependent law) the pressure k_i (-g) / A_i, A_i =
+/// area_now(start_area[i], start_half_thickness[i], half_thickness[i]) (mm^2; pressure 0 where
+/// A_i is 0); its force is added likewise and its dissipation summed. A node out of contact has
 /// its stick force reset to zero. Orthogonal: the normal force is minus the gradient of 1/2 k g^2.
 /// For the results, state.normal_force[i] is set to the normal force k_i (-g) (0 out of contact)
 /// and the node's relative step in the tangent plane of n is added to state.sliding_distance[i].
@@ -101,7 +111,8 @@ struct ContactResult {
 /// beyond the cutoff is not searched: the search would have found nothing, so the result is the
 /// same. Deterministic (nodes in order); allocates only on the first call (sizing `state`). Throws
 /// InputError when pair.cutoff does not exceed a node's half thickness or the friction parameters
-/// are invalid, std::invalid_argument when the interpolated projection has no pair.projector.
+/// are invalid, std::invalid_argument when the interpolated projection has no pair.projector or a
+/// pressure-dependent friction law has no start_area / start_half_thickness per node.
 ContactResult compute_penalty_contact(const ContactPair& pair, ContactState& state,
                                       const ContactKinematics& kinematics, Matrix3X& f_contact);
 

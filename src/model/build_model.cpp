@@ -14,6 +14,7 @@
 #include "core/errors.hpp"
 #include "core/log.hpp"
 #include "material/anisotropy_fit.hpp"
+#include "mesh/nodal_area.hpp"
 #include "meshing/gmsh_reader.hpp"
 #include "model/blank_parts.hpp"
 #include "model/constraint_assembly.hpp"
@@ -531,6 +532,46 @@ const MaterialConfig& stiffest_blank_material(const CaseConfig& config) {
   return *best;
 }
 
+// A table of the case as the friction law's.
+FrictionTable friction_table(const std::vector<std::array<double, 2>>& points) {
+  FrictionTable table;
+  for (const auto& [x, y] : points) {
+    table.x.push_back(x);
+    table.y.push_back(y);
+  }
+  return table;
+}
+
+// The friction beyond Coulomb of a [[contact]] (docs/contact.md, "Friction laws"): the pressure
+// law or table, the slip-speed table, the orthotropic ratio along the blank's rolling direction,
+// and the nodes' start areas for the contact pressure when the law depends on it.
+void set_friction_law(const CaseConfig& config, const ContactConfig& cc, const Model& model,
+                      ContactPair& pair) {
+  FrictionParameters& law = pair.friction;
+  law.pressure_exponent = cc.friction_pressure_exponent;
+  if (cc.friction_pressure_exponent != 1.0) {
+    law.reference_pressure = cc.friction_reference_pressure;
+  }
+  law.pressure_table = friction_table(cc.friction_pressure_table);
+  law.speed_table = friction_table(cc.friction_speed_table);
+  law.across_ratio = cc.friction_across_ratio;
+  const auto& d = config.blank.rolling_direction;  // unit: normalised on reading
+  law.rolling_direction = Vec3(d[0], d[1], d[2]);
+  if (law.active()) {
+    try {
+      law.validate(cc.tool);
+    } catch (const InputError& error) {
+      throw InputError(fmt::format("{}: {}", config.file.string(), error.what()));
+    }
+  }
+  if (law.needs_pressure()) {
+    const Blank& blank = model.blank;
+    pair.start_area =
+        nodal_tributary_area(blank.mesh.nodes, blank.mesh.quads, blank.mesh.triangles);
+    pair.start_half_thickness = initial_half_thickness(blank, model.initial);
+  }
+}
+
 void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& state) {
   const MaterialConfig& material = stiffest_blank_material(config);
   for (const ContactConfig& cc : config.contacts) {
@@ -581,6 +622,7 @@ void set_up_contacts(const CaseConfig& config, Model& model, const ShellState& s
     contact.pair.friction.static_coefficient = cc.friction_static;
     contact.pair.friction.dynamic_coefficient = cc.friction_dynamic;
     contact.pair.friction.decay = cc.friction_decay;
+    set_friction_law(config, cc, model, contact.pair);
     // Nodes farther than this from the tool cannot touch it within one step.
     contact.pair.cutoff = 2.0 * config.largest_blank_thickness();
     model.contacts.push_back(std::move(contact));

@@ -179,6 +179,12 @@ std::string set_force(const CaseConfig& config, std::size_t b, const Model& mode
         fmt::format("{}: a round bead on a blank of several parts needs the sheet's thickness (mm)",
                     where(config, b)));
   }
+  if (bead.friction < 0.0 && contact.pair.friction.needs_pressure()) {
+    throw InputError(fmt::format(
+        "{}: a round bead takes one friction coefficient, and the contact with tool '{}' has a "
+        "pressure-dependent one: give the bead's friction",
+        where(config, b), bead.tool));
+  }
   const double t = bead.thickness > 0.0 ? bead.thickness : config.blank.thickness;
   const RoundBeadGeometry geometry{.bead_radius = bead.bead_radius,
                                    .shoulder_radius = bead.shoulder_radius,

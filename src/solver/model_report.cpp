@@ -375,15 +375,39 @@ void print_tool_positions(const CaseConfig& config, const Model& model, const Un
   }
 }
 
+// The laws beyond Coulomb, appended to its description (docs/contact.md, "Friction laws").
+std::string describe_friction_shaping(const ContactConfig& c, const UnitSystem& units) {
+  std::string text;
+  if (c.friction_pressure_exponent != 1.0) {
+    text += fmt::format(" x (p / {} {})^({} - 1)", c.friction_reference_pressure, units.stress,
+                        c.friction_pressure_exponent);
+  }
+  if (!c.friction_speed_table.empty()) {
+    text += fmt::format(" x a slip-speed table of {} points", c.friction_speed_table.size());
+  }
+  if (c.friction_across_ratio != 1.0) {
+    text += fmt::format(", across the rolling direction x {}", c.friction_across_ratio);
+  }
+  return text;
+}
+
 std::string describe_friction(const ContactConfig& c, const UnitSystem& units) {
+  if (!c.friction_pressure_table.empty()) {
+    return fmt::format("friction mu from a pressure table of {} points ({} to {} {}){}",
+                       c.friction_pressure_table.size(), c.friction_pressure_table.front()[0],
+                       c.friction_pressure_table.back()[0], units.stress,
+                       describe_friction_shaping(c, units));
+  }
   if (!(c.friction_static > 0.0)) {
     return "frictionless";
   }
   if (c.friction_dynamic == c.friction_static && c.friction_decay == 0.0) {
-    return fmt::format("Coulomb friction mu = {}", c.friction_static);
+    return fmt::format("Coulomb friction mu = {}{}", c.friction_static,
+                       describe_friction_shaping(c, units));
   }
-  return fmt::format("Coulomb friction mu_s = {}, mu_d = {}, decay {} {}/{}", c.friction_static,
-                     c.friction_dynamic, c.friction_decay, units.time, units.length);
+  return fmt::format("Coulomb friction mu_s = {}, mu_d = {}, decay {} {}/{}{}", c.friction_static,
+                     c.friction_dynamic, c.friction_decay, units.time, units.length,
+                     describe_friction_shaping(c, units));
 }
 
 void print_contacts(const CaseConfig& config, const Model& model, const UnitSystem& units) {

@@ -284,7 +284,7 @@ inline constexpr StateField bound_slack{
 
 /// SolutionState members visit_state_fields does not visit, and why (tests/solver/
 /// test_state_fields.cpp counts the members: one added must be described above or named here).
-inline constexpr std::array<std::string_view, 14> kStateLeftOut = {
+inline constexpr std::array<std::string_view, 15> kStateLeftOut = {
     "mass_before: scratch of one cycle's mass scaling",
     "inertia_before: scratch of one cycle's mass scaling",
     "scaling.target_dt, safety, element_mass, inertia_factor: the model's, set at the start",
@@ -294,6 +294,8 @@ inline constexpr std::array<std::string_view, 14> kStateLeftOut = {
     "drawbeads' shares: per-thread scratch",
     "contacts' search caches: rebuilt exactly (the cached search answers as the modified one)",
     "contacts' shares: per-thread scratch",
+    "contacts' warned_beyond_table: the friction tables' warn-once flags, messages, not physics "
+    "(a restarted run may warn again)",
     "contact_off: the springback's dynamic relaxation only, which writes no checkpoint",
     "released_loads: likewise",
     "times: wall-clock time per phase, not physics",

@@ -7,6 +7,7 @@
 #include <climits>
 
 #include "core/errors.hpp"
+#include "core/log.hpp"
 #include "model/external_loads.hpp"
 
 namespace sf {
@@ -111,7 +112,7 @@ ContactKinematics kinematics_against(const SolutionState& s, const ToolState& to
 }
 
 // The exact sums of one contact call (left in the pair's first share), kContactSums of them.
-constexpr int kContactSums = 12;
+constexpr int kContactSums = 12 + kTableEnds;
 
 void add_contact_sums(const ContactShare& total, ExactSum* sums) {
   for (int c = 0; c < 3; ++c) {
@@ -126,6 +127,10 @@ void add_contact_sums(const ContactShare& total, ExactSum* sums) {
     sums[5 + k] = ExactSum();
     sums[5 + k].add(counts[k]);  // integers: exact
   }
+  for (int e = 0; e < kTableEnds; ++e) {
+    sums[12 + e] = ExactSum();
+    sums[12 + e].add(total.beyond_table[e]);
+  }
 }
 
 ContactResult contact_result(const ExactSum* sums) {
@@ -138,7 +143,27 @@ ContactResult contact_result(const ExactSum* sums) {
   r.sticking_nodes = static_cast<int>(sums[7].round());
   r.projection_fallbacks = static_cast<int>(sums[8].round());
   r.moment_on_tool = Vec3(sums[9].round(), sums[10].round(), sums[11].round());
+  for (int e = 0; e < kTableEnds; ++e) {
+    r.beyond_table[e] = static_cast<int>(sums[12 + e].round());
+  }
   return r;
+}
+
+// Warns, once a run for each end of each pair's friction tables, when a node met a pressure or
+// slip speed beyond it (every process knows it from the reduced counts; rank 0 speaks).
+void warn_beyond_friction_tables(const Model& model, std::size_t k, const ContactResult& r,
+                                 SolutionState& s) {
+  ContactState& state = s.contacts[k];
+  for (int e = 0; e < kTableEnds; ++e) {
+    if (r.beyond_table[e] > 0 && !state.warned_beyond_table[e]) {
+      state.warned_beyond_table[e] = true;
+      const ContactInterface& c = model.contacts[k];
+      const std::string where = fmt::format("{}: contact[{}] (tool '{}')", model.case_file.string(),
+                                            k, model.tools[static_cast<std::size_t>(c.tool)].name);
+      log_warning("{}", friction_table_warning(c.pair.friction, static_cast<TableEnd>(e), where,
+                                               s.time, s.cycle));
+    }
+  }
 }
 
 // The penalty contact of every pair into state.f_contact (zeroed here), the tools' reactions and
@@ -196,6 +221,7 @@ void compute_contact_forces(const Model& model, SolutionState& s, double dt) {
     tool.nodes_in_contact += r.nodes_in_contact;
     s.contact_spring_energy += r.energy;
     s.energies.friction_work += r.friction_work;
+    warn_beyond_friction_tables(model, k, r, s);
   }
 }
 

@@ -344,38 +344,49 @@ TEST(PenaltyFriction, LeavingContactResetsTheStickForce) {
 }
 
 TEST(PenaltyFriction, ContactStepDoesNotAllocate) {
-  // Interpolated projection and friction on a warped tool; the first call sizes the state.
+  // Interpolated projection and friction on a warped tool; the first call sizes the state. Coulomb
+  // friction, then every law beyond it at once (power law, speed table, orthotropic ratio).
   const TriangleSurface s = test::make_height_field(
       "warped", 20, 20, -5, 5, -5, 5,
       [](double x, double y) { return 0.8 * std::sin(0.7 * x) * std::cos(0.5 * y); });
   const int n = 100;
-  Contact pair = make_pair(s, n, 500, make_law(0.3, 0.2, 0.01));
-  pair.pair.projection = ContactProjection::interpolated;
-  pair.pair.projector = std::make_unique<InterpolatedProjector>(s);
-  std::mt19937 rng(29);
-  std::uniform_real_distribution<double> u(-4, 4);
-  Matrix3X x(3, n), v(3, n), f(3, n);
-  for (int i = 0; i < n; ++i) {
-    const double px = u(rng), py = u(rng);
-    x.col(i) = Vec3(px, py, 0.8 * std::sin(0.7 * px) * std::cos(0.5 * py) + 0.1 * u(rng));
-    v.col(i) = Vec3(20 * u(rng), 20 * u(rng), 0);
-  }
-  const VectorX half = VectorX::Constant(n, 0.5);
-  const double dt = 1e-4;
-  f.setZero();
-  compute_penalty_contact(pair.pair, pair.state, {x, v, half, Vec3::Zero(), Vec3::Zero(), dt},
-                          f);  // sizes state
-  const long before = test::allocation_count();
-  int in_contact = 0;
-  for (int step = 0; step < 20; ++step) {
-    x += dt * v;
+  FrictionParameters shaped = make_law(0.15, 0.15, 0);
+  shaped.pressure_exponent = 0.8;
+  shaped.reference_pressure = 10.0;
+  shaped.speed_table.x = {0.0, 10.0, 100.0};
+  shaped.speed_table.y = {1.0, 0.9, 0.8};
+  shaped.across_ratio = 0.7;
+  for (const FrictionParameters& law : {make_law(0.3, 0.2, 0.01), shaped}) {
+    Contact pair = make_pair(s, n, 500, law);
+    pair.pair.start_area = VectorX::Constant(n, 1.0);  // mm^2, for the pressure
+    pair.pair.start_half_thickness = VectorX::Constant(n, 0.5);
+    pair.pair.projection = ContactProjection::interpolated;
+    pair.pair.projector = std::make_unique<InterpolatedProjector>(s);
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<double> u(-4, 4);
+    Matrix3X x(3, n), v(3, n), f(3, n);
+    for (int i = 0; i < n; ++i) {
+      const double px = u(rng), py = u(rng);
+      x.col(i) = Vec3(px, py, 0.8 * std::sin(0.7 * px) * std::cos(0.5 * py) + 0.1 * u(rng));
+      v.col(i) = Vec3(20 * u(rng), 20 * u(rng), 0);
+    }
+    const VectorX half = VectorX::Constant(n, 0.5);
+    const double dt = 1e-4;
     f.setZero();
-    in_contact += compute_penalty_contact(pair.pair, pair.state,
-                                          {x, v, half, Vec3::Zero(), Vec3::Zero(), dt}, f)
-                      .nodes_in_contact;
+    compute_penalty_contact(pair.pair, pair.state, {x, v, half, Vec3::Zero(), Vec3::Zero(), dt},
+                            f);  // sizes state
+    const long before = test::allocation_count();
+    int in_contact = 0;
+    for (int step = 0; step < 20; ++step) {
+      x += dt * v;
+      f.setZero();
+      in_contact += compute_penalty_contact(pair.pair, pair.state,
+                                            {x, v, half, Vec3::Zero(), Vec3::Zero(), dt}, f)
+                        .nodes_in_contact;
+    }
+    EXPECT_EQ(test::allocation_count() - before, 0);
+    EXPECT_GT(in_contact, 0);
   }
-  EXPECT_EQ(test::allocation_count() - before, 0);
-  EXPECT_GT(in_contact, 0);
 }
 
 }  // namespace

@@ -39,6 +39,40 @@ inline std::string flat_tool_geo(double x0, double y0, double x1, double y1, dou
          std::to_string(size) + ";\nPhysical Surface(\"plate\") = {1};\n";
 }
 
+/// A flat square blank [0, side]^2 in the plane z (mm), `nodes` nodes an edge (quads), its surface
+/// the physical group "blank", as a .geo.
+inline std::string square_plate_geo(double side, double z, int nodes) {
+  const std::string s = std::to_string(side), h = std::to_string(z);
+  return "Point(1) = {0, 0, " + h + "}; Point(2) = {" + s + ", 0, " + h + "}; Point(3) = {" + s +
+         ", " + s + ", " + h + "}; Point(4) = {0, " + s + ", " + h +
+         "};\nLine(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
+         "Curve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\nTransfinite Curve{1, 2, 3, 4} "
+         "= " +
+         std::to_string(nodes) +
+         ";\nTransfinite Surface{1};\nRecombine Surface{1};\nPhysical Surface(\"blank\") = {1};\n";
+}
+
+/// The [blank] keys after its mesh and an elastic steel: a 1 mm sheet (mm, s, tonne, N, MPa).
+inline constexpr const char* kElasticSteelSheet = R"(thickness = 1.0
+material = "steel"
+[materials.steel]
+type = "elastic"
+density = 7.85e-9
+young = 210000.0
+poisson = 0.3
+)";
+
+/// The tables that press the blank by `pressure` MPa on its top face (times the `curve`, a TOML
+/// array of [time, factor] points, when not empty) and slide it along x at 100 mm/s for 2 ms
+/// (z free), damped at 2e4 1/s: the [[load]], [[prescribed_velocity]] and [control] tables.
+inline std::string pressed_and_slid(double pressure, const std::string& curve = {}) {
+  return "[[load]]\ngroup = \"blank\"\ntype = \"pressure\"\npressure = " +
+         std::to_string(pressure) + "\n" +
+         (curve.empty() ? std::string() : "curve = " + curve + "\n") +
+         "[[prescribed_velocity]]\ngroup = \"blank\"\nvelocity = [100.0, 0.0, 0.0]\n"
+         "components = [\"x\"]\n[control]\nend_time = 2.0e-3\ndamping = 2.0e4\n";
+}
+
 /// Central-difference steps from the state until model.time.end_time (no output); calls
 /// `after_step(state)` after every step.
 template <class AfterStep>

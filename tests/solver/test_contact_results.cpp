@@ -29,23 +29,8 @@ TEST(ContactResults, PressedPlateShowsThePressureItsSlideAndItsTool) {
   fs::create_directories(folder);
   std::ofstream(folder / "die.geo") << test::flat_tool_geo(-10.0, -10.0, 25.0, 20.0, 0.0, 8.0);
   std::ofstream(folder / "punch.geo") << test::flat_tool_geo(-10.0, -10.0, 25.0, 20.0, 5.0, 8.0);
-  const CaseConfig config = test::write_case(name, R"(
-Point(1) = {0, 0, 0.5}; Point(2) = {10, 0, 0.5}; Point(3) = {10, 10, 0.5}; Point(4) = {0, 10, 0.5};
-Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
-Curve Loop(1) = {1, 2, 3, 4};
-Plane Surface(1) = {1};
-Transfinite Curve{1, 2, 3, 4} = 11;
-Transfinite Surface{1};
-Recombine Surface{1};
-Physical Surface("blank") = {1};
-)",
-                                             fmt::format(R"(thickness = 1.0
-material = "steel"
-[materials.steel]
-type = "elastic"
-density = 7.85e-9
-young = 210000.0
-poisson = 0.3
+  const CaseConfig config = test::write_case(name, test::square_plate_geo(10.0, 0.5, 11),
+                                             std::string(test::kElasticSteelSheet) + R"(
 [[tools]]
 name = "die"
 mesh = "die.geo"
@@ -58,20 +43,7 @@ group = "plate"
 tool = "die"
 [[contact]]
 tool = "punch"
-[[load]]
-group = "blank"
-type = "pressure"
-pressure = {}
-[[prescribed_velocity]]
-group = "blank"
-velocity = [100.0, 0.0, 0.0]
-components = ["x"]
-[control]
-end_time = 2.0e-3
-damping = 2.0e4
-output_frames = 2
-)",
-                                                         kPressure));
+)" + test::pressed_and_slid(kPressure) + "output_frames = 2\n");
   const Model model = build_model(config);
   RunOptions options;
   options.output_directory = folder / "results";

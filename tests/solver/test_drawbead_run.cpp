@@ -46,14 +46,7 @@ CaseConfig strip_case(const std::string& name, const std::string& bead) {
   fs::create_directories(folder);
   std::ofstream(folder / "die.geo") << test::flat_tool_geo(-10.0, -10.0, 80.0, 20.0, -0.5, 15.0);
   std::ofstream(folder / "binder.geo") << test::flat_tool_geo(-10.0, -10.0, 80.0, 20.0, 0.5, 15.0);
-  return test::write_case(name, kStrip, R"(thickness = 1.0
-material = "steel"
-[materials.steel]
-type = "elastic"
-density = 7.85e-9
-young = 210000.0
-poisson = 0.3
-[[tools]]
+  return test::write_case(name, kStrip, std::string(test::kElasticSteelSheet) + R"([[tools]]
 name = "die"
 mesh = "die.geo"
 group = "plate"
@@ -230,6 +223,31 @@ height = 1.0
           "\n[[drawbeads]]\nname = \"b\"\ntool = \"binder\"\nline = [[30.0, -5.0, 0.5]]\n"
           "width = 4.0\nheight = 1.0\nclosure = [0.0, 1.0]\nrestraining_force = [0.0, 5.0]\n",
           {"drawbeads[0].line", "at least 2 points"});
+}
+
+TEST(DrawbeadRun, RoundBeadNeedsItsFrictionWithAPressureDependentContact) {
+  // A round bead takes the binder contact's dynamic coefficient unless it has its own; a contact
+  // whose coefficient depends on the pressure has none to give: refused, naming the bead and the
+  // tool; with the bead's own friction it builds.
+  const std::string round = R"(
+[[drawbeads]]
+name = "round"
+tool = "binder"
+line = [[30.0, -5.0, 0.5], [30.0, 15.0, 0.5]]
+width = 4.0
+force = "round_bead"
+bead_radius = 4.0
+shoulder_radius = 4.0
+depth = 4.0
+flow_stress = 300.0
+)";
+  CaseConfig config = strip_case("drawbead_round_pressure_friction", round);
+  config.contacts[1].friction_pressure_table = {{{1.0, 0.12}}, {{10.0, 0.1}}};
+  test::expect_input_error(
+      [&] { build_model(config); },
+      {"drawbeads[0] (round)", "tool 'binder'", "pressure-dependent", "give the bead's friction"});
+  config.drawbeads[0].friction = 0.1;
+  EXPECT_NO_THROW(build_model(config));
 }
 
 }  // namespace
