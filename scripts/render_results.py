@@ -1,5 +1,5 @@
 #!/usr/bin/env pvbatch
-"""Renders a sheetform run's blank at a frame (the last by default): thinning and plastic strain images.
+"""Renders a sheetform run's blank at a frame (the last by default): thinning, plastic strain and formability zone images.
 
 Run with ParaView's batch Python, under a virtual display:
 
@@ -22,6 +22,10 @@ requested size in pixels (width height), their names prefixed by --prefix:
   thickened.
 - `plastic_strain.png`: the cell array `plastic_strain` (equivalent plastic strain, the mean
   through the thickness, -).
+- `formability_zone.png`, when the blank has the cell array `formability_zone` (results of
+  builds with the formability fields, docs/formability.md): each element coloured by its zone,
+  safe green, insufficient stretching grey, wrinkling tendency purple, risk of cracks yellow,
+  severe thinning orange, cracks red.
 
 Each has a scalar bar titled with the quantity and its unit, a text with the case title, the
 time (ms) and the stroke tool's travel (mm), a fixed isometric-style camera (from -x, -y, +z,
@@ -43,6 +47,12 @@ IMAGES = [
     ("thinning", "Thinning", "(%)", "thinning.png"),
     ("plastic_strain", "Equivalent plastic strain, thickness mean", "(-)", "plastic_strain.png"),
 ]
+# The formability zones (docs/formability.md): code, name, colour, drawn when the blank has the
+# cell array formability_zone.
+ZONE_IMAGE = ("formability_zone", "Formability zone", "", "formability_zone.png")
+ZONES = [(0, "safe", [0.2, 0.65, 0.2]), (1, "insufficient stretching", [0.6, 0.6, 0.6]),
+         (2, "wrinkling tendency", [0.5, 0.3, 0.75]), (3, "risk of cracks", [1.0, 0.85, 0.1]),
+         (4, "severe thinning", [1.0, 0.5, 0.0]), (5, "cracks", [0.85, 0.1, 0.1])]
 COLOR_MAP = "Turbo"  # a ParaView colour map preset
 CAMERA_DIRECTION = [-1.0, -1.0, 1.3]  # from the blank's centre towards the camera; z is up
 
@@ -213,11 +223,18 @@ def render(simple, view, args, case, blank, times, out_dir):
     view.CameraViewUp = [0.0, 0.0, 1.0]
     view.ResetCamera(*bounds)
 
-    for array, bar_title, unit, file_name in IMAGES:
+    zones = "formability_zone" in blank.CellData.keys()
+    for array, bar_title, unit, file_name in IMAGES + ([ZONE_IMAGE] if zones else []):
         simple.ColorBy(display, ("CELLS", array))
         lut = simple.GetColorTransferFunction(array)
-        lut.ApplyPreset(COLOR_MAP, True)
-        display.RescaleTransferFunctionToDataRange(False, True)
+        if array == "formability_zone":  # categories, one colour per zone
+            lut.InterpretValuesAsCategories = 1
+            lut.AnnotationsInitialized = 1
+            lut.Annotations = [v for code, name, _ in ZONES for v in (str(code), name)]
+            lut.IndexedColors = [c for _, _, colour in ZONES for c in colour]
+        else:
+            lut.ApplyPreset(COLOR_MAP, True)
+            display.RescaleTransferFunctionToDataRange(False, True)
         bar = simple.GetScalarBar(lut, view)
         bar.Title = bar_title
         bar.ComponentTitle = unit

@@ -137,7 +137,10 @@ TEST(MixedBlank, QuadsAndTrianglesRunWithTheEnergyBalance) {
                               " --points 63 --cells 60"
                               " --point-arrays displacement:3 velocity:3 contact_force:3"
                               " --cell-arrays thickness:1 plastic_strain:1 stress_mid:6"
-                              " stress_top:6 stress_bottom:6 > '" +
+                              " stress_top:6 stress_bottom:6 major_strain_bottom:1"
+                              " minor_strain_bottom:1 major_strain_mid:1 minor_strain_mid:1"
+                              " major_strain_top:1 minor_strain_top:1 thinning_percent:1"
+                              " flc_margin:1 formability_zone:1 wrinkle_indicator:1 > '" +
                               log.string() + "' 2>&1";
   const int status = std::system(command.c_str());
   std::ifstream in(log);
