@@ -53,6 +53,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench_host.hpp"
 #include "contact/cached_search.hpp"
 #include "contact/contact_search.hpp"
 #include "contact/modified_search.hpp"
@@ -73,17 +74,7 @@ double punch(double x, double y) {
   return 20.0 * std::exp(-(x * x + y * y) / 5000.0);
 }
 
-std::string machine_name() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("model name", 0) == 0) {
-      const auto colon = line.find(':');
-      return colon == std::string::npos ? line : line.substr(colon + 2);
-    }
-  }
-  return "unknown";
-}
+using bench::machine_name;
 
 /// n x n cells, 2 n^2 triangles, alternating diagonals, interior nodes jittered by up to 0.2 h.
 TriangleSurface make_tool(int n) {

@@ -12,6 +12,7 @@
 #include <limits>
 #include <string>
 
+#include "bench_host.hpp"
 #include "solver/formability_output.hpp"
 
 namespace {
@@ -20,17 +21,7 @@ using namespace sf;
 
 constexpr int kCells = 100;  // elements per side, 1 mm each
 
-std::string machine_name() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("model name", 0) == 0) {
-      const auto colon = line.find(':');
-      return colon == std::string::npos ? line : line.substr(colon + 2);
-    }
-  }
-  return "unknown";
-}
+using bench::machine_name;
 
 Model make_plate_model() {
   Model model;

@@ -22,6 +22,7 @@
 #include <variant>
 #include <vector>
 
+#include "bench_host.hpp"
 #include "element/shell_directors.hpp"
 #include "element/shell_forces.hpp"
 #include "element/shell_part.hpp"
@@ -38,17 +39,7 @@ constexpr double kNu = 0.3;       // -
 constexpr double kRho = 7.85e-9;  // tonne/mm^3
 constexpr int kRepeats = 5;       // timed batches per case; the fastest is reported
 
-std::string machine_name() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("model name", 0) == 0) {
-      const auto colon = line.find(':');
-      return colon == std::string::npos ? line : line.substr(colon + 2);
-    }
-  }
-  return "unknown";
-}
+using bench::machine_name;
 
 struct Plate {
   Matrix3X x;
