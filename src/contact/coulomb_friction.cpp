@@ -6,21 +6,12 @@
 #include <cmath>
 
 #include "core/errors.hpp"
+#include "core/piecewise_linear.hpp"
 
 namespace sf {
 
 double FrictionTable::operator()(double at) const {
-  if (!(at > x.front())) {
-    return y.front();
-  }
-  if (!(at < x.back())) {
-    return y.back();
-  }
-  // x[k - 1] <= at < x[k]
-  const std::size_t k =
-      static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), at) - x.begin());
-  const double w = (at - x[k - 1]) / (x[k] - x[k - 1]);
-  return y[k - 1] + w * (y[k] - y[k - 1]);
+  return piecewise_linear(x, y, at);
 }
 
 void FrictionTable::validate(std::string_view tool, std::string_view name) const {

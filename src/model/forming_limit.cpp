@@ -2,24 +2,14 @@
 
 #include <fmt/core.h>
 
-#include <algorithm>
 #include <cmath>
+
+#include "core/piecewise_linear.hpp"
 
 namespace sf {
 
 double FormingLimitCurve::major_at(double minor) const {
-  if (minor <= points.front()[0]) {
-    return points.front()[1];
-  }
-  if (minor >= points.back()[0]) {
-    return points.back()[1];
-  }
-  const auto above = std::upper_bound(points.begin(), points.end(), minor,
-                                      [](double x, const auto& p) { return x < p[0]; });
-  const auto& b = *above;
-  const auto& a = *(above - 1);
-  const double s = (minor - a[0]) / (b[0] - a[0]);
-  return a[1] + s * (b[1] - a[1]);
+  return piecewise_linear(points, minor);
 }
 
 double keeler_brazier_flc0_percent(double n, double thickness_mm) {

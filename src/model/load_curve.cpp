@@ -1,5 +1,7 @@
 #include "model/load_curve.hpp"
 
+#include "core/piecewise_linear.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -16,16 +18,7 @@ double LoadCurve::value(double t) const {
   if (times_.empty()) {
     return 0.0;
   }
-  if (t <= times_.front()) {
-    return values_.front();
-  }
-  if (t >= times_.back()) {
-    return values_.back();
-  }
-  const auto upper = std::upper_bound(times_.begin(), times_.end(), t);
-  const std::size_t i = static_cast<std::size_t>(upper - times_.begin()) - 1;
-  const double s = (t - times_[i]) / (times_[i + 1] - times_[i]);
-  return values_[i] + s * (values_[i + 1] - values_[i]);
+  return piecewise_linear(times_, values_, t);
 }
 
 double LoadCurve::integral(double t) const {

@@ -31,6 +31,18 @@ Corners flat_rectangle(double a, double b) {
   return c;
 }
 
+// A strip element of width w along x and depth d along y, flat at z = 0, bent about the y axis
+// onto a cylinder of mid-surface radius R (its centre at z = -R), its nodal normals radial.
+Corners strip_bent_onto_cylinder(double w, double d, double R) {
+  Corners c = flat_rectangle(w, d);
+  for (std::size_t a = 0; a < 4; ++a) {
+    const double angle = (c.X[a].x() - 0.5 * w) / R;
+    c.x[a] = Vec3(R * std::sin(angle), c.X[a].y(), R * std::cos(angle) - R);
+    c.n[a] = Vec3(std::sin(angle), 0.0, std::cos(angle));
+  }
+  return c;
+}
+
 TEST(SurfaceStrain, HomogeneousStretchIsExactAtEverySurface) {
   Corners c = flat_rectangle(2.0, 1.0);
   const double l1 = 1.2, l2 = 0.9, t0 = 1.0, t = t0 / (l1 * l2);
@@ -71,15 +83,9 @@ TEST(SurfaceStrain, RigidMotionOfAWarpedElementIsNoStrain) {
 }
 
 TEST(SurfaceStrain, StripBentOntoACylinder) {
-  // A strip element of width w along x and depth d along y, flat at z = 0, bent about the y axis
-  // onto a cylinder of mid-surface radius R (its centre at z = -R), thickness unchanged.
+  // Thickness unchanged.
   const double w = 2.0, d = 1.0, R = 20.0, t = 1.0, phi = w / (2.0 * R);
-  Corners c = flat_rectangle(w, d);
-  for (std::size_t a = 0; a < 4; ++a) {
-    const double angle = (c.X[a].x() - 0.5 * w) / R;
-    c.x[a] = Vec3(R * std::sin(angle), c.X[a].y(), R * std::cos(angle) - R);
-    c.n[a] = Vec3(std::sin(angle), 0.0, std::cos(angle));
-  }
+  const Corners c = strip_bent_onto_cylinder(w, d, R);
   for (double zeta : {-1.0, 1.0}) {
     const double r = R + 0.5 * zeta * t;  // the surface's radius
     const Strain6 e = surface_log_strain(c.view(), zeta, t, t);
@@ -128,12 +134,7 @@ TEST(SurfacePrincipalStrains, HomogeneousStretchOfTiltedDistortedElements) {
 // the chord's strain, minor 0 across), the bottom shortens (major 0 across, minor the chord's).
 TEST(SurfacePrincipalStrains, StripBentOntoACylinderHasTheChordsStrain) {
   const double w = 2.0, d = 1.0, R = 20.0, t = 1.0, phi = w / (2.0 * R);
-  Corners c = flat_rectangle(w, d);
-  for (std::size_t a = 0; a < 4; ++a) {
-    const double angle = (c.X[a].x() - 0.5 * w) / R;
-    c.x[a] = Vec3(R * std::sin(angle), c.X[a].y(), R * std::cos(angle) - R);
-    c.n[a] = Vec3(std::sin(angle), 0.0, std::cos(angle));
-  }
+  const Corners c = strip_bent_onto_cylinder(w, d, R);
   const auto chord_strain = [&](double zeta) {
     return std::log((R + 0.5 * zeta * t) * std::sin(phi) / (R * phi));
   };
