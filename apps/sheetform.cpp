@@ -50,7 +50,6 @@
 #include "solver/case_digest.hpp"
 #include "solver/case_model.hpp"
 #include "solver/checkpoint.hpp"
-#include "solver/distributed_run.hpp"
 #include "solver/dynain_writer.hpp"
 #include "solver/explicit_driver.hpp"
 #include "solver/formed_part.hpp"
@@ -263,13 +262,13 @@ void prepare_results_folder(const sf::MpiSession& mpi, const Arguments& args, co
   }
 }
 
-// The share of the blank this rank computes (nullptr: all of it, a serial run).
+// The share of the blank this rank computes (nullptr: all of it, a serial run). A static
+// analysis is computed whole on rank 0 (its solver, CHOLMOD's, is a serial direct solver).
 std::shared_ptr<sf::Domain> make_domain(const sf::MpiSession& mpi, const sf::Model& model,
                                         const std::string& case_file) {
-  if (mpi.size() <= 1) {
+  if (mpi.size() <= 1 || model.analysis.is_static()) {
     return nullptr;
   }
-  sf::check_distributable(model, case_file, mpi.size());
   if (!mpi.same_on_all_ranks(sf::mesh_digest(model))) {
     throw sf::InputError(case_file +
                          ": the MPI ranks built different meshes from the case (gmsh gave a "
@@ -286,7 +285,7 @@ std::shared_ptr<sf::Domain> make_domain(const sf::MpiSession& mpi, const sf::Mod
   }
 }
 
-void print_parallel_banner(const sf::MpiSession& mpi) {
+void print_parallel_banner(const sf::MpiSession& mpi, const sf::Model& model) {
   const int threads = omp_get_max_threads();
   const bool crowded = threads > 1 && threads * mpi.local_size() > omp_get_num_procs() &&
                        std::getenv("OMP_WAIT_POLICY") == nullptr;
@@ -294,6 +293,13 @@ void print_parallel_banner(const sf::MpiSession& mpi) {
                                  "waiting threads spin and slow the run"
                                : "";
   const int cores = omp_get_num_procs();
+  if (mpi.size() > 1 && model.analysis.is_static()) {
+    sf::log_info(
+        "Ranks       {} (MPI): the static analysis runs on rank 0 alone, {} thread{} (its solver, "
+        "CHOLMOD's, is a serial direct solver); the other ranks wait{}\n\n",
+        mpi.size(), threads, threads == 1 ? "" : "s", advice);
+    return;
+  }
   if (mpi.size() > 1) {
     sf::log_info("Ranks       {} (MPI), {} thread{} each (OpenMP; {} core{} for rank 0){}\n\n",
                  mpi.size(), threads, threads == 1 ? "" : "s", cores, cores == 1 ? "" : "s",
@@ -360,7 +366,10 @@ int run(const Arguments& args, const sf::MpiSession& mpi) {
   }
   prepare_results_folder(mpi, args, out, model);
   sf::log_info("Results     {}\n", out.string());
-  print_parallel_banner(mpi);
+  print_parallel_banner(mpi, model);
+  if (model.analysis.is_static() && mpi.rank() != 0) {
+    return sf::exit_ok;  // rank 0 computes and reports the static analysis
+  }
   // 4. Run the explicit time loop (and springback when the case asks), or the static analysis.
   options.output_directory = out;
   options.restart_file = args.restart.empty() ? fs::path() : fs::absolute(args.restart);

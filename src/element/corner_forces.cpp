@@ -74,6 +74,39 @@ void gather_corner_forces(const NodeCorners& nodes, std::span<const double> corn
   }
 }
 
+void add_corner_masses(const NodeCorners& nodes, std::span<const double> corner_mass, VectorX& mass,
+                       VectorX& inertia) {
+  const int n = nodes.node_count();
+  const int* offsets = nodes.offsets.data();
+  const int* slots = nodes.slots.data();
+  const double* c = corner_mass.data();
+#pragma omp parallel for schedule(static) if (n >= kMinParallelNodes)
+  for (int i = 0; i < n; ++i) {
+    for (int j = offsets[i]; j < offsets[i + 1]; ++j) {
+      const double* corner = c + kMassCornerWidth * static_cast<std::ptrdiff_t>(slots[j]);
+      mass[i] += corner[0];
+      inertia[i] += corner[1];
+    }
+  }
+}
+
+void add_flagged_corner_forces(const NodeCorners& nodes, std::span<const double> corners,
+                               Matrix3X& f) {
+  const int n = nodes.node_count();
+  const int* offsets = nodes.offsets.data();
+  const int* slots = nodes.slots.data();
+  const double* c = corners.data();
+#pragma omp parallel for schedule(static) if (n >= kMinParallelNodes)
+  for (int i = 0; i < n; ++i) {
+    for (int j = offsets[i]; j < offsets[i + 1]; ++j) {
+      const double* corner = c + kLoadCornerWidth * static_cast<std::ptrdiff_t>(slots[j]);
+      if (corner[3] != 0.0) {
+        f.col(i) += Vec3(corner[0], corner[1], corner[2]);
+      }
+    }
+  }
+}
+
 void gather_half_thickness(const NodeCorners& nodes, std::span<const double> thickness,
                            const VectorX& inverse_element_count, VectorX& half_thickness) {
   const int n = nodes.node_count();

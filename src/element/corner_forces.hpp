@@ -72,6 +72,27 @@ NodeCorners build_node_corners(const ShellPart& part, int n_nodes);
 void gather_corner_forces(const NodeCorners& nodes, std::span<const double> corners, Matrix3X& f,
                           Matrix3X& m);
 
+/// Doubles per corner slot of the masses an element adds to its nodes (mass scaling): the mass
+/// (tonne) and the rotational inertia (tonne mm^2) each of its nodes receives.
+inline constexpr int kMassCornerWidth = 2;
+
+/// mass[i] += c1 + ..., inertia[i] likewise, one corner at a time onto the value the node has, in
+/// slot order, from corner_mass (kMassCornerWidth per slot; 0 at the slots of elements that add
+/// nothing, which leaves the sum's bits as they are): the bits of adding each element's share
+/// to its nodes in element order. Threads share out the nodes.
+void add_corner_masses(const NodeCorners& nodes, std::span<const double> corner_mass, VectorX& mass,
+                       VectorX& inertia);
+
+/// Doubles per corner slot of a load the elements put on their nodes (pressure): the force (N)
+/// and a flag, 1 where the element carries the load, 0 where it does not.
+inline constexpr int kLoadCornerWidth = 4;
+
+/// f.col(i) += each of node i's flagged corner forces, one at a time in slot order, onto the
+/// value the node has (corners: kLoadCornerWidth per slot): the bits of adding each loaded
+/// element's share to its nodes in element order. Threads share out the nodes.
+void add_flagged_corner_forces(const NodeCorners& nodes, std::span<const double> corners,
+                               Matrix3X& f);
+
 /// half_thickness[i] = (sum over node i's corners of half their element's thickness) *
 /// inverse_element_count[i]: the mean half thickness around the node (mm), the contact offset.
 void gather_half_thickness(const NodeCorners& nodes, std::span<const double> thickness,

@@ -498,8 +498,9 @@ void set_mass_and_time_step(const CaseConfig& config, Model& model, const ShellS
   }
   set_up_mass_scaling(blank.part, blank.mesh.nodes, state, control.mass_scaling_dt,
                       control.time_step_safety, blank.scaling);
-  const TimeStepCheck step = scale_mass_to_time_step(blank.part, blank.mesh.nodes, blank.scaling,
-                                                     blank.mass, blank.rotational_inertia);
+  const TimeStepCheck step =
+      scale_mass_to_time_step(blank.part, blank.node_corners, blank.mesh.nodes, blank.scaling,
+                              blank.mass, blank.rotational_inertia);
   const double limit = control.mass_scaling_max_added;
   if (limit > 0.0 && blank.scaling.added_mass > limit * blank.physical_mass) {
     throw InputError(fmt::format(

@@ -19,6 +19,12 @@ void add_nodal_loads(std::span<const NodalLoad> loads, double time, Matrix3X& f_
 
 void compute_external_forces(const Model& model, double time, const Matrix3X& x, Matrix3X& f_ext,
                              Matrix3X& m_ext, std::span<const NodalLoad> released) {
+  compute_nodal_loads(model, time, f_ext, m_ext, released);
+  add_pressure_loads(model, time, x, f_ext);
+}
+
+void compute_nodal_loads(const Model& model, double time, Matrix3X& f_ext, Matrix3X& m_ext,
+                         std::span<const NodalLoad> released) {
   const ExternalLoads& loads = model.loads;
   f_ext.setZero();
   m_ext.setZero();
@@ -31,27 +37,31 @@ void compute_external_forces(const Model& model, double time, const Matrix3X& x,
   }
   add_nodal_loads(loads.nodal, time, f_ext, m_ext);
   add_nodal_loads(released, time, f_ext, m_ext);
+}
+
+void add_pressure_loads(const Model& model, double time, const Matrix3X& x, Matrix3X& f_ext) {
   const ShellPart& part = model.blank.part;
   const Eigen::Index n_quads = part.quads.cols();
-  for (const PressureLoad& load : loads.pressures) {
+  for (const PressureLoad& load : model.loads.pressures) {
     const double p = load.scale.value(time) * load.pressure;
     for (int e : load.elements) {
-      // The vector area is shared equally by the element's nodes; the pressure on the top face
-      // pushes along -normal.
-      const Vec3 area = element_vector_area(part, x, e);
+      const Vec3 f = pressure_node_force(part, x, e, p);
       if (e < n_quads) {
-        const Vec3 f = (-0.25 * p) * area;
         for (int a = 0; a < 4; ++a) {
           f_ext.col(part.quads(a, e)) += f;
         }
       } else {
-        const Vec3 f = (-p / 3.0) * area;
         for (int a = 0; a < 3; ++a) {
           f_ext.col(part.triangles(a, e - n_quads)) += f;
         }
       }
     }
   }
+}
+
+Vec3 pressure_node_force(const ShellPart& part, const Matrix3X& x, int e, double p) {
+  const Vec3 area = element_vector_area(part, x, e);
+  return e < part.quads.cols() ? Vec3((-0.25 * p) * area) : Vec3((-p / 3.0) * area);
 }
 
 Vec3 element_vector_area(const ShellPart& part, const Matrix3X& x, int e) {

@@ -10,8 +10,22 @@ namespace sf {
 
 /// Sets f_ext (N) and m_ext (N mm), 3 x nodes, to the model's loads at `time` (s) on the
 /// coordinates x (mm), and the `released` nodal loads (summed after the model's nodal loads).
+/// The same as compute_nodal_loads then add_pressure_loads.
 void compute_external_forces(const Model& model, double time, const Matrix3X& x, Matrix3X& f_ext,
                              Matrix3X& m_ext, std::span<const NodalLoad> released = {});
+
+/// Sets f_ext (N) and m_ext (N mm) to the loads that do not depend on the configuration: gravity,
+/// the model's nodal loads, then the `released` ones, at `time` (s).
+void compute_nodal_loads(const Model& model, double time, Matrix3X& f_ext, Matrix3X& m_ext,
+                         std::span<const NodalLoad> released = {});
+
+/// Adds the pressure loads at `time` (s) on the coordinates x (mm) to f_ext (N): each load in
+/// turn, its elements in ascending order, each element's share to its nodes.
+void add_pressure_loads(const Model& model, double time, const Matrix3X& x, Matrix3X& f_ext);
+
+/// The force (N) pressure p (MPa) puts on each node of blank element e on the coordinates x: its
+/// vector area shared equally by its nodes, pushing the top face along -normal.
+Vec3 pressure_node_force(const ShellPart& part, const Matrix3X& x, int e, double p);
 
 /// The vector area (mm^2) of blank element e (quads, then triangles, as in ShellPart) on the
 /// coordinates x: along the element's normal, which points to its top side (the +normal side a

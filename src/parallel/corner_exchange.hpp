@@ -74,6 +74,26 @@ void sum_at_held_nodes(const RankPlan& plan, const double* corners, const double
   }
 }
 
+/// For every held node of the plan, each of its entries (rank_plan.hpp) in list order (the serial
+/// slot order) handed to visit(node, values), W values each: for sums onto a value the node
+/// already has. corners and received as for sum_at_held_nodes. Threads share out the nodes
+/// (visit writes node-own data).
+template <int W, typename Visit>
+void for_each_held_node_entry(const RankPlan& plan, const double* corners, const double* received,
+                              const Visit& visit) {
+  const int n = static_cast<int>(plan.nodes.size());
+#pragma omp parallel for schedule(static) if (n >= 1024)
+  for (int i = 0; i < n; ++i) {
+    const int node = plan.nodes[static_cast<std::size_t>(i)];
+    for (int k = plan.gather_offsets[static_cast<std::size_t>(i)];
+         k < plan.gather_offsets[static_cast<std::size_t>(i) + 1]; ++k) {
+      const int entry = plan.gather_entries[static_cast<std::size_t>(k)];
+      visit(node, entry >= 0 ? corners + W * static_cast<std::ptrdiff_t>(entry)
+                             : received + W * static_cast<std::ptrdiff_t>(-1 - entry));
+    }
+  }
+}
+
 /// The reference node gather: for every held node of the plan, its entries (rank_plan.hpp)
 /// summed in list order from 0.0, per value, into node_values (width x n_nodes, node-major like
 /// the corners; written only at held nodes). corners: width x n_corners; received: width x

@@ -63,7 +63,11 @@ MpiDomain::MpiDomain(const QuadConn& quads, const TriConn& triangles, int n_node
       runs_(sf::element_runs(plan_.elements, static_cast<int>(quads.cols()))),
       forces_(plan_, kCornerWidth),
       thickness_(plan_, 1),
+      masses_(plan_, kMassCornerWidth),
+      loads_(plan_, kLoadCornerWidth),
       received_forces_(static_cast<std::size_t>(plan_.receive_size) * kCornerWidth),
+      received_masses_(static_cast<std::size_t>(plan_.receive_size) * kMassCornerWidth),
+      received_loads_(static_cast<std::size_t>(plan_.receive_size) * kLoadCornerWidth),
       received_thickness_(static_cast<std::size_t>(plan_.receive_size)),
       thickness_corners_(static_cast<std::size_t>(plan_.n_corners), 0.0),
       node_layout_(gather_layout(plan_.owned_nodes, comm, plan_.rank, plan_.ranks)),
@@ -86,6 +90,35 @@ void MpiDomain::assemble_corners(const NodeCorners& /*nodes*/, std::span<const d
                                       m(c, node) = sum[3 + c];
                                     }
                                   });
+}
+
+void MpiDomain::add_corner_masses(const NodeCorners& /*nodes*/, std::span<const double> corner_mass,
+                                  VectorX& mass, VectorX& inertia) {
+  {
+    const PhaseTimer timer(communication_seconds_);
+    masses_.exchange(corner_mass, received_masses_, comm_);
+  }
+  // As sf::add_corner_masses: onto the node's value, one corner at a time in serial slot order.
+  for_each_held_node_entry<kMassCornerWidth>(plan_, corner_mass.data(), received_masses_.data(),
+                                             [&](int node, const double* corner) {
+                                               mass[node] += corner[0];
+                                               inertia[node] += corner[1];
+                                             });
+}
+
+void MpiDomain::add_flagged_corner_forces(const NodeCorners& /*nodes*/,
+                                          std::span<const double> corners, Matrix3X& f) {
+  {
+    const PhaseTimer timer(communication_seconds_);
+    loads_.exchange(corners, received_loads_, comm_);
+  }
+  // As sf::add_flagged_corner_forces: onto the node's value, in serial slot order.
+  for_each_held_node_entry<kLoadCornerWidth>(
+      plan_, corners.data(), received_loads_.data(), [&](int node, const double* corner) {
+        if (corner[3] != 0.0) {
+          f.col(node) += Vec3(corner[0], corner[1], corner[2]);
+        }
+      });
 }
 
 void MpiDomain::assemble_half_thickness(const NodeCorners& nodes, std::span<const double> thickness,

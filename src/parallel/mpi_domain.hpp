@@ -36,6 +36,10 @@ class MpiDomain final : public Domain {
   std::span<const int> ghost_nodes() const override { return ghost_nodes_; }
   void assemble_corners(const NodeCorners& nodes, std::span<const double> corners, Matrix3X& f,
                         Matrix3X& m) override;
+  void add_corner_masses(const NodeCorners& nodes, std::span<const double> corner_mass,
+                         VectorX& mass, VectorX& inertia) override;
+  void add_flagged_corner_forces(const NodeCorners& nodes, std::span<const double> corners,
+                                 Matrix3X& f) override;
   void assemble_half_thickness(const NodeCorners& nodes, std::span<const double> thickness,
                                const VectorX& inverse_element_count,
                                VectorX& half_thickness) override;
@@ -70,7 +74,11 @@ class MpiDomain final : public Domain {
   std::vector<int> ghost_nodes_;
   CornerExchange forces_;     ///< kCornerWidth per corner
   CornerExchange thickness_;  ///< 1 per corner
+  CornerExchange masses_;     ///< kMassCornerWidth per corner (mass scaling)
+  CornerExchange loads_;      ///< kLoadCornerWidth per corner (pressure loads)
   std::vector<double> received_forces_;
+  std::vector<double> received_masses_;
+  std::vector<double> received_loads_;
   std::vector<double> received_thickness_;
   std::vector<double> thickness_corners_;  ///< half the element's thickness at its own slots
   RootLayout node_layout_;

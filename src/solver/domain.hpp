@@ -55,6 +55,18 @@ class Domain {
   virtual void assemble_corners(const NodeCorners& nodes, std::span<const double> corners,
                                 Matrix3X& f, Matrix3X& m) = 0;
 
+  /// mass and inertia at the nodes this process holds, each node's corners added onto them one at
+  /// a time in ascending slot order (add_corner_masses: the serial bits); corner_mass:
+  /// kMassCornerWidth per slot, written by this process at its elements' slots. Collective.
+  virtual void add_corner_masses(const NodeCorners& nodes, std::span<const double> corner_mass,
+                                 VectorX& mass, VectorX& inertia) = 0;
+
+  /// f at the nodes this process holds, each node's flagged corner forces added onto it one at a
+  /// time in ascending slot order (add_flagged_corner_forces: the serial bits); corners:
+  /// kLoadCornerWidth per slot, written by this process at all its elements' slots. Collective.
+  virtual void add_flagged_corner_forces(const NodeCorners& nodes, std::span<const double> corners,
+                                         Matrix3X& f) = 0;
+
   /// The contact offset at the nodes this process holds: half the mean thickness (mm) of the
   /// elements around each node (as gather_half_thickness).
   virtual void assemble_half_thickness(const NodeCorners& nodes, std::span<const double> thickness,
@@ -107,6 +119,14 @@ class SerialDomain final : public Domain {
   void assemble_corners(const NodeCorners& nodes, std::span<const double> corners, Matrix3X& f,
                         Matrix3X& m) override {
     gather_corner_forces(nodes, corners, f, m);
+  }
+  void add_corner_masses(const NodeCorners& nodes, std::span<const double> corner_mass,
+                         VectorX& mass, VectorX& inertia) override {
+    sf::add_corner_masses(nodes, corner_mass, mass, inertia);
+  }
+  void add_flagged_corner_forces(const NodeCorners& nodes, std::span<const double> corners,
+                                 Matrix3X& f) override {
+    sf::add_flagged_corner_forces(nodes, corners, f);
   }
   void assemble_half_thickness(const NodeCorners& nodes, std::span<const double> thickness,
                                const VectorX& inverse_element_count,

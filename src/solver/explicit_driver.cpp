@@ -717,8 +717,8 @@ RunSummary run_explicit(const Model& model, const RunOptions& options, SolutionS
     }
   }
   // The forming summary above is the state with the tools in place; springback goes on from it,
-  // on the output process alone in a distributed run (the drivers allow only the implicit
-  // springback there): it has the whole state, and computes it as a serial run.
+  // on the output process alone in a distributed run (implicit or by dynamic relaxation): it has
+  // the whole state, gathered above, and computes it as a serial run.
   if (model.springback && s.domain->processes() > 1) {
     if (!root) {
       return summary;

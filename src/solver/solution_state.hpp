@@ -113,6 +113,8 @@ struct SolutionState {
   std::vector<ExactSum> contact_sums;  ///< scratch: every pair's exact sums of a contact call
   /// One per Model::drawbeads: each node's stick force across the bead (sized by the first call).
   std::vector<DrawbeadState> drawbeads;
+  /// Scratch of the pressure loads: kLoadCornerWidth per corner slot (sized by the first call).
+  std::vector<double> pressure_corners;
   /// Springback by dynamic relaxation: the contact is off, and the forces the tools held the
   /// blank with act as these nodal loads (released over time) besides the model's own.
   bool contact_off = false;

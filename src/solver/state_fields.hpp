@@ -284,9 +284,11 @@ inline constexpr StateField bound_slack{
 
 /// SolutionState members visit_state_fields does not visit, and why (tests/solver/
 /// test_state_fields.cpp counts the members: one added must be described above or named here).
-inline constexpr std::array<std::string_view, 15> kStateLeftOut = {
+inline constexpr std::array<std::string_view, 17> kStateLeftOut = {
     "mass_before: scratch of one cycle's mass scaling",
     "inertia_before: scratch of one cycle's mass scaling",
+    "scaling.scaled_dt, corner_mass: scratch of one cycle's mass scaling",
+    "pressure_corners: scratch of one cycle's pressure loads",
     "scaling.target_dt, safety, element_mass, inertia_factor: the model's, set at the start",
     "element_pass: the corner buffer and per-thread sums, scratch",
     "domain: how the process shares the blank, not state",

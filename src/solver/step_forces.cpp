@@ -263,10 +263,53 @@ void add_drawbead_forces(const Model& model, SolutionState& s, double dt) {
   }
 }
 
+// The pressure loads (following the deforming surface) added to s.f_ext over the processes: each
+// process writes its elements' shares to their corner slots, flagged where the element carries
+// the load, and every held node adds its flagged corners in the serial order.
+void add_pressure_forces(const Model& model, SolutionState& s) {
+  if (model.loads.pressures.empty()) {
+    return;
+  }
+  const ShellPart& part = model.blank.part;
+  const int n_quads = static_cast<int>(part.quads.cols());
+  const auto n_corners = static_cast<std::size_t>(corner_count(part));
+  if (s.pressure_corners.size() != kLoadCornerWidth * n_corners) {
+    s.pressure_corners.assign(kLoadCornerWidth * n_corners, 0.0);
+  }
+  const ElementRun all{0, element_count(part)};
+  const std::span<const ElementRun> runs = s.domain->element_runs().empty()
+                                               ? std::span<const ElementRun>(&all, 1)
+                                               : s.domain->element_runs();
+  for (const PressureLoad& load : model.loads.pressures) {
+    const double p = load.scale.value(s.time) * load.pressure;
+    auto next = load.elements.begin();  // ascending, as the runs
+    for (const ElementRun& run : runs) {
+      for (int e = run.begin; e < run.end; ++e) {
+        next = std::lower_bound(next, load.elements.end(), e);
+        const bool carries = next != load.elements.end() && *next == e;
+        const Vec3 f = carries ? pressure_node_force(part, s.x, e, p) : Vec3::Zero();
+        const int n_nodes = e < n_quads ? 4 : 3;
+        const int slot =
+            e < n_quads ? quad_corner_slot(e, 0) : triangle_corner_slot(n_quads, e - n_quads, 0);
+        double* c =
+            s.pressure_corners.data() + kLoadCornerWidth * static_cast<std::ptrdiff_t>(slot);
+        for (int a = 0; a < n_nodes; ++a, c += kLoadCornerWidth) {
+          c[0] = f(0);
+          c[1] = f(1);
+          c[2] = f(2);
+          c[3] = carries ? 1.0 : 0.0;
+        }
+      }
+    }
+    s.domain->add_flagged_corner_forces(model.blank.node_corners, s.pressure_corners, s.f_ext);
+  }
+}
+
 }  // namespace
 
 ShellForceResult compute_forces(const Model& model, SolutionState& s, double dt) {
-  compute_external_forces(model, s.time, s.x, s.f_ext, s.m_ext, s.released_loads);
+  compute_nodal_loads(model, s.time, s.f_ext, s.m_ext, s.released_loads);
+  add_pressure_forces(model, s);
   const Clock::time_point element_start = Clock::now();
   const ShellForceResult elements = compute_internal_forces(model, s, dt);
   s.times.elements += seconds_since(element_start);

@@ -30,8 +30,8 @@ namespace {
 void keep_momentum(const Model& model, SolutionState& s, double dt) {
   const double h_last = 0.5 * s.dt;
   const double h_next = 0.5 * dt;
-  // Per node: the energy removed (t[0]) and the kinetic-energy drop (t[1]), summed exactly.
-  auto exact = sum_exactly<2>(s.v.cols(), [&](long i, double* t) {
+  // Per node: the energy removed (t[0]) and the kinetic-energy drop (t[1]).
+  auto rescale = [&](long i, double* t) {
     t[0] = 0.0;
     t[1] = 0.0;
     const double m_new = s.mass[i];
@@ -58,11 +58,53 @@ void keep_momentum(const Model& model, SolutionState& s, double dt) {
       t[0] += drop - 0.5 * (1.0 - r) * i_old * h_next * h_next * u_omega.squaredNorm();
       s.omega.col(i) *= r;
     }
-  });
-  s.domain->reduce(exact);
-  const auto sums = rounded(exact);
+  };
+  // Every node this process holds keeps its momentum; each node's energies are counted by the
+  // one process that owns it, summed exactly.
+  for (const int node : s.domain->ghost_nodes()) {
+    double unused[2];
+    rescale(node, unused);
+  }
+  const auto sums = rounded(sum_over_nodes<2>(*s.domain, s.v.cols(), rescale));
   s.energies.mass_scaling += sums[0];
   s.energies.kinetic -= sums[1];
+}
+
+// The step every element allows after raising the density of those below the target
+// (mass_scaling.hpp), the masses added at the nodes this process holds. Collective.
+TimeStepCheck scale_mass(const Model& model, SolutionState& s) {
+  const ShellPart& part = model.blank.part;
+  if (s.element_dt_cycle != s.cycle) {  // no element pass at x yet: the elements' steps first
+    compute_element_time_steps(part, s.x, s.scaling.element_dt);
+  }
+  const DensityRaise raise = raise_element_densities(part, s.domain->element_runs(), s.scaling);
+  ExactSum sums[2] = {raise.added_mass, raise.newly_scaled};
+  s.domain->reduce(sums);
+  TimeStepCheck check;
+  check.mass_added = sums[0].round();
+  if (check.mass_added > 0.0) {
+    s.domain->add_corner_masses(model.blank.node_corners, s.scaling.corner_mass, s.mass,
+                                s.rotational_inertia);
+    s.scaling.added_mass += check.mass_added;
+    s.scaling.scaled_elements += static_cast<int>(sums[1].round());
+  }
+  const StableStep scaled = s.domain->smallest_time_step(s.scaling.scaled_dt);
+  check.dt = scaled.dt;
+  check.element = scaled.element;
+  return check;
+}
+
+// The step the elements allow at their densities (no mass scaling). Collective.
+TimeStepCheck physical_step(const Model& model, SolutionState& s) {
+  // The element pass of this cycle has the elements' steps at x already; otherwise compute them.
+  const StableStep physical =
+      s.element_dt_cycle == s.cycle
+          ? s.domain->smallest_time_step(s.scaling.element_dt)
+          : compute_element_time_steps(model.blank.part, s.x, s.scaling.element_dt);
+  TimeStepCheck check;
+  check.dt = s.scaling.safety * physical.dt;
+  check.element = physical.element;
+  return check;
 }
 
 }  // namespace
@@ -74,13 +116,7 @@ double compute_time_step(const Model& model, SolutionState& s) {
     s.mass_before = s.mass;  // same size: no allocation
     s.inertia_before = s.rotational_inertia;
   }
-  // The element pass of this cycle has the elements' steps at x already; otherwise compute them.
-  const StableStep physical =
-      s.element_dt_cycle == s.cycle
-          ? s.domain->smallest_time_step(s.scaling.element_dt)
-          : compute_element_time_steps(blank.part, s.x, s.scaling.element_dt);
-  const TimeStepCheck check =
-      scale_mass_to_element_steps(blank.part, physical, s.scaling, s.mass, s.rotational_inertia);
+  const TimeStepCheck check = s.scaling.enabled() ? scale_mass(model, s) : physical_step(model, s);
   if (check.mass_added > 0.0) {
     keep_momentum(model, s, check.dt);
     update_inverse_masses(s);

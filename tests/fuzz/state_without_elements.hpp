@@ -24,4 +24,13 @@ namespace sf {
                                          const VectorX& /*weight*/, VectorX& /*half_thickness*/) {
   std::abort();
 }
+[[gnu::weak]] void add_corner_masses(const NodeCorners& /*nodes*/,
+                                     std::span<const double> /*corner_mass*/, VectorX& /*mass*/,
+                                     VectorX& /*inertia*/) {
+  std::abort();
+}
+[[gnu::weak]] void add_flagged_corner_forces(const NodeCorners& /*nodes*/,
+                                             std::span<const double> /*corners*/, Matrix3X& /*f*/) {
+  std::abort();
+}
 }  // namespace sf

@@ -7,8 +7,9 @@
 # springback (on rank 0 after the gather); a closing then a draw as two operations (issue 32) at
 # 2 ranks, and a draw, a trim (removing, then cutting) and a draw on at 2 ranks; the cup with two
 # drawbead lines on the holder across the flange (issue 33: lines that cross the partitions) at 2
-# ranks. Then what a distributed run refuses or stops with:
-# mass scaling (exit 2, the key named), more ranks than elements (exit 2), an energy blow-up
+# ranks; mass scaling with a pressure load at 2 and 3 ranks, springback by dynamic relaxation and a
+# static analysis (on rank 0) at 2 ranks (issue 34). Then what a distributed run refuses or stops
+# with: more ranks than elements (exit 2), an energy blow-up
 # (exit 3, said once, the results readable up to the stop), and an element failure met by one
 # rank (exit 3, the serial run's message on every rank count).
 #   mpi_bitwise.sh SHEETFORM SOURCE_DIR WORK_DIR MPIEXEC
@@ -143,12 +144,52 @@ flange=(--set 'operations=[{name="flange", kind="forming", end="time", time=0.00
 /usr/bin/python3 "$src/scripts/compare_results.py" "$work/flange-serial" "$work/flange-2" ||
   fail "flange at 2 ranks: not the serial bits"
 
-# Refused: mass scaling, more ranks than elements (exit 2, a message naming the cause, once).
-"$mpiexec" -np 2 "$sheetform" run "$work/case/case.toml" --stroke 0.1 -q -o "$work/ms" \
-  --set control.mass_scaling_dt=6e-7 --set control.mass_scaling_max_added=0 > "$work/ms.log" 2>&1
-rc=$?
-[ "$rc" -eq 2 ] && [ "$(grep -c 'mass scaling (control.mass_scaling_dt) is not supported' "$work/ms.log")" -eq 1 ] ||
-  { fail "mass scaling at 2 ranks: exit $rc, expected 2 and one message:"; cat "$work/ms.log"; }
+# Mass scaling and a pressure load (issue 34, item 4): the steel cup with a target step that
+# scales elements at the start and more of them as the cup is drawn (mass added across the ranks'
+# borders), under 0.2 MPa on the blank's top face; serial, 2 and 3 ranks, the same bits.
+scaled=(--stroke 0.5 --set blank.element_size=1.875 --set control.mass_scaling_dt=4e-7
+        --set control.mass_scaling_max_added=0
+        --set 'load=[{group="blank", type="pressure", pressure=0.2}]')
+"$sheetform" run "$work/case/case.toml" --threads 1 -q -o "$work/scaled-serial" "${scaled[@]}" \
+  > "$work/scaled-serial.log" 2>&1 || { fail "scaled serial:"; tail -5 "$work/scaled-serial.log"; }
+for ranks in 2 3; do
+  "$mpiexec" -np "$ranks" --bind-to none "$sheetform" run "$work/case/case.toml" --threads 1 -q \
+    -o "$work/scaled-$ranks" "${scaled[@]}" > "$work/scaled-$ranks.log" 2>&1 ||
+    { fail "scaled at $ranks ranks:"; tail -5 "$work/scaled-$ranks.log"; continue; }
+  /usr/bin/python3 "$src/scripts/compare_results.py" "$work/scaled-serial" "$work/scaled-$ranks" ||
+    fail "scaled at $ranks ranks: not the serial bits"
+done
+/usr/bin/python3 - "$work/scaled-serial" <<'PY' || fail "scaled: no mass added during the draw"
+import sys, h5py, numpy as np
+with h5py.File(sys.argv[1] + "/results.h5") as f:
+    added = f["history/added_mass"][()]
+assert added[0] > 0 and added[-1] > added[0], (added[0], added[-1])
+PY
+
+# Springback by dynamic relaxation after a 2-rank draw (on rank 0 after the gather, as the
+# implicit one): the U-channel to 4 mm, the serial bits.
+dr=(--stroke 4 --set 'springback.method="dynamic_relaxation"' --set springback.release_time=2e-4)
+"$sheetform" run "$src/cases/u_channel_bhf_2450N/case.toml" -q -o "$work/dr-serial" "${dr[@]}" \
+  > "$work/dr-serial.log" 2>&1 || { fail "DR springback serial:"; tail -5 "$work/dr-serial.log"; }
+"$mpiexec" -np 2 "$sheetform" run "$src/cases/u_channel_bhf_2450N/case.toml" -q -o "$work/dr-2" \
+  "${dr[@]}" > "$work/dr-2.log" 2>&1 || { fail "DR springback at 2 ranks:"; tail -5 "$work/dr-2.log"; }
+grep -q '"dynamic_relaxation"' "$work/dr-2/summary.json" || fail "DR at 2 ranks: no relaxation"
+/usr/bin/python3 "$src/scripts/compare_results.py" "$work/dr-serial" "$work/dr-2" ||
+  fail "DR springback at 2 ranks: not the serial bits"
+
+# A static analysis at 2 ranks: computed on rank 0 alone (CHOLMOD's serial solver), said in the
+# banner, the serial bits.
+"$sheetform" run "$src/cases/shell_cantilever_end_shear/case.toml" -q -o "$work/static-serial" \
+  > "$work/static-serial.log" 2>&1 || { fail "static serial:"; tail -5 "$work/static-serial.log"; }
+"$mpiexec" -np 2 "$sheetform" run "$src/cases/shell_cantilever_end_shear/case.toml" \
+  -o "$work/static-2" > "$work/static-2.log" 2>&1 ||
+  { fail "static at 2 ranks:"; tail -5 "$work/static-2.log"; }
+grep -q "the static analysis runs on rank 0 alone" "$work/static-2.log" ||
+  fail "static at 2 ranks: the banner does not say where it runs"
+/usr/bin/python3 "$src/scripts/compare_results.py" "$work/static-serial" "$work/static-2" ||
+  fail "static at 2 ranks: not the serial bits"
+
+# Refused: more ranks than elements (exit 2, a message naming the counts).
 "$mpiexec" -np 2 "$sheetform" run "$src/cases/verify_bounce/case.toml" -q -o "$work/one" \
   > "$work/one.log" 2>&1
 rc=$?

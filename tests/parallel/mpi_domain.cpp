@@ -2,6 +2,8 @@
 // triangles, each method against what a serial run computes (issue 17, item 3):
 // - the owned nodes of all ranks partition the node set, each owned or ghost node is held;
 // - assemble_corners and assemble_half_thickness give the serial bits at every held node;
+// - add_corner_masses and add_flagged_corner_forces (mass scaling, pressure loads) add onto the
+//   nodes' values with the bits of the serial element-order rule, reading only own slots;
 // - smallest_time_step: the serial smallest step and its element (the lowest on a tie);
 // - agree: every rank gets the failure with the lowest key, whichever rank met it, and its
 //   message and kind; no failure anywhere gives none;
@@ -10,9 +12,11 @@
 // Exit code 0 when every check passes on every rank (run by ctest at 1, 2 and 3 ranks).
 #include <mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -95,6 +99,88 @@ int main(int argc, char** argv) {
       }
     }
     check(held_ok, "assembled forces, moments and half thickness: the serial bits", rank);
+
+    // Masses added by elements (mass scaling) and flagged element loads (pressure), onto values
+    // the nodes have: the bits of the serial rule, each element's share added to its nodes in
+    // element order. Every third element adds nothing (0 / flag 0). Each rank writes only its
+    // own elements' slots; the others hold NaN, which would show if they were read.
+    const auto n_quads = static_cast<int>(part.quads.cols());
+    const auto slot_of = [&](int e, int a) {
+      return e < n_quads ? quad_corner_slot(e, a) : triangle_corner_slot(n_quads, e - n_quads, a);
+    };
+    const auto node_of = [&](int e, int a) {
+      return e < n_quads ? part.quads(a, e) : part.triangles(a, e - n_quads);
+    };
+    const auto share = [](int e, int c) {
+      return e % 3 == 2 ? 0.0 : 1e-6 * (1.0 + 0.3 * std::sin(0.71 * e + c));
+    };
+    VectorX mass0(n_nodes), inertia0(n_nodes);
+    for (int i = 0; i < n_nodes; ++i) {
+      mass0[i] = 3e-5 * (1.0 + 0.1 * std::cos(1.7 * i));
+      inertia0[i] = 2e-4 * (1.0 + 0.1 * std::sin(0.3 * i));
+    }
+    VectorX mass_want = mass0, inertia_want = inertia0;
+    Matrix3X f_want = f_serial;
+    for (int e = 0; e < n_el; ++e) {
+      for (int a = 0; a < (e < n_quads ? 4 : 3); ++a) {
+        const int i = node_of(e, a);
+        mass_want[i] += share(e, 0);
+        inertia_want[i] += share(e, 1);
+        if (e % 3 != 2) {
+          f_want.col(i) += Vec3(share(e, 2), -share(e, 3), share(e, 4));
+        }
+      }
+    }
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<double> all_masses(static_cast<std::size_t>(kMassCornerWidth) * nodes.slots.size());
+    std::vector<double> all_loads(static_cast<std::size_t>(kLoadCornerWidth) * nodes.slots.size());
+    std::vector<double> own_masses(all_masses.size(), nan), own_loads(all_loads.size(), nan);
+    for (int e = 0; e < n_el; ++e) {
+      const bool own =
+          std::binary_search(domain.plan().elements.begin(), domain.plan().elements.end(), e);
+      for (int a = 0; a < (e < n_quads ? 4 : 3); ++a) {
+        const auto k = static_cast<std::size_t>(slot_of(e, a));
+        const double mass_values[2] = {share(e, 0), share(e, 1)};
+        const double load_values[4] = {share(e, 2), -share(e, 3), share(e, 4),
+                                       e % 3 == 2 ? 0.0 : 1.0};
+        for (int c = 0; c < 2; ++c) {
+          all_masses[2 * k + c] = mass_values[c];
+          own_masses[2 * k + c] = own ? mass_values[c] : nan;
+        }
+        for (int c = 0; c < 4; ++c) {
+          all_loads[4 * k + c] = load_values[c];
+          own_loads[4 * k + c] = own ? load_values[c] : nan;
+        }
+      }
+    }
+    VectorX mass_serial = mass0, inertia_serial = inertia0;
+    Matrix3X f_loads_serial = f_serial;
+    add_corner_masses(nodes, all_masses, mass_serial, inertia_serial);
+    add_flagged_corner_forces(nodes, all_loads, f_loads_serial);
+    VectorX mass = mass0, inertia = inertia0;
+    Matrix3X f_loads = f_serial;
+    domain.add_corner_masses(nodes, own_masses, mass, inertia);
+    domain.add_flagged_corner_forces(nodes, own_loads, f_loads);
+    bool serial_ok = true;
+    for (int i = 0; i < n_nodes; ++i) {
+      serial_ok = serial_ok && same_bits(mass_serial[i], mass_want[i]) &&
+                  same_bits(inertia_serial[i], inertia_want[i]);
+      for (int c = 0; c < 3; ++c) {
+        serial_ok = serial_ok && same_bits(f_loads_serial(c, i), f_want(c, i));
+      }
+    }
+    check(serial_ok, "serial corner masses and flagged loads: element-order bits", rank);
+    bool added_ok = true;
+    for (const std::span<const int> list : {domain.owned_nodes(), domain.ghost_nodes()}) {
+      for (const int i : list) {
+        added_ok =
+            added_ok && same_bits(mass[i], mass_want[i]) && same_bits(inertia[i], inertia_want[i]);
+        for (int c = 0; c < 3; ++c) {
+          added_ok = added_ok && same_bits(f_loads(c, i), f_want(c, i));
+        }
+      }
+    }
+    check(added_ok, "corner masses and flagged loads over ranks: the serial bits", rank);
 
     // The smallest step, with a tie between two elements on different ends of the mesh.
     std::vector<double> element_dt(static_cast<std::size_t>(n_el));
