@@ -11,9 +11,10 @@
 # The preset `sanitize` (CMakePresets.json) is the developers' `dev` preset (clang, Debug,
 # -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined) at -O1
 # with line tables only, linked by lld: the same checks, in about half the compile time of -O1 -g;
-# at -O0 the contact tests run 100 times slower than in Release, at -O1 about 10 times. Built: every test_* executable (GoogleTest, one per
-# tests/<module>/test_*.cpp, and the fuzz targets' replays; not sheetform, the MPI programs, the
-# benchmarks, and without --all not tests/solver's). Run: ctest's test preset `sanitize`, i.e. the
+# at -O0 the contact tests run 100 times slower than in Release, at -O1 about 10 times. Built:
+# every test_* executable (GoogleTest, one per module, tests/<module>/test_*.cpp, and the fuzz
+# targets' replays; not sheetform, the MPI programs, the benchmarks, and without --all not
+# tests/solver's). Run: ctest's test preset `sanitize`, i.e. the
 # module labels (core mesh material element contact meshing casefile results model implicit parallel threads) less
 # slow/cli/case/regression/post and the MPI runs; with --all the preset `sanitize-all`, which
 # adds the label solver.
@@ -50,14 +51,14 @@ mv "$root/.sanitize-configure.log" "$build/sanitize-configure.log"
 # that cannot run under ASan:
 #  - test_solver_step_allocations interposes malloc itself (calling __libc_malloc) to count a
 #    step's allocations; ASan must own malloc (it stops with "CHECK failed: asan_posix.cpp");
-#  - without --all, every test_solver_* (CI's time budget).
+#  - without --all, test_solver (CI's time budget).
 # A test executable that is not built leaves a <target>_NOT_BUILT placeholder without labels, which
 # the preset's label filter leaves out.
 excluded="test_solver_step_allocations"
 targets=$(ninja -C "$build" -t targets all | sed -n 's/^\(test_[A-Za-z0-9_]*\): phony$/\1/p' \
   | sort -u | grep -vxF -f <(tr ' ' '\n' <<<"$excluded"))
 if [ "$test_preset" = sanitize ]; then
-  targets=$(grep -v '^test_solver_' <<<"$targets")
+  targets=$(grep -v '^test_solver' <<<"$targets")
 fi
 [ -n "$targets" ] || { echo "sanitize.sh: no test_* targets in $build" >&2; exit 1; }
 echo "== Build $(echo "$targets" | wc -w) test executables"

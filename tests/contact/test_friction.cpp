@@ -13,7 +13,7 @@
 #include <numbers>
 #include <random>
 
-#include "allocation_counter.hpp"  // the one operator new of this test program
+#include "allocation_counter.hpp"
 #include "contact/coulomb_friction.hpp"
 #include "contact/penalty_contact.hpp"
 #include "contact_pair_fixture.hpp"

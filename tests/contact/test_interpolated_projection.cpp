@@ -20,7 +20,7 @@
 #include <random>
 #include <vector>
 
-#include "allocation_counter.hpp"  // the one operator new of this test program
+#include "allocation_counter.hpp"
 #include "contact/contact_search.hpp"
 #include "contact/interpolated_projection.hpp"
 #include "faceted_cylinder.hpp"
