@@ -61,13 +61,9 @@ void hash_passes(ShellFormulation formulation, int law, Hash& hash) {
   ShellState st = make_shell_state(element_count(part), 5, 0.8);
   initialize_directors(part, mesh.x, st);
   Matrix3X x = mesh.x;
-  Matrix3X v(3, x.cols());
-  Matrix3X w(3, x.cols());
-  for (Eigen::Index i = 0; i < x.cols(); ++i) {
-    const Vec3 p = mesh.x.col(i);
-    v.col(i) = Vec3(2e3 * p.y() * 0.05, 1e3 * std::sin(p.x()), 5e2 * p.x() * p.y() * 0.01);
-    w.col(i) = Vec3(10.0 * p.y(), -20.0 * p.x(), 5.0);
-  }
+  Matrix3X v;
+  Matrix3X w;
+  test::yielding_motion(mesh.x, v, w);
   const double dt = 1e-6;  // s
   ElementPass pass;
   std::vector<double> element_dt(static_cast<std::size_t>(element_count(part)), 0.0);

@@ -86,4 +86,16 @@ inline ShellPart two_material_part(const Mesh& mesh, ShellFormulation formulatio
   return p;
 }
 
+/// A stretching, bending and twisting motion of the mesh at x0, large enough to yield the steel of
+/// make_part within a few 1e-6 s steps: velocities v (mm/s) and angular velocities w (rad/s).
+inline void yielding_motion(const Matrix3X& x0, Matrix3X& v, Matrix3X& w) {
+  v.resize(3, x0.cols());
+  w.resize(3, x0.cols());
+  for (Eigen::Index i = 0; i < x0.cols(); ++i) {
+    const Vec3 p = x0.col(i);
+    v.col(i) = Vec3(2e3 * p.y() * 0.05, 1e3 * std::sin(p.x()), 5e2 * p.x() * p.y() * 0.01);
+    w.col(i) = Vec3(10.0 * p.y(), -20.0 * p.x(), 5.0);
+  }
+}
+
 }  // namespace sf::test

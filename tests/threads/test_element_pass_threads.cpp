@@ -40,13 +40,9 @@ PassRun run_passes(const ShellPart& part, const Matrix3X& x0, int threads,
   ShellState st = make_shell_state(element_count(part), 5, 0.8);
   initialize_directors(part, x0, st);
   Matrix3X x = x0;
-  Matrix3X v(3, x.cols());
-  Matrix3X w(3, x.cols());
-  for (Eigen::Index i = 0; i < x.cols(); ++i) {
-    const Vec3 p = x0.col(i);
-    v.col(i) = Vec3(2e3 * p.y() * 0.05, 1e3 * std::sin(p.x()), 5e2 * p.x() * p.y() * 0.01);
-    w.col(i) = Vec3(10.0 * p.y(), -20.0 * p.x(), 5.0);
-  }
+  Matrix3X v;
+  Matrix3X w;
+  test::yielding_motion(x0, v, w);
   const double dt = 1e-6;
   ElementPass pass;
   PassRun run;
