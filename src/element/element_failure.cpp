@@ -21,8 +21,10 @@ std::string ElementFailure::message() const {
              when + ")";
     case Kind::inverted:
       return name + ": inverted (the normal flipped within the step)";
-    case Kind::thrown:
-      return name + ": " + thrown_text;
+    case Kind::material:
+      return name + ": " + material.message();
+    case Kind::internal:
+      return name + ": " + internal_text;
   }
   return name;
 }

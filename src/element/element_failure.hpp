@@ -1,10 +1,12 @@
 #pragma once
-// What stops an element pass, recorded instead of thrown inside the element loops (issue 17):
-// threads must not throw out of a parallel region, and the run must report the same element
-// whatever the thread count. Each thread stops its share at its first failure; the pass then
-// reports the lowest failing element of all, which is the one a serial pass stops at.
+// What stops an element pass, a code the element loop records instead of an exception (issue
+// 17, issue 34): threads must not throw out of a parallel region, and the run must report the
+// same element whatever the thread count. Each thread stops its share at its first failure; the
+// pass then reports the lowest failing element of all, which is the one a serial pass stops at.
 #include <climits>
 #include <string>
+
+#include "material/material_failure.hpp"
 
 namespace sf {
 
@@ -15,14 +17,15 @@ struct ElementFailure {
     non_finite_stress,
     invalid_geometry,  ///< quad: inverted, collapsed or non-finite; triangle: collapsed
     inverted,          ///< triangle: the normal flipped within the step
-    thrown,            ///< an exception from deeper code (the material), its text kept
+    material,          ///< a point's material update failed (`material` says how)
+    internal,          ///< an exception escaped the loop: a program error, its text kept
   };
-  int element = INT_MAX;  ///< index in the part's state (quads first)
+  int element = INT_MAX;  ///< index in the part's state
   int triangle = -1;      ///< the triangle's index among the triangles; -1 for a quad
   Kind kind = Kind::none;
   const char* when = "";  ///< "mid-step" or "end of step" (geometry)
-  std::string thrown_text;
-  bool internal = false;  ///< thrown: not an InstabilityError (a program error)
+  MaterialFailure material;
+  std::string internal_text;
 
   bool failed() const { return kind != Kind::none; }
 
@@ -33,7 +36,7 @@ struct ElementFailure {
     }
   }
 
-  /// The message a serial pass has always thrown for it (InstabilityError text).
+  /// The message a serial pass has always stopped with (InstabilityError text).
   std::string message() const;
 };
 

@@ -1,9 +1,9 @@
 #pragma once
 // The inputs of an internal-force pass and what one share of it (a thread's range of elements)
-// writes: the element kernels (BT and assumed-strain quads, both triangles) take a range of
-// elements and an ElementOutputs, write only their own corner slots, per-element state and time
-// steps, and sum the pass's works exactly (core/exact_sum.hpp), so that neither the nodal forces
-// nor the works depend on how the elements were shared out.
+// writes: the element loop (element_loop.hpp) takes a range of a block's elements and an
+// ElementOutputs, writes only their own corner slots, per-element state and time steps, and sums
+// the pass's works exactly (core/exact_sum.hpp), so that neither the nodal forces nor the works
+// depend on how the elements were shared out.
 #include "core/exact_sum.hpp"
 #include "core/types.hpp"
 #include "element/element_failure.hpp"
@@ -31,8 +31,7 @@ struct alignas(64) ElementOutputs {
   ExactSum internal_work;        ///< N mm, stress work increments (excludes hourglass)
   ExactSum plastic_work;         ///< N mm, their plastic part
   ExactSum hourglass_work;       ///< N mm, work of the hourglass (stabilisation) forces
-  ElementFailure failure;        ///< the share's first failure; the kernel stops there
-  int current = -1;              ///< the element being computed (names a thrown failure)
+  ElementFailure failure;        ///< the share's first failure; the loop stops there
 
   void reset(double* corner_buffer, double* time_steps) {
     corners = corner_buffer;
@@ -41,7 +40,6 @@ struct alignas(64) ElementOutputs {
     plastic_work.clear();
     hourglass_work.clear();
     failure = ElementFailure();
-    current = -1;
   }
 
   /// Records the share's failure at element e (triangle: its index among the triangles).

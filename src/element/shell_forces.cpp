@@ -3,12 +3,13 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 #include <string>
 
 #include "core/errors.hpp"
-#include "element/shell_geometry_batch.hpp"
-#include "element/shell_mass.hpp"
+#include "core/simd_block.hpp"
+#include "element/element_block.hpp"
 #include "element/shell_quad_assumed_strain.hpp"
 #include "element/shell_quad_bt.hpp"
 #include "element/shell_triangle.hpp"
@@ -71,48 +72,56 @@ int run_length(std::span<const ElementRun> runs) {
   return n;
 }
 
-// One thread's share: its positions among the quad runs, then among the triangle runs (and
-// their time steps). A failure stops the share; an exception from deeper code (the material) is
-// recorded, never thrown out of the parallel region.
+// The runs (ascending, none across a block's border) that lie in `block`.
+std::span<const ElementRun> runs_in(std::span<const ElementRun> runs, const ElementBlock& block) {
+  const auto first = std::find_if(runs.begin(), runs.end(),
+                                  [&](const ElementRun& r) { return r.begin >= block.first; });
+  const auto last =
+      std::find_if(first, runs.end(), [&](const ElementRun& r) { return r.begin >= block.end(); });
+  return {first, last};
+}
+
+// The element loop of a block's shape and the part's formulation (element_loop.hpp).
+using BlockRunner = void (*)(const ElementBlock&, const ShellPart&, const ShellMaterial&,
+                             const ElementInputs&, ShellState&, int, int, ElementOutputs&);
+
+BlockRunner runner_for(const ElementBlock& block, ShellFormulation formulation) {
+  const bool assumed_strain = formulation == ShellFormulation::assumed_strain;
+  if (block.shape == ElementShape::quad) {
+    return assumed_strain ? run_assumed_strain_quads : run_bt_quads;
+  }
+  return assumed_strain ? run_assumed_strain_triangles : run_c0_triangles;
+}
+
+// One thread's share: its positions among each block's runs, block after block. The quads'
+// shares start at a multiple of kBlockLanes (their geometry comes kBlockLanes elements at a time).
+// A failure is a code the loop records; an exception reaching here is a program error, recorded
+// as an internal failure, never thrown out of the parallel region.
 void run_share(const ShellPart& part, const ElementInputs& in, ShellState& state,
-               std::span<const ElementRun> quad_runs, std::span<const ElementRun> triangle_runs,
-               int t, int shares, ElementOutputs& out) {
-  const int n_quads = static_cast<int>(part.quads.cols());
-  const int quads = run_length(quad_runs);
-  const int triangles = run_length(triangle_runs);
-  const bool assumed_strain = part.formulation == ShellFormulation::assumed_strain;
-  // A piece of one material at a time (the kernels take one law).
-  auto quad_run = [&](int q0, int q1, const ShellMaterial& m) {
-    if (!out.failure.failed()) {
-      assumed_strain ? compute_assumed_strain_quad_forces(part, m, in, state, q0, q1, out)
-                     : compute_bt_quad_forces(part, m, in, state, q0, q1, out);
-    }
-  };
-  auto triangle_run = [&](int e0, int e1, const ShellMaterial& m) {
-    const int t0 = e0 - n_quads;
-    const int t1 = e1 - n_quads;
-    if (!out.failure.failed()) {
-      assumed_strain ? compute_assumed_strain_triangle_forces(part, m, in, state, t0, t1, out)
-                     : compute_triangle_forces(part, m, in, state, t0, t1, out);
-    }
-    if (out.element_dt && !out.failure.failed()) {
-      compute_triangle_time_steps(part, in.x, {out.element_dt, state.thickness.size()}, t0, t1);
-    }
-  };
-  auto quad_piece = [&](int q0, int q1) { for_each_material_run(part, q0, q1, quad_run); };
-  auto triangle_piece = [&](int e0, int e1) { for_each_material_run(part, e0, e1, triangle_run); };
+               const ElementBlocks& blocks, std::span<const ElementRun> runs, int t, int shares,
+               ElementOutputs& out) {
+  int running = 0;  // the first element of the piece being run
   try {
-    for_each_piece(quad_runs, share_begin(quads, t, shares, kBlockLanes),
-                   share_begin(quads, t + 1, shares, kBlockLanes), out, quad_piece);
-    for_each_piece(triangle_runs, share_begin(triangles, t, shares, 1),
-                   share_begin(triangles, t + 1, shares, 1), out, triangle_piece);
-  } catch (const InstabilityError& error) {
-    out.fail(out.current, ElementFailure::Kind::thrown);
-    out.failure.thrown_text = error.what();
+    for (const ElementBlock& block : blocks) {
+      const std::span<const ElementRun> block_runs = runs_in(runs, block);
+      const int count = run_length(block_runs);
+      const int align = block.shape == ElementShape::quad ? kBlockLanes : 1;
+      const BlockRunner run = runner_for(block, part.formulation);
+      // A piece of one material at a time (the loop takes one law).
+      auto piece = [&](int e0, int e1) {
+        for_each_material_run(part, e0, e1, [&](int b, int e, const ShellMaterial& m) {
+          if (!out.failure.failed()) {
+            running = b;
+            run(block, part, m, in, state, b, e, out);
+          }
+        });
+      };
+      for_each_piece(block_runs, share_begin(count, t, shares, align),
+                     share_begin(count, t + 1, shares, align), out, piece);
+    }
   } catch (const std::exception& error) {
-    out.fail(out.current, ElementFailure::Kind::thrown);
-    out.failure.thrown_text = error.what();
-    out.failure.internal = true;
+    out.fail(running, ElementFailure::Kind::internal);
+    out.failure.internal_text = std::string("internal error in the element loop: ") + error.what();
   }
 }
 
@@ -134,14 +143,14 @@ ShellForceResult run_element_pass(const ShellPart& part, const ElementInputs& in
                                   ElementPass& pass, std::span<double> element_dt,
                                   std::span<const ElementRun> runs) {
   check_sizes(part, in, state, element_dt);
-  // Runs below n_quads are quads (element_runs never lets one cross it); none: every element.
-  const int n_quads = static_cast<int>(part.quads.cols());
-  const ElementRun all[2] = {{0, n_quads}, {n_quads, element_count(part)}};
-  const std::span<const ElementRun> given = runs.empty() ? std::span<const ElementRun>(all) : runs;
-  const auto split = std::find_if(given.begin(), given.end(),
-                                  [&](const ElementRun& r) { return r.begin >= n_quads; });
-  const std::span<const ElementRun> quad_runs(given.begin(), split);
-  const std::span<const ElementRun> triangle_runs(split, given.end());
+  // No runs: every element, one run per block (element_runs never lets one cross a border).
+  const ElementBlocks blocks = element_blocks(part);
+  std::array<ElementRun, 2> all{};
+  for (int b = 0; b < blocks.size; ++b) {
+    all[b] = {blocks.block[b].first, blocks.block[b].end()};
+  }
+  const std::span<const ElementRun> given =
+      runs.empty() ? std::span<const ElementRun>(all.data(), blocks.size) : runs;
 
   const auto slots = static_cast<std::size_t>(corner_count(part)) * kCornerWidth;
   if (pass.corners.size() != slots) {
@@ -164,7 +173,7 @@ ShellForceResult run_element_pass(const ShellPart& part, const ElementInputs& in
     }
     ElementOutputs& out = pass.shares[static_cast<std::size_t>(t)];
     out.reset(pass.corners.data(), element_dt.empty() ? nullptr : element_dt.data());
-    run_share(part, in, state, quad_runs, triangle_runs, t, shares, out);
+    run_share(part, in, state, blocks, given, t, shares, out);
   }
   // Exact sums and the lowest failure: the same whatever the number of shares.
   ElementOutputs& total = pass.shares[0];
@@ -176,7 +185,7 @@ ShellForceResult run_element_pass(const ShellPart& part, const ElementInputs& in
     total.failure.keep_lowest(share.failure);
   }
   if (total.failure.failed()) {
-    if (total.failure.internal) {
+    if (total.failure.kind == ElementFailure::Kind::internal) {
       throw std::runtime_error(total.failure.message());
     }
     throw InstabilityError(total.failure.message());

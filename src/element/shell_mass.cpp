@@ -110,17 +110,6 @@ double quad_time_step(const Quad3& xe, double area, double wave_speed) {
   return area / (std::sqrt(side2) * wave_speed);
 }
 
-void compute_triangle_time_steps(const ShellPart& part, const Matrix3X& x,
-                                 std::span<double> element_dt, int begin, int end) {
-  WaveSpeeds c(part);
-  const int n_quads = static_cast<int>(part.quads.cols());
-  const int last = end < 0 ? static_cast<int>(part.triangles.cols()) : end;
-  TriangleGeometry tg;
-  for (int e = n_quads + begin; e < n_quads + last; ++e) {
-    element_dt[static_cast<std::size_t>(e)] = triangle_time_step(x, part, e, c.of(e), tg);
-  }
-}
-
 StableStep smallest_time_step(std::span<const double> element_dt) {
   StableStep best{std::numeric_limits<double>::infinity(), -1};
   for (std::size_t e = 0; e < element_dt.size(); ++e) {

@@ -46,11 +46,6 @@ double material_wave_speed(const ShellMaterial& material);
 /// compute_element_time_steps both use it (the same bits).
 double quad_time_step(const Quad3& xe, double area, double wave_speed);
 
-/// The triangles' entries of element_dt (as compute_element_time_steps); the quads' are left.
-/// Triangles [begin, end) (indices among the triangles) only, or all by default.
-void compute_triangle_time_steps(const ShellPart& part, const Matrix3X& x,
-                                 std::span<double> element_dt, int begin = 0, int end = -1);
-
 /// The smallest of per-element steps and its element (the first one in element order on a tie).
 StableStep smallest_time_step(std::span<const double> element_dt);
 

@@ -2,21 +2,15 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <stdexcept>
-#include <string>
-#include <variant>
 
-#include "core/errors.hpp"
-#include "element/corner_forces.hpp"
+#include "element/element_loop.hpp"
 #include "element/shell_directors.hpp"
 #include "element/shell_geometry.hpp"
 #include "element/shell_geometry_batch.hpp"
 #include "element/shell_mass.hpp"
-#include "element/shell_nodal_access.hpp"
 #include "element/shell_quad_directors.hpp"
 #include "element/shell_quad_hourglass.hpp"
 #include "element/shell_quad_stabilization.hpp"
-#include "element/shell_section_update.hpp"
 #include "material/plane_stress.hpp"
 
 namespace sf {
@@ -135,95 +129,109 @@ DirectorResultants make_director_resultants(const CartesianMap& map, double area
   return r;
 }
 
-template <class Law>
-void compute_forces(const ShellPart& part, const ShellMaterial& material, const Law& law,
-                    const ElementInputs& in, ShellState& st, int begin, int end,
-                    ElementOutputs& out) {
-  const Matrix3X& x = in.x;
-  const double dt = in.dt;
-  const double wave_speed = material_wave_speed(material);  // mm/s, for the elements' time steps
-  const Constants c{law.E, law.nu, 5.0 / 6.0 * 0.5 * law.E / (1.0 + law.nu),
-                    plane_stress_stiffness(law.E, law.nu)};
-  const SectionConstants section = make_section_constants(part.section);
-  const auto kernel = point_kernel(law, in.rate_dt());  // the material update's constants
-  const int* conn = part.quads.data();
-  const double* material_angle = part.material_angle.empty() ? nullptr : part.material_angle.data();
+// The assumed-strain quad as a formulation policy of the element loop (element_loop.hpp).
+class AssumedStrainQuad {
+ public:
+  static constexpr int kNodes = 4;
+  using Nodes = Quad3;
 
-  QuadGeometryBlock geometry;  // of the block of elements holding e
-  for (int e = begin; e < end; ++e) {
-    out.current = e;
-    const int lane = (e - begin) % kBlockLanes;  // begin is a multiple of kBlockLanes
-    if (lane == 0) {
-      compute_quad_geometry_block(x.data(), in.v.data(), conn, e, std::min(kBlockLanes, end - e),
-                                  dt, geometry);
-    }
-    const int* nodes = conn + 4 * static_cast<std::ptrdiff_t>(e);
-    Quad3 xe;
-    Quad3 ve;
-    Quad3 we;
-    gather_nodes(x.data(), nodes, xe);
-    gather_nodes(in.v.data(), nodes, ve);
-    gather_nodes(in.omega.data(), nodes, we);
-    if (!ve.allFinite() || !we.allFinite()) {
-      return out.fail(e, ElementFailure::Kind::non_finite_velocity);
-    }
-
-    // 1. Strain increments. Membrane: the one-point velocity strain on the mid-step geometry
-    //    (exact zero for a rigid rotation step); curvature and transverse shear: the change of the
-    //    director measures from the start to the end of the step, in the mid-step frame.
-    const Quad3 xm = xe - (0.5 * dt) * ve;
-    const Quad3 xs = xe - dt * ve;
-    const ShellGeometry& gm = geometry.mid[lane];
-    if (!geometry.mid_ok[lane]) {
-      return out.fail(e, ElementFailure::Kind::invalid_geometry, "mid-step");
-    }
-    const Quad3 vl = gm.frame.transpose() * ve;
-    const Vec3 d_membrane(gm.b.row(0).dot(vl.row(0)), gm.b.row(1).dot(vl.row(1)),
-                          gm.b.row(1).dot(vl.row(0)) + gm.b.row(0).dot(vl.row(1)));
+  struct Element {
+    const ShellGeometry* mid = nullptr;  // at x - dt/2 v
+    const ShellGeometry* end = nullptr;  // at x
+    Quad3 xm;                            // mm, mid-step nodes
+    Quad3 vl;                            // mm/s, velocities in the mid-step frame
     StepDirectors d;
-    advance_element_directors(
-        st.director.data() + 3 * kDirectorNodes * static_cast<std::ptrdiff_t>(e), we, dt, e,
-        d.old_d, d.new_d);
-    const QuadBasis basis_mid = compute_quad_basis(xm);
-    const CartesianMap map_mid = make_cartesian_map(basis_mid, gm.frame);
-    const BendingShearIncrements inc = compute_increments(xs, xe, d, basis_mid, map_mid);
+    QuadBasis basis_mid;
+    CartesianMap map_mid;
+    BendingShearIncrements inc;
+    Vec3 dt_d_membrane;  // -, the membrane strain increment
+  };
 
-    // 2. Material update through the thickness; transverse shear elastic, shear-corrected,
-    //    constant through the thickness.
-    const double t = st.thickness[e];
-    const SectionResult sr =
-        update_section(kernel, section, e, t, dt * d_membrane, inc.curvature, material_angle, st);
+  AssumedStrainQuad(const ShellPart& part, const ShellMaterial& material, double E, double nu,
+                    const ElementInputs& in, ShellState& st)
+      : in_(in),
+        conn_(part.quads.data()),
+        directors_(st.director.data()),
+        unloading_(part.stabilization_unloading),
+        wave_speed_(material_wave_speed(material)),
+        c_{E, nu, 5.0 / 6.0 * 0.5 * E / (1.0 + nu), plane_stress_stiffness(E, nu)} {}
+
+  // The corotational geometries of kBlockLanes elements at once (begin: the first lane).
+  void prepare(int e, int begin, int end) {
+    lane_ = (e - begin) % kBlockLanes;
+    if (lane_ == 0) {
+      compute_quad_geometry_block(in_.x.data(), in_.v.data(), conn_, e,
+                                  std::min(kBlockLanes, end - e), in_.dt, geometry_);
+    }
+  }
+
+  // Membrane: the one-point velocity strain on the mid-step geometry (exact zero for a rigid
+  // rotation step); curvature and transverse shear: the change of the director measures from the
+  // start to the end of the step, in the mid-step frame. Turns the element's directors by dt
+  // omega.
+  StageResult strains(int e, const Quad3& xe, const Quad3& ve, const Quad3& we, Element& el,
+                      SectionStrains& s) {
+    const double dt = in_.dt;
+    el.xm = xe - (0.5 * dt) * ve;
+    const Quad3 xs = xe - dt * ve;
+    if (!geometry_.mid_ok[lane_]) {
+      return {ElementFailure::Kind::invalid_geometry, "mid-step"};
+    }
+    const ShellGeometry& gm = geometry_.mid[lane_];
+    el.mid = &gm;
+    el.vl = gm.frame.transpose() * ve;
+    const Vec3 d_membrane(gm.b.row(0).dot(el.vl.row(0)), gm.b.row(1).dot(el.vl.row(1)),
+                          gm.b.row(1).dot(el.vl.row(0)) + gm.b.row(0).dot(el.vl.row(1)));
+    advance_element_directors(directors_ + 3 * kDirectorNodes * static_cast<std::ptrdiff_t>(e), we,
+                              dt, e, el.d.old_d, el.d.new_d);
+    el.basis_mid = compute_quad_basis(el.xm);
+    el.map_mid = make_cartesian_map(el.basis_mid, gm.frame);
+    el.inc = compute_increments(xs, xe, el.d, el.basis_mid, el.map_mid);
+    el.dt_d_membrane = dt * d_membrane;
+    s.membrane = el.dt_d_membrane;
+    s.curvature = el.inc.curvature;
+    return {};
+  }
+
+  double mid_area(const Element& el) const { return el.mid->area; }
+
+  ShearUpdate transverse_shear(int e, double t, const Element& el, ShellState& st) const {
     const Vec2 s_old(st.sxz[e], st.syz[e]);
-    const Vec2 s_new = s_old + c.ks_g * inc.shear;
+    const Vec2 s_new = s_old + c_.ks_g * el.inc.shear;
     st.sxz[e] = s_new(0);
     st.syz[e] = s_new(1);
-    const double work = sr.work + t * 0.5 * (s_old + s_new).dot(inc.shear);
-    out.internal_work.add(gm.area * work);
-    out.plastic_work.add(gm.area * sr.plastic_work);
-    if (!sr.n.allFinite() || !sr.m.allFinite() || !s_new.allFinite()) {
-      return out.fail(e, ElementFailure::Kind::non_finite_stress);
-    }
-    st.thickness[e] = t * (1.0 + sr.d_ezz_mean);
+    return {s_new, t * 0.5 * (s_old + s_new).dot(el.inc.shear)};
+  }
 
-    // 3. Stabilisation (shell_quad_stabilization.hpp): membrane from the warping-corrected
-    //    hourglass rates on the mid-step geometry, bending and shear from the director measures.
-    const double gz_mid = compute_warp(gm, xm);
-    const Vec2 membrane_hg = dt * compute_membrane_hourglass_rates(gm, gz_mid, vl);
-    const StabilizationStiffness k = compute_stabilization_stiffness(basis_mid, map_mid, gm.frame,
-                                                                     c.young, c.poisson, t, c.ks_g);
+  StageResult end_geometry(int /*e*/, const Quad3& /*xe*/, Element& el) const {
+    if (!geometry_.end_ok[lane_]) {
+      return {ElementFailure::Kind::invalid_geometry, "end of step"};
+    }
+    el.end = &geometry_.end[lane_];
+    return {};
+  }
+
+  double time_step(const Quad3& xe, const Element& el) const {
+    return quad_time_step(xe, el.end->area, wave_speed_);
+  }
+
+  // The stabilisation (shell_quad_stabilization.hpp): membrane from the warping-corrected
+  // hourglass rates on the mid-step geometry, bending and shear from the director measures. Then
+  // the nodal forces and moments on the end-of-step configuration (conjugate to the strains).
+  void forces(int e, double t, const Quad3& xe, const Quad3& /*ve*/, const Quad3& /*we*/,
+              const SectionResult& sr, const ShearUpdate& shear, const Element& el, ShellState& st,
+              double* corners, ExactSum& hourglass_work) const {
+    const ShellGeometry& gm = *el.mid;
+    const double gz_mid = compute_warp(gm, el.xm);
+    const Vec2 membrane_hg = in_.dt * compute_membrane_hourglass_rates(gm, gz_mid, el.vl);
+    const StabilizationStiffness k = compute_stabilization_stiffness(
+        el.basis_mid, el.map_mid, gm.frame, c_.young, c_.poisson, t, c_.ks_g);
     double* hs = st.hourglass.data() + kHourglassModes * static_cast<std::ptrdiff_t>(e);
-    const double ratio = incremental_stiffness_ratio(c, t, dt * d_membrane, inc.curvature, sr);
-    out.hourglass_work.add(update_stabilization(k, part.stabilization_unloading, ratio, membrane_hg,
-                                                inc.hourglass, inc.shear_linear, hs));
+    const double ratio = incremental_stiffness_ratio(c_, t, el.dt_d_membrane, el.inc.curvature, sr);
+    hourglass_work.add(update_stabilization(k, unloading_, ratio, membrane_hg, el.inc.hourglass,
+                                            el.inc.shear_linear, hs));
 
-    // 4. Nodal forces and moments on the end-of-step configuration (conjugate to step 1).
-    const ShellGeometry& g = geometry.end[lane];
-    if (!geometry.end_ok[lane]) {
-      return out.fail(e, ElementFailure::Kind::invalid_geometry, "end of step");
-    }
-    if (out.element_dt) {
-      out.element_dt[e] = quad_time_step(xe, g.area, wave_speed);  // the next step's bound, at x
-    }
+    const ShellGeometry& g = *el.end;
     const double a = g.area;
     Quad3 fl;
     fl.row(0) = a * (sr.n(0) * g.b.row(0) + sr.n(2) * g.b.row(1));
@@ -234,20 +242,28 @@ void compute_forces(const ShellPart& part, const ShellMaterial& material, const 
     Quad3 mg = Quad3::Zero();
     const QuadBasis basis_end = compute_quad_basis(xe);
     const CartesianMap map_end = make_cartesian_map(basis_end, g.frame);
-    const DirectorResultants r = make_director_resultants(map_end, a, sr.m, t * s_new, hs);
-    add_director_forces(xe, d.new_d, basis_mid, r, fg, mg);
-    store_corners(fg, mg, out.corners + kCornerWidth * 4 * static_cast<std::ptrdiff_t>(e));
+    const DirectorResultants r = make_director_resultants(map_end, a, sr.m, t * shear.stress, hs);
+    add_director_forces(xe, el.d.new_d, el.basis_mid, r, fg, mg);
+    store_corners(fg, mg, corners);
   }
-}
+
+ private:
+  const ElementInputs& in_;
+  const int* conn_;
+  double* directors_;  // -, ShellState::director
+  StabilizationUnloading unloading_;
+  double wave_speed_;  // mm/s, for the time step
+  Constants c_;
+  QuadGeometryBlock geometry_;  // of the kBlockLanes elements holding the current one
+  int lane_ = 0;
+};
 
 }  // namespace
 
-void compute_assumed_strain_quad_forces(const ShellPart& part, const ShellMaterial& material,
-                                        const ElementInputs& in, ShellState& state, int begin,
-                                        int end, ElementOutputs& out) {
-  std::visit(
-      [&](const auto& law) { compute_forces(part, material, law, in, state, begin, end, out); },
-      material.law);
+void run_assumed_strain_quads(const ElementBlock& block, const ShellPart& part,
+                              const ShellMaterial& material, const ElementInputs& in,
+                              ShellState& state, int begin, int end, ElementOutputs& out) {
+  run_block_elements<AssumedStrainQuad>(block, part, material, in, state, begin, end, out);
 }
 
 }  // namespace sf

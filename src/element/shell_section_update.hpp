@@ -56,6 +56,8 @@ struct SectionResult {
   /// N/mm, int (s_new - s_old) . d_eps dz: the stress change's work on the strain increment, the
   /// step's incremental stiffness seen along its own strain increment (elastic: d_eps . C d_eps).
   double stress_change_work = 0.0;
+  /// A point's update failed (non-finite input): the rest is not to be used.
+  MaterialFailure failure;
 };
 
 /// The flow-stress store of the points from `base` on (none if the state has none).
@@ -95,9 +97,12 @@ inline SectionResult update_section(const GeneralKernel& kernel, const SectionCo
     }
     // The flow stress store (ShellState::flow_stress) spares a hardening evaluation per point.
     const bool stored = cache.stress && cache.at[k] == old.eps_p;
-    const GeneralPlasticityUpdate up =
-        law.update(old, axes.d_m - z * axes.d_k, nullptr,
-                   stored ? cache.stress[k] : std::numeric_limits<double>::quiet_NaN(), kernel.dt);
+    const GeneralPlasticityUpdate up = law.update_or_fail(
+        old, axes.d_m - z * axes.d_k, r.failure, nullptr,
+        stored ? cache.stress[k] : std::numeric_limits<double>::quiet_NaN(), kernel.dt);
+    if (r.failure.failed()) {
+      return r;
+    }
     if (cache.stress) {
       cache.stress[k] = up.flow_stress;
       cache.at[k] = up.state.eps_p;
@@ -128,7 +133,8 @@ inline SectionResult update_section(const GeneralKernel& kernel, const SectionCo
 /// element's thickness (mm), with the law's kernel (point_kernel, formed once per loop). Laws with
 /// material axes (Hill48) work in the element's material frame (material_angle[e], rad, or 0 when
 /// material_angle is null); the stored stress stays in the element frame. The points are updated
-/// as one batch (material/plane_stress_batch.hpp); the resultants are summed bottom to top.
+/// as one batch (material/plane_stress_batch.hpp); the resultants are summed bottom to top. A
+/// failed point update is returned in SectionResult::failure (the state is then not to be used).
 template <class Kernel>
 inline SectionResult update_section(const Kernel& kernel, const SectionConstants& sc, int e,
                                     double t, const Vec3& dt_d_m, const Vec3& dt_d_k,
@@ -166,12 +172,16 @@ inline SectionResult update_section(const Kernel& kernel, const SectionConstants
     }
   }
   PlaneStressUpdate up[kMax];
-  if constexpr (material_axes) {
-    update_points(kernel, n, law_stress, eps_n, law_d_eps, flow_stress_cache(st, base), up);
-  } else {
-    update_points(kernel, n, old_stress, eps_n, d_eps, flow_stress_cache(st, base), up);
-  }
   SectionResult r;
+  if constexpr (material_axes) {
+    r.failure =
+        update_points(kernel, n, law_stress, eps_n, law_d_eps, flow_stress_cache(st, base), up);
+  } else {
+    r.failure = update_points(kernel, n, old_stress, eps_n, d_eps, flow_stress_cache(st, base), up);
+  }
+  if (r.failure.failed()) {
+    return r;
+  }
   for (int k = 0; k < n; ++k) {
     const std::size_t i = base + static_cast<std::size_t>(k);
     if constexpr (material_axes) {

@@ -1,103 +1,97 @@
 #include "element/shell_triangle.hpp"
 
-#include <array>
-#include <cmath>
 #include <cstddef>
-#include <string>
-#include <type_traits>
-#include <variant>
 
-#include "element/corner_forces.hpp"
-#include "element/shell_nodal_access.hpp"
-#include "element/shell_section_update.hpp"
+#include "element/element_loop.hpp"
+#include "element/shell_mass.hpp"
 #include "element/shell_triangle_geometry.hpp"
 
 namespace sf {
 
 namespace {
 
-// The triangle loop, instantiated once per material type (the variant is visited outside it).
-template <class Law>
-void compute_forces(const ShellPart& part, const ShellMaterial& material, const Law& law,
-                    const ElementInputs& in, ShellState& st, int begin, int end,
-                    ElementOutputs& out) {
-  const Matrix3X& x = in.x;
-  const double dt = in.dt;
-  const int n_quads = static_cast<int>(part.quads.cols());
-  const double* material_angle = part.material_angle.empty() ? nullptr : part.material_angle.data();
-  const double ks_g = 5.0 / 6.0 * 0.5 * law.E / (1.0 + law.nu);  // shear correction factor 5/6
-  const SectionConstants section = make_section_constants(part.section);
-  const auto kernel = point_kernel(law, in.rate_dt());  // the material update's constants
-  const int* conn = part.triangles.data();
-  const double* xd = x.data();
-  const double* vd = in.v.data();
-  const double* wd = in.omega.data();
+// The C0 triangle as a formulation policy of the element loop (element_loop.hpp).
+class C0Triangle {
+ public:
+  static constexpr int kNodes = 3;
+  using Nodes = Tri3;
 
-  for (int k = begin; k < end; ++k) {
-    const int e = n_quads + k;  // index in the state arrays
-    out.current = e;
-    const int* nodes = conn + 3 * static_cast<std::ptrdiff_t>(k);
-    Tri3 xe;
-    Tri3 ve;
-    Tri3 we;
-    gather_nodes(xd, nodes, xe);
-    gather_nodes(vd, nodes, ve);
-    gather_nodes(wd, nodes, we);
-    if (!ve.allFinite() || !we.allFinite()) {
-      return out.fail(e, ElementFailure::Kind::non_finite_velocity, "", k);
-    }
+  struct Element {
+    TriangleGeometry mid;  // at x - dt/2 v
+    TriangleGeometry end;  // at x
+    Vec2 g_s;              // 1/s, transverse shear strain rates
+  };
 
-    // 1. Velocity strains on the mid-step configuration (exactly zero for a rigid rotation step:
-    //    the central-difference velocity is skew there, and every operator below is exact for
-    //    linear velocity fields and uniform angular velocity).
-    TriangleGeometry gm;
+  C0Triangle(const ShellPart& /*part*/, const ShellMaterial& material, double E, double nu,
+             const ElementInputs& in, ShellState& /*st*/)
+      : in_(in),
+        ks_g_(5.0 / 6.0 * 0.5 * E / (1.0 + nu)),  // shear correction factor 5/6
+        wave_speed_(material_wave_speed(material)) {}
+
+  void prepare(int /*e*/, int /*begin*/, int /*end*/) {}
+
+  // Velocity strains on the mid-step configuration (exactly zero for a rigid rotation step: the
+  // central-difference velocity is skew there, and every operator below is exact for linear
+  // velocity fields and uniform angular velocity).
+  StageResult strains(int /*e*/, const Tri3& xe, const Tri3& ve, const Tri3& we, Element& el,
+                      SectionStrains& s) const {
+    const double dt = in_.dt;
     const Tri3 xm = xe - (0.5 * dt) * ve;
-    if (!compute_triangle_geometry(xm, gm)) {
-      return out.fail(e, ElementFailure::Kind::invalid_geometry, "mid-step", k);
+    if (!compute_triangle_geometry(xm, el.mid)) {
+      return {ElementFailure::Kind::invalid_geometry, "mid-step"};
     }
+    const TriangleGeometry& gm = el.mid;
     const Tri3 vl = gm.frame.transpose() * ve;
     const Tri3 wl = gm.frame.transpose() * we;
-    // Mindlin, v^ = v^m - z e3 x theta^: eps(z) = eps_m - z kappa (engineering shear), as the quad.
+    // Mindlin, v^ = v^m - z e3 x theta^: eps(z) = eps_m - z kappa (engineering shear), as the
+    // quad.
     Vec3 d_m;
     Vec3 d_k;
     compute_plate_strain_rates(gm.bx, gm.by, vl, wl, d_m, d_k);
-    const Vec2 g_s = gm.sw * vl.row(2).transpose() + gm.sx * wl.row(0).transpose() +
-                     gm.sy * wl.row(1).transpose();
-    const Vec3 dt_d_m = dt * d_m;
-    const Vec3 dt_d_k = dt * d_k;
+    el.g_s = gm.sw * vl.row(2).transpose() + gm.sx * wl.row(0).transpose() +
+             gm.sy * wl.row(1).transpose();
+    s.membrane = dt * d_m;
+    s.curvature = dt * d_k;
+    return {};
+  }
 
-    // 2. Material update through the thickness (shell_section_update.hpp).
-    const double t = st.thickness[e];
-    const SectionResult sr =
-        update_section(kernel, section, e, t, dt_d_m, dt_d_k, material_angle, st);
-    double work = sr.work;
-    // Transverse shear: elastic, shear-corrected, constant through the thickness, with the
-    // Lyly-Stenberg-Vihinen factor t^2 / (t^2 + alpha h^2) on the modulus.
-    const double shear_modulus = ks_g * triangle_shear_factor(t, gm.longest_side2);
+  double mid_area(const Element& el) const { return el.mid.area; }
+
+  // Elastic, with the Lyly-Stenberg-Vihinen factor t^2 / (t^2 + alpha h^2) on the modulus.
+  ShearUpdate transverse_shear(int e, double t, const Element& el, ShellState& st) const {
+    const double dt = in_.dt;
+    const double shear_modulus = ks_g_ * triangle_shear_factor(t, el.mid.longest_side2);
     const double sxz_old = st.sxz[e];
     const double syz_old = st.syz[e];
-    const double sxz_new = sxz_old + shear_modulus * dt * g_s(0);
-    const double syz_new = syz_old + shear_modulus * dt * g_s(1);
+    const double sxz_new = sxz_old + shear_modulus * dt * el.g_s(0);
+    const double syz_new = syz_old + shear_modulus * dt * el.g_s(1);
     st.sxz[e] = sxz_new;
     st.syz[e] = syz_new;
-    const double q_x = t * sxz_new;
-    const double q_y = t * syz_new;
-    work += t * dt * 0.5 * ((sxz_old + sxz_new) * g_s(0) + (syz_old + syz_new) * g_s(1));
-    out.internal_work.add(gm.area * work);
-    out.plastic_work.add(gm.area * sr.plastic_work);
-    if (!sr.n.allFinite() || !sr.m.allFinite() || !std::isfinite(q_x + q_y)) {
-      return out.fail(e, ElementFailure::Kind::non_finite_stress, "", k);
-    }
-    st.thickness[e] = t * (1.0 + sr.d_ezz_mean);
+    return {Vec2(sxz_new, syz_new),
+            t * dt * 0.5 * ((sxz_old + sxz_new) * el.g_s(0) + (syz_old + syz_new) * el.g_s(1))};
+  }
 
-    // 3. Nodal forces and moments on the end-of-step configuration (the transpose of step 1).
-    TriangleGeometry g;
-    if (!compute_triangle_geometry(xe, g)) {
-      return out.fail(e, ElementFailure::Kind::invalid_geometry, "end of step", k);
+  StageResult end_geometry(int /*e*/, const Tri3& xe, Element& el) const {
+    if (!compute_triangle_geometry(xe, el.end)) {
+      return {ElementFailure::Kind::invalid_geometry, "end of step"};
     }
-    if (!(g.frame.col(2).dot(gm.frame.col(2)) > 0.0)) {
-      return out.fail(e, ElementFailure::Kind::inverted, "", k);
+    if (!(el.end.frame.col(2).dot(el.mid.frame.col(2)) > 0.0)) {
+      return {ElementFailure::Kind::inverted};
     }
+    return {};
+  }
+
+  double time_step(const Tri3& /*xe*/, const Element& el) const {
+    return triangle_characteristic_length(el.end) / wave_speed_;
+  }
+
+  // Nodal forces and moments on the end-of-step configuration (the transpose of the strains).
+  void forces(int /*e*/, double t, const Tri3& /*xe*/, const Tri3& /*ve*/, const Tri3& /*we*/,
+              const SectionResult& sr, const ShearUpdate& shear, const Element& el,
+              ShellState& /*st*/, double* corners, ExactSum& /*hourglass_work*/) const {
+    const TriangleGeometry& g = el.end;
+    const double q_x = t * shear.stress(0);
+    const double q_y = t * shear.stress(1);
     const double a = g.area;
     Tri3 fl;
     Tri3 ml;
@@ -109,20 +103,21 @@ void compute_forces(const ShellPart& part, const ShellMaterial& material, const 
     ml.row(2).setZero();
     const Tri3 fg = g.frame * fl;
     const Tri3 mg = g.frame * ml;
-    store_corners(fg, mg,
-                  out.corners + kCornerWidth * static_cast<std::ptrdiff_t>(
-                                                   triangle_corner_slot(n_quads, k, 0)));
+    store_corners(fg, mg, corners);
   }
-}
+
+ private:
+  const ElementInputs& in_;
+  double ks_g_;        // MPa, shear-corrected shear modulus
+  double wave_speed_;  // mm/s, for the time step
+};
 
 }  // namespace
 
-void compute_triangle_forces(const ShellPart& part, const ShellMaterial& material,
-                             const ElementInputs& in, ShellState& state, int begin, int end,
-                             ElementOutputs& out) {
-  std::visit(
-      [&](const auto& law) { compute_forces(part, material, law, in, state, begin, end, out); },
-      material.law);
+void run_c0_triangles(const ElementBlock& block, const ShellPart& part,
+                      const ShellMaterial& material, const ElementInputs& in, ShellState& state,
+                      int begin, int end, ElementOutputs& out) {
+  run_block_elements<C0Triangle>(block, part, material, in, state, begin, end, out);
 }
 
 }  // namespace sf

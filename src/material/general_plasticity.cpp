@@ -116,12 +116,21 @@ class Return {
   double rate_D_dt_;  // D dt of the rate dependence (-: D in 1/s, dt in s); 0 = rate-free
 };
 
-[[noreturn]] void fail(const GeneralPlasticity& law, const Vec3& trial, const Iterate& it) {
-  throw InstabilityError(std::string(criterion_name(law.criterion)) +
-                         " plane stress: the return mapping did not converge (trial stress " +
-                         std::to_string(trial(0)) + ", " + std::to_string(trial(1)) + ", " +
-                         std::to_string(trial(2)) + " MPa; residual " +
-                         std::to_string(std::sqrt(it.merit())) + " MPa)");
+// The law's name in a failure's text: the criterion's, in plane stress.
+const char* law_name(const YieldCriterion& criterion) {
+  struct Visitor {
+    const char* operator()(const VonMisesCriterion&) const { return "von Mises plane stress"; }
+    const char* operator()(const Hill48Criterion&) const { return "Hill48 plane stress"; }
+    const char* operator()(const Yld2000Criterion&) const { return "Yld2000-2d plane stress"; }
+    const char* operator()(const Yld89Criterion&) const { return "Yld89 plane stress"; }
+  };
+  return std::visit(Visitor{}, criterion);
+}
+
+MaterialFailure not_converged(const GeneralPlasticity& law, const Vec3& trial, const Iterate& it) {
+  return {MaterialFailure::Kind::general_return_not_converged,
+          law_name(law.criterion),
+          {trial(0), trial(1), trial(2), std::sqrt(it.merit())}};
 }
 
 }  // namespace
@@ -129,10 +138,21 @@ class Return {
 GeneralPlasticityUpdate GeneralPlasticity::update(const GeneralPlasticityState& old,
                                                   const Vec3& d_strain, Mat3* tangent,
                                                   double flow_at_old, double dt) const {
+  MaterialFailure failure;
+  const GeneralPlasticityUpdate up =
+      update_or_fail(old, d_strain, failure, tangent, flow_at_old, dt);
+  throw_if_failed(failure);
+  return up;
+}
+
+GeneralPlasticityUpdate GeneralPlasticity::update_or_fail(const GeneralPlasticityState& old,
+                                                          const Vec3& d_strain,
+                                                          MaterialFailure& failure, Mat3* tangent,
+                                                          double flow_at_old, double dt) const {
   const Vec3 trial = elastic_trial(E, nu, old.stress, d_strain);
   if (!trial.allFinite()) {
-    throw InstabilityError(std::string(criterion_name(criterion)) +
-                           " plane stress: non-finite trial stress");
+    failure = {MaterialFailure::Kind::non_finite_trial_stress, law_name(criterion)};
+    return {};
   }
   Vec3 back_sum = Vec3::Zero();
   for (int i = 0; i < kinematic.count; ++i) {
@@ -170,13 +190,15 @@ GeneralPlasticityUpdate GeneralPlasticity::update(const GeneralPlasticityState& 
   int iterations = 0;
   while (!ret.converged(it)) {
     if (++iterations > kMaxIterations) {
-      fail(*this, trial, it);
+      failure = not_converged(*this, trial, it);
+      return up;
     }
     Vec4 r;
     r << it.r_stress, it.r_yield;
     const Vec4 step = ret.jacobian(it).partialPivLu().solve(-r);
     if (!step.allFinite()) {
-      fail(*this, trial, it);
+      failure = not_converged(*this, trial, it);
+      return up;
     }
     // Line search on the squared residual: the first of step, step/2, ... that lowers it and
     // keeps d_lambda >= 0.
@@ -194,7 +216,8 @@ GeneralPlasticityUpdate GeneralPlasticity::update(const GeneralPlasticityState& 
       }
     }
     if (!moved) {
-      fail(*this, trial, it);
+      failure = not_converged(*this, trial, it);
+      return up;
     }
   }
   up.plastic = true;

@@ -19,6 +19,7 @@
 
 #include "core/types.hpp"
 #include "material/hardening.hpp"
+#include "material/material_failure.hpp"
 #include "material/yield_criterion.hpp"
 
 namespace sf {
@@ -99,6 +100,12 @@ struct GeneralPlasticity {
                                  Mat3* tangent = nullptr,
                                  double flow_at_old = std::numeric_limits<double>::quiet_NaN(),
                                  double dt = 0.0) const;
+  /// The same, a failure returned in `failure` instead of thrown (the element loop's form); the
+  /// update is not to be used when failure.failed().
+  GeneralPlasticityUpdate update_or_fail(
+      const GeneralPlasticityState& old, const Vec3& d_strain, MaterialFailure& failure,
+      Mat3* tangent = nullptr, double flow_at_old = std::numeric_limits<double>::quiet_NaN(),
+      double dt = 0.0) const;
 };
 
 /// The element loops' handle on the law (material/plane_stress_kernels.hpp: point_kernel). Works

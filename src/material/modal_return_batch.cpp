@@ -3,10 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <string>
 #include <type_traits>
 
-#include "core/errors.hpp"
 #include "core/simd_block.hpp"
 
 // Compiled twice, for generic x86-64 and for x86-64-v3 (AVX2: 4 lanes per instruction), the
@@ -175,15 +173,15 @@ SF_BLOCK_INLINE void start_lanes(Lanes& s, ModalReturnBatch& b, int nb) {
 }  // namespace
 
 template <int kModes, class Law>
-SF_RETURN_CLONES void solve_modal_return(ModalReturnBatch& b, const double (&lam)[3],
-                                         const Law& law, const char* name) {
+SF_RETURN_CLONES int solve_modal_return(ModalReturnBatch& b, const double (&lam)[3],
+                                        const Law& law) {
   const int nb = (b.n + B - 1) / B;
   const double grow = 1.0 / std::max({lam[0], lam[1], lam[2]});
   Lanes s;
   start_lanes(s, b, nb);
   for (int it = 0; it < 100; ++it) {
     if (check_convergence(s, b, nb) == 0) {
-      return;
+      return -1;
     }
     if (it == 0) {
       newton_step<kModes, true>(s, b, lam, grow, nb);
@@ -194,18 +192,15 @@ SF_RETURN_CLONES void solve_modal_return(ModalReturnBatch& b, const double (&lam
   }
   for (int l = 0; l < b.n; ++l) {
     if (s.active[l / B][l % B]) {
-      throw InstabilityError(std::string(name) +
-                             ": return mapping did not converge (trial equivalent stress " +
-                             std::to_string(b.phi_tr[l]) + " MPa)");
+      return l;
     }
   }
+  return -1;
 }
 
 #define SF_INSTANTIATE_RETURN(LAW)                                                            \
-  template void solve_modal_return<2, LAW>(ModalReturnBatch&, const double(&)[3], const LAW&, \
-                                           const char*);                                      \
-  template void solve_modal_return<3, LAW>(ModalReturnBatch&, const double(&)[3], const LAW&, \
-                                           const char*);
+  template int solve_modal_return<2, LAW>(ModalReturnBatch&, const double(&)[3], const LAW&); \
+  template int solve_modal_return<3, LAW>(ModalReturnBatch&, const double(&)[3], const LAW&);
 SF_INSTANTIATE_RETURN(SwiftHardening)
 SF_INSTANTIATE_RETURN(LinearHardening)
 SF_INSTANTIATE_RETURN(VoceHardening)

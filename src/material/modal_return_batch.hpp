@@ -41,11 +41,11 @@ struct ModalReturnBatch {
 
 /// Solves r(D) = 0 for every lane of `b` (the first kModes modes carry weight; a J2 return has
 /// two, its third weight being zero), relative tolerance 1e-10 on the yield condition, at most
-/// 100 iterations (then InstabilityError naming `name`: only possible with non-finite input).
+/// 100 iterations. Returns -1, or the first lane that did not converge (only possible with
+/// non-finite input).
 /// Instantiated for kModes = 2, 3 and every hardening law (modal_return_batch.cpp), compiled for
 /// generic x86-64 and for x86-64-v3 (AVX2), chosen at run time; both give the same bits.
 template <int kModes, class Law>
-void solve_modal_return(ModalReturnBatch& b, const double (&lam)[3], const Law& law,
-                        const char* name);
+int solve_modal_return(ModalReturnBatch& b, const double (&lam)[3], const Law& law);
 
 }  // namespace sf

@@ -4,13 +4,12 @@
 // check against the point's stored flow stress, and the modal return of the points that yield,
 // solved together (modal_return_batch.hpp). Inline, so that the element loops carry no call per
 // point and no result returned by value through memory.
-#include <string>
 #include <type_traits>
 #include <variant>
 
-#include "core/errors.hpp"
 #include "core/types.hpp"
 #include "material/hardening.hpp"
+#include "material/material_failure.hpp"
 #include "material/modal_return_batch.hpp"
 #include "material/plane_stress_kernels.hpp"
 
@@ -42,9 +41,10 @@ inline FlowStress flow_stress_from(const Law& law, double eps, double stress) {
 }
 
 template <class Kernel, class Law>
-inline void update_points_with(const Kernel& k, const Law& law, int n, const Vec3* old_stress,
-                               const double* eps_n, const Vec3* d_strain, FlowStressCache cache,
-                               PlaneStressUpdate* out) {
+inline MaterialFailure update_points_with(const Kernel& k, const Law& law, int n,
+                                          const Vec3* old_stress, const double* eps_n,
+                                          const Vec3* d_strain, FlowStressCache cache,
+                                          PlaneStressUpdate* out) {
   ModalReturnBatch b;
   b.n = 0;
   int point[kMaxReturnLanes];
@@ -53,7 +53,7 @@ inline void update_points_with(const Kernel& k, const Law& law, int n, const Vec
     const Vec3 tr = elastic_trial(k.E, k.nu, old_stress[p], d_strain[p]);
     const double measure = k.measure(tr);  // squared equivalent stress
     if (!std::isfinite(measure)) {
-      throw InstabilityError(std::string(Kernel::kName) + ": non-finite trial stress");
+      return {MaterialFailure::Kind::non_finite_trial_stress, Kernel::kName};
     }
     const bool stored = cache.stress && cache.at[p] == eps_n[p];
     FlowStress h0 = stored ? FlowStress{cache.stress[p], 0.0} : law.evaluate(eps_n[p]);
@@ -84,9 +84,11 @@ inline void update_points_with(const Kernel& k, const Law& law, int n, const Vec
     trial[l] = tr;
   }
   if (b.n == 0) {
-    return;
+    return {};
   }
-  solve_modal_return<Kernel::kModes, Law>(b, k.lam, law, Kernel::kName);
+  if (const int l = solve_modal_return<Kernel::kModes, Law>(b, k.lam, law); l >= 0) {
+    return {MaterialFailure::Kind::return_not_converged, Kernel::kName, {b.phi_tr[l]}};
+  }
   for (int l = 0; l < b.n; ++l) {
     const int p = point[l];
     const Vec3 s = k.returned_stress(trial[l], b.D[l]);
@@ -100,32 +102,36 @@ inline void update_points_with(const Kernel& k, const Law& law, int n, const Vec
       cache.at[p] = b.eps[l];
     }
   }
+  return {};
 }
 
 }  // namespace detail
 
 /// Updates n points (n <= kMaxReturnLanes) for the strain increments d_strain[p] = (d_exx, d_eyy,
-/// d_gxy) from old_stress[p] and plastic strain eps_n[p]; results in out[p]. Throws
-/// InstabilityError if a return mapping fails (non-finite input).
+/// d_gxy) from old_stress[p] and plastic strain eps_n[p]; results in out[p]. Returns the failure
+/// of a return mapping (non-finite input), after which out is not to be used.
 template <class Kernel>
-inline void update_points(const Kernel& k, int n, const Vec3* old_stress, const double* eps_n,
-                          const Vec3* d_strain, FlowStressCache cache, PlaneStressUpdate* out) {
-  std::visit(
+[[nodiscard]] inline MaterialFailure update_points(const Kernel& k, int n, const Vec3* old_stress,
+                                                   const double* eps_n, const Vec3* d_strain,
+                                                   FlowStressCache cache, PlaneStressUpdate* out) {
+  return std::visit(
       [&](const auto& law) {
-        detail::update_points_with(k, law, n, old_stress, eps_n, d_strain, cache, out);
+        return detail::update_points_with(k, law, n, old_stress, eps_n, d_strain, cache, out);
       },
       *k.hardening);
 }
 
 /// Linear elasticity: the predictor, no check.
-inline void update_points(const ElasticKernel& k, int n, const Vec3* old_stress,
-                          const double* eps_n, const Vec3* d_strain, FlowStressCache /*cache*/,
-                          PlaneStressUpdate* out) {
+[[nodiscard]] inline MaterialFailure update_points(const ElasticKernel& k, int n,
+                                                   const Vec3* old_stress, const double* eps_n,
+                                                   const Vec3* d_strain, FlowStressCache /*cache*/,
+                                                   PlaneStressUpdate* out) {
   for (int p = 0; p < n; ++p) {
     const Vec3 s = elastic_trial(k.E, k.nu, old_stress[p], d_strain[p]);
     out[p] = {s, eps_n[p], through_thickness_increment(k.E, k.nu, d_strain[p], old_stress[p], s),
               false};
   }
+  return {};
 }
 
 }  // namespace sf

@@ -32,9 +32,10 @@ struct PassRun {
 };
 
 // Three steps of a stretching, bending and twisting velocity field large enough to yield; with
-// `broken`, the coordinates jump to those at the second step.
+// `broken`, the coordinates jump to those at the second step; with `poisoned`, those elements'
+// middle point gets a NaN stress before the second step.
 PassRun run_passes(const ShellPart& part, const Matrix3X& x0, int threads,
-                   const Matrix3X* broken = nullptr) {
+                   const Matrix3X* broken = nullptr, const std::vector<int>* poisoned = nullptr) {
   const int threads_before = omp_get_max_threads();
   omp_set_num_threads(threads);
   ShellState st = make_shell_state(element_count(part), 5, 0.8);
@@ -52,6 +53,9 @@ PassRun run_passes(const ShellPart& part, const Matrix3X& x0, int threads,
       x += dt * v;
       if (broken && step == 1) {
         x = *broken;
+      }
+      for (const int e : poisoned&& step == 1 ? *poisoned : std::vector<int>{}) {
+        st.sxx[static_cast<std::size_t>(5 * e + 2)] = std::nan("");
       }
       run.works = run_element_pass(part, ElementInputs{x, v, w, dt}, st, pass, run.element_dt);
     }
@@ -120,6 +124,26 @@ TEST_P(ElementPassThreads, ReportsTheLowestFailingElementAtAnyThreadCount) {
   EXPECT_LT(std::stoi(reports[0].substr(14)), 1150) << reports[0];
   EXPECT_EQ(reports[1], reports[0]);
   EXPECT_EQ(reports[2], reports[0]);
+}
+
+// A material update that fails (a point's stress made NaN: the J2 return meets a non-finite
+// trial stress) is a code the element loop records, not an exception: the pass reports the
+// lowest such element with the law's message, at every thread count; a triangle is named with
+// its index among the triangles too.
+TEST_P(ElementPassThreads, ReportsAMaterialFailureOfTheLowestElementAtAnyThreadCount) {
+  const Mesh mesh = make_mesh(50, 30, 7);  // 1150 quads, then 700 triangles
+  const ShellPart part = make_part(mesh, GetParam());
+  const std::vector<int> quad_and_triangle = {1700, 600};
+  const std::vector<int> triangle = {1700};
+  const std::string law = "J2 plane stress: non-finite trial stress";
+  for (int threads : {1, 2, 3}) {
+    EXPECT_EQ(run_passes(part, mesh.x, threads, nullptr, &quad_and_triangle).failure,
+              "shell element 600: " + law)
+        << threads << " threads";
+    EXPECT_EQ(run_passes(part, mesh.x, threads, nullptr, &triangle).failure,
+              "shell element 1700 (triangle 550): " + law)
+        << threads << " threads";
+  }
 }
 
 // A part of two materials (a tailor-welded blank's), their runs cut at odd places (not at the

@@ -1,0 +1,19 @@
+#include "element/element_block.hpp"
+
+namespace sf {
+
+ElementBlocks element_blocks(const ShellPart& part) {
+  ElementBlocks blocks;
+  const int n_quads = static_cast<int>(part.quads.cols());
+  const int n_triangles = static_cast<int>(part.triangles.cols());
+  if (n_quads > 0) {
+    blocks.block[blocks.size++] = {ElementShape::quad, 0, n_quads, 0, part.quads.data()};
+  }
+  if (n_triangles > 0) {
+    blocks.block[blocks.size++] = {ElementShape::triangle, n_quads, n_triangles, 4 * n_quads,
+                                   part.triangles.data()};
+  }
+  return blocks;
+}
+
+}  // namespace sf
