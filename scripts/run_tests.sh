@@ -11,8 +11,11 @@ set -euo pipefail
 # the tests), which would build and test one job at a time.
 sf_cores() { env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc; }
 cd "$(dirname "$0")/.."
+t_start=$(date +%s)
 SF_WITH_PARAVIEW=1 scripts/setup.sh
 build_dir="${SF_BUILD_DIR:-build}"
+t_built=$(date +%s)
+echo "== Set up and built in $((t_built - t_start)) s"
 echo "== Running the tests"
 # ctest runs nproc tests at once: one OpenMP thread each, so that they do not oversubscribe the
 # cores (the thread tests set their own counts: --threads, omp_set_num_threads), and threads
@@ -21,6 +24,7 @@ export OMP_NUM_THREADS="${OMP_NUM_THREADS:-1}" OMP_WAIT_POLICY="${OMP_WAIT_POLIC
 status=0
 ctest --test-dir "$build_dir" --output-on-failure -j"$(sf_cores)" -LE slow "$@" \
   | tee "$build_dir/ctest-main.log" || status=1  # pipefail: ctest's own status
+echo "== The tests ran in $(( $(date +%s) - t_built )) s"
 
 extra="${SF_EXTRA_CHECKS:-auto}"
 if [ "$extra" = 1 ] || { [ "$extra" = auto ] && [ $# -eq 0 ]; }; then
@@ -31,6 +35,7 @@ if [ "$extra" = 1 ] || { [ "$extra" = auto ] && [ $# -eq 0 ]; }; then
     echo "== $step: $(( $(date +%s) - t0 )) s"
   done
   # The main suite's closing line last, as the summary of the run.
+  echo "== Everything in $(( $(date +%s) - t_start )) s"
   grep -E 'tests passed|tests failed' "$build_dir/ctest-main.log" | tail -1
 fi
 exit $status

@@ -49,7 +49,19 @@ struct ElementBlocks {
   }
 };
 
+/// The blocks of a mesh given as its connectivity (a part's, a formed part's, a blank mesh's):
+/// its quads, then its triangles, which is how every state array, corner slot and output cell
+/// numbers them.
+ElementBlocks element_blocks(const QuadConn& quads, const TriConn& triangles);
 /// The part's blocks: its quads, then its triangles.
-ElementBlocks element_blocks(const ShellPart& part);
+inline ElementBlocks element_blocks(const ShellPart& part) {
+  return element_blocks(part.quads, part.triangles);
+}
+
+/// The block holding state element e of the part (for one element; a loop over many asks
+/// element_blocks once and then ElementBlocks::of).
+inline ElementBlock block_of(const ShellPart& part, int e) {
+  return element_blocks(part).of(e);
+}
 
 }  // namespace sf

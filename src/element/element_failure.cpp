@@ -23,6 +23,8 @@ std::string ElementFailure::message() const {
       return name + ": inverted (the normal flipped within the step)";
     case Kind::material:
       return name + ": " + material.message();
+    case Kind::directors_not_set:
+      return name + ": directors not initialised (initialize_directors)";
     case Kind::internal:
       return name + ": " + internal_text;
   }

@@ -15,10 +15,11 @@ struct ElementFailure {
     none,
     non_finite_velocity,  ///< a node's velocity or angular velocity
     non_finite_stress,
-    invalid_geometry,  ///< quad: inverted, collapsed or non-finite; triangle: collapsed
-    inverted,          ///< triangle: the normal flipped within the step
-    material,          ///< a point's material update failed (`material` says how)
-    internal,          ///< an exception escaped the loop: a program error, its text kept
+    invalid_geometry,   ///< quad: inverted, collapsed or non-finite; triangle: collapsed
+    inverted,           ///< triangle: the normal flipped within the step
+    material,           ///< a point's material update failed (`material` says how)
+    directors_not_set,  ///< a program error: initialize_directors was not called
+    internal,           ///< an exception escaped the loop: a program error, its text kept
   };
   int element = INT_MAX;  ///< index in the part's state
   int triangle = -1;      ///< the triangle's index among the triangles; -1 for a quad
@@ -28,6 +29,8 @@ struct ElementFailure {
   std::string internal_text;
 
   bool failed() const { return kind != Kind::none; }
+  /// A program error, not a state the run reached (the pass throws std::runtime_error for it).
+  bool program_error() const { return kind == Kind::directors_not_set || kind == Kind::internal; }
 
   /// Keeps the failure of the lower element (the first one a serial pass would meet).
   void keep_lowest(const ElementFailure& other) {

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "element/element_block.hpp"
 
 namespace sf {
 
@@ -71,17 +72,16 @@ void initialize_directors(const ShellPart& part, const Matrix3X& x, ShellState& 
     }
     return Vec3(n / length);
   };
-  const Eigen::Index n_quads = part.quads.cols();
-  for (Eigen::Index e = 0; e < n_quads; ++e) {
-    const Vec3 own = unit(quad_normal(part, x, e), e);
-    for (int a = 0; a < 4; ++a) {
-      set(e, a, part.quads(a, e), own);
-    }
-  }
-  for (Eigen::Index k = 0; k < part.triangles.cols(); ++k) {
-    const Vec3 own = unit(triangle_normal(part, x, k), n_quads + k);
-    for (int a = 0; a < 3; ++a) {
-      set(n_quads + k, a, part.triangles(a, k), own);
+  for (const ElementBlock& block : element_blocks(part)) {
+    const bool quads = block.shape == ElementShape::quad;
+    for (int e = block.first; e < block.end(); ++e) {
+      const Vec3 own = unit(
+          quads ? quad_normal(part, x, block.local(e)) : triangle_normal(part, x, block.local(e)),
+          e);
+      const int* nodes = block.element_nodes(e);
+      for (int a = 0; a < block.nodes_per_element(); ++a) {
+        set(e, a, nodes[a], own);
+      }
     }
   }
 }

@@ -7,8 +7,6 @@
 // about its own normal (docs/element-and-material.md, "Directors").
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
-#include <string>
 #include <vector>
 
 #include "core/types.hpp"
@@ -46,24 +44,27 @@ inline Vec3 rotate_director(const Vec3& d, const Vec3& phi) {
 }
 
 /// An element's directors over a step: `start` read from the state at `director` (3 per node),
-/// `end` = start turned by dt w_I and written back. Throws std::logic_error naming the element if
-/// they were never set (initialize_directors).
+/// `end` = start turned by dt w_I and written back. Returns false, leaving the state as it is, if
+/// they were never set (initialize_directors): a program error the element loop reports.
 template <int N>
-inline void advance_element_directors(double* director, const Eigen::Matrix<double, 3, N>& w,
-                                      double dt, int element, Eigen::Matrix<double, 3, N>& start,
-                                      Eigen::Matrix<double, 3, N>& end) {
+[[nodiscard]] inline bool advance_element_directors(double* director,
+                                                    const Eigen::Matrix<double, 3, N>& w, double dt,
+                                                    Eigen::Matrix<double, 3, N>& start,
+                                                    Eigen::Matrix<double, 3, N>& end) {
+  for (int i = 0; i < N; ++i) {
+    start.col(i) = Vec3(director[3 * i], director[3 * i + 1], director[3 * i + 2]);
+    if (!(start.col(i).squaredNorm() > 0.5)) {
+      return false;
+    }
+  }
   for (int i = 0; i < N; ++i) {
     double* c = director + 3 * i;
-    start.col(i) = Vec3(c[0], c[1], c[2]);
-    if (!(start.col(i).squaredNorm() > 0.5)) {
-      throw std::logic_error("shell element " + std::to_string(element) +
-                             ": directors not initialised (initialize_directors)");
-    }
     end.col(i) = rotate_director(start.col(i), dt * w.col(i));
     c[0] = end(0, i);
     c[1] = end(1, i);
     c[2] = end(2, i);
   }
+  return true;
 }
 
 }  // namespace sf

@@ -185,7 +185,7 @@ ShellForceResult run_element_pass(const ShellPart& part, const ElementInputs& in
     total.failure.keep_lowest(share.failure);
   }
   if (total.failure.failed()) {
-    if (total.failure.kind == ElementFailure::Kind::internal) {
+    if (total.failure.program_error()) {
       throw std::runtime_error(total.failure.message());
     }
     throw InstabilityError(total.failure.message());

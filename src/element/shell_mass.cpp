@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "element/element_block.hpp"
 #include "element/shell_geometry.hpp"
 #include "element/shell_geometry_batch.hpp"
 #include "element/shell_triangle_geometry.hpp"
@@ -16,27 +17,28 @@ void compute_lumped_mass(const ShellPart& part, const Matrix3X& x, const ShellSt
   mass = VectorX::Zero(x.cols());
   rotational_inertia = VectorX::Zero(x.cols());
   ShellGeometry g;
-  for (int e = 0; e < part.quads.cols(); ++e) {
-    compute_shell_geometry_or_throw(gather_quad(x, part.quads, e), e, "mass", g);
-    const double t = state.thickness[e];
-    const double m_node = 0.25 * material_of(part, e).density * t * g.area;
-    const double i_node = rotational_inertia_factor(g.area, t) * m_node;
-    for (int i = 0; i < 4; ++i) {
-      mass(part.quads(i, e)) += m_node;
-      rotational_inertia(part.quads(i, e)) += i_node;
-    }
-  }
-  const int n_quads = static_cast<int>(part.quads.cols());
   TriangleGeometry tg;
-  for (int k = 0; k < part.triangles.cols(); ++k) {
-    const int e = n_quads + k;
-    compute_triangle_geometry_or_throw(gather_triangle(x, part.triangles, k), e, k, "mass", tg);
-    const double t = state.thickness[e];
-    const double m_node = material_of(part, e).density * t * tg.area / 3.0;
-    const double i_node = rotational_inertia_factor(tg.area, t) * m_node;
-    for (int i = 0; i < 3; ++i) {
-      mass(part.triangles(i, k)) += m_node;
-      rotational_inertia(part.triangles(i, k)) += i_node;
+  for (const ElementBlock& block : element_blocks(part)) {
+    for (int e = block.first; e < block.end(); ++e) {
+      const int k = block.local(e);
+      const double t = state.thickness[e];
+      double m_node = 0.0;
+      double area = 0.0;
+      if (block.shape == ElementShape::quad) {
+        compute_shell_geometry_or_throw(gather_quad(x, part.quads, k), e, "mass", g);
+        area = g.area;
+        m_node = 0.25 * material_of(part, e).density * t * area;
+      } else {
+        compute_triangle_geometry_or_throw(gather_triangle(x, part.triangles, k), e, k, "mass", tg);
+        area = tg.area;
+        m_node = material_of(part, e).density * t * area / 3.0;
+      }
+      const double i_node = rotational_inertia_factor(area, t) * m_node;
+      const int* nodes = block.element_nodes(e);
+      for (int i = 0; i < block.nodes_per_element(); ++i) {
+        mass(nodes[i]) += m_node;
+        rotational_inertia(nodes[i]) += i_node;
+      }
     }
   }
 }
@@ -62,12 +64,31 @@ class WaveSpeeds {
   double speed_ = 0.0;
 };
 
-// L / c of triangle e (element index, quads first): L = 2 A / max side, the smallest altitude.
-double triangle_time_step(const Matrix3X& x, const ShellPart& part, int e, double c,
-                          TriangleGeometry& tg) {
-  const int k = e - static_cast<int>(part.quads.cols());
+// L / c of triangle e of the triangle block: L = 2 A / max side, the smallest altitude.
+double triangle_time_step(const Matrix3X& x, const ShellPart& part, const ElementBlock& block,
+                          int e, double c, TriangleGeometry& tg) {
+  const int k = block.local(e);
   compute_triangle_geometry_or_throw(gather_triangle(x, part.triangles, k), e, k, "time step", tg);
   return triangle_characteristic_length(tg) / c;
+}
+
+// step(e, dt) for the quads of `block`, their areas kBlockLanes at a time.
+template <class Step>
+void for_each_quad_time_step(const ShellPart& part, const ElementBlock& block, const Matrix3X& x,
+                             WaveSpeeds& c, Step& step) {
+  for (int l0 = 0; l0 < block.count; l0 += kBlockLanes) {
+    const int count = std::min(kBlockLanes, block.count - l0);
+    double area[kBlockLanes];
+    bool ok[kBlockLanes];
+    compute_quad_area_block(x.data(), block.nodes, l0, count, area, ok);
+    for (int j = 0; j < count; ++j) {
+      const int e = block.first + l0 + j;
+      if (!ok[j]) {
+        throw_invalid_geometry(e, "time step");
+      }
+      step(e, quad_time_step(gather_quad(x, part.quads, l0 + j), area[j], c.of(e)));
+    }
+  }
 }
 
 // Calls step(e, dt) for every element in order, dt = L / c; the quads' areas come in blocks of
@@ -75,23 +96,15 @@ double triangle_time_step(const Matrix3X& x, const ShellPart& part, int e, doubl
 template <class Step>
 void for_each_time_step(const ShellPart& part, const Matrix3X& x, Step step) {
   WaveSpeeds c(part);
-  const int n_quads = static_cast<int>(part.quads.cols());
-  for (int e0 = 0; e0 < n_quads; e0 += kBlockLanes) {
-    const int count = std::min(kBlockLanes, n_quads - e0);
-    double area[kBlockLanes];
-    bool ok[kBlockLanes];
-    compute_quad_area_block(x.data(), part.quads.data(), e0, count, area, ok);
-    for (int j = 0; j < count; ++j) {
-      const int e = e0 + j;
-      if (!ok[j]) {
-        throw_invalid_geometry(e, "time step");
-      }
-      step(e, quad_time_step(gather_quad(x, part.quads, e), area[j], c.of(e)));
-    }
-  }
   TriangleGeometry tg;
-  for (int e = n_quads; e < element_count(part); ++e) {
-    step(e, triangle_time_step(x, part, e, c.of(e), tg));
+  for (const ElementBlock& block : element_blocks(part)) {
+    if (block.shape == ElementShape::quad) {
+      for_each_quad_time_step(part, block, x, c, step);
+      continue;
+    }
+    for (int e = block.first; e < block.end(); ++e) {
+      step(e, triangle_time_step(x, part, block, e, c.of(e), tg));
+    }
   }
 }
 
@@ -144,19 +157,20 @@ StableStep compute_element_time_steps(const ShellPart& part, const Matrix3X& x,
 void compute_element_masses(const ShellPart& part, const Matrix3X& x, const ShellState& state,
                             std::vector<double>& mass, std::vector<double>& inertia_factor) {
   const auto n = static_cast<std::size_t>(element_count(part));
-  const auto n_quads = static_cast<std::size_t>(part.quads.cols());
+  const ElementBlocks blocks = element_blocks(part);
   mass.assign(n, 0.0);
   inertia_factor.assign(n, 0.0);
   ShellGeometry g;
   TriangleGeometry tg;
   for (std::size_t e = 0; e < n; ++e) {
     const int ei = static_cast<int>(e);
+    const ElementBlock& block = blocks.of(ei);
+    const int k = block.local(ei);
     double area = 0.0;
-    if (e < n_quads) {
-      compute_shell_geometry_or_throw(gather_quad(x, part.quads, ei), ei, "mass", g);
+    if (block.shape == ElementShape::quad) {
+      compute_shell_geometry_or_throw(gather_quad(x, part.quads, k), ei, "mass", g);
       area = g.area;
     } else {
-      const int k = ei - static_cast<int>(n_quads);
       compute_triangle_geometry_or_throw(gather_triangle(x, part.triangles, k), ei, k, "mass", tg);
       area = tg.area;
     }

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "element/element_block.hpp"
 #include "element/shell_geometry.hpp"
 #include "element/shell_triangle_geometry.hpp"
 
@@ -60,28 +61,32 @@ std::vector<double> compute_material_angles(const Matrix3X& x, const QuadConn& q
                                             const TriConn& triangles,
                                             const Vec3& rolling_direction) {
   const Vec3 d = unit_direction(rolling_direction);
-  const Eigen::Index n_quads = quads.cols();
-  std::vector<double> angle(static_cast<std::size_t>(n_quads + triangles.cols()));
-  for (Eigen::Index e = 0; e < n_quads; ++e) {
-    const Quad3 xe = gather_quad(x, quads, static_cast<int>(e));
-    const std::string name = "blank element " + std::to_string(e) + " (centroid " +
-                             format_point(0.25 * xe.rowwise().sum()) + " mm)";
-    ShellGeometry g;
-    if (!compute_shell_geometry(xe, g)) {
-      throw InputError(name + ": inverted, collapsed or non-finite geometry");
+  std::vector<double> angle(static_cast<std::size_t>(quads.cols() + triangles.cols()));
+  for (const ElementBlock& block : element_blocks(quads, triangles)) {
+    for (int e = block.first; e < block.end(); ++e) {
+      const int k = block.local(e);
+      const auto at = static_cast<std::size_t>(e);
+      if (block.shape == ElementShape::quad) {
+        const Quad3 xe = gather_quad(x, quads, k);
+        const std::string name = "blank element " + std::to_string(e) + " (centroid " +
+                                 format_point(0.25 * xe.rowwise().sum()) + " mm)";
+        ShellGeometry g;
+        if (!compute_shell_geometry(xe, g)) {
+          throw InputError(name + ": inverted, collapsed or non-finite geometry");
+        }
+        angle[at] = angle_in_frame(d, g.frame, name);
+        continue;
+      }
+      const Tri3 xe = gather_triangle(x, triangles, k);
+      const std::string name = "blank element " + std::to_string(e) + " (triangle " +
+                               std::to_string(k) + ", centroid " +
+                               format_point(xe.rowwise().sum() / 3.0) + " mm)";
+      TriangleGeometry g;
+      if (!compute_triangle_geometry(xe, g)) {
+        throw InputError(name + ": inverted, collapsed or non-finite geometry");
+      }
+      angle[at] = angle_in_frame(d, g.frame, name);
     }
-    angle[static_cast<std::size_t>(e)] = angle_in_frame(d, g.frame, name);
-  }
-  for (Eigen::Index k = 0; k < triangles.cols(); ++k) {
-    const Tri3 xe = gather_triangle(x, triangles, static_cast<int>(k));
-    const std::string name = "blank element " + std::to_string(n_quads + k) + " (triangle " +
-                             std::to_string(k) + ", centroid " +
-                             format_point(xe.rowwise().sum() / 3.0) + " mm)";
-    TriangleGeometry g;
-    if (!compute_triangle_geometry(xe, g)) {
-      throw InputError(name + ": inverted, collapsed or non-finite geometry");
-    }
-    angle[static_cast<std::size_t>(n_quads + k)] = angle_in_frame(d, g.frame, name);
   }
   return angle;
 }

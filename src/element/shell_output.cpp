@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "element/element_block.hpp"
 #include "element/shell_geometry.hpp"
 #include "element/shell_triangle_geometry.hpp"
 
@@ -19,16 +20,16 @@ Stress6 rotate_to_global(const Mat3& frame, double sxx, double syy, double sxy, 
   return out;
 }
 
-// The corotational frame of element e (quads first, then triangles) at the coordinates x.
+// The corotational frame of state element e at the coordinates x.
 Mat3 element_frame(const ShellPart& part, const Matrix3X& x, int e) {
-  const int n_quads = static_cast<int>(part.quads.cols());
-  if (e < n_quads) {
+  const ElementBlock block = block_of(part, e);
+  if (block.shape == ElementShape::quad) {
     ShellGeometry g;
-    compute_shell_geometry_or_throw(gather_quad(x, part.quads, e), e, "output", g);
+    compute_shell_geometry_or_throw(gather_quad(x, part.quads, block.local(e)), e, "output", g);
     return g.frame;
   }
   TriangleGeometry tg;
-  const int k = e - n_quads;
+  const int k = block.local(e);
   compute_triangle_geometry_or_throw(gather_triangle(x, part.triangles, k), e, k, "output", tg);
   return tg.frame;
 }

@@ -182,8 +182,10 @@ class AssumedStrainQuad {
     el.vl = gm.frame.transpose() * ve;
     const Vec3 d_membrane(gm.b.row(0).dot(el.vl.row(0)), gm.b.row(1).dot(el.vl.row(1)),
                           gm.b.row(1).dot(el.vl.row(0)) + gm.b.row(0).dot(el.vl.row(1)));
-    advance_element_directors(directors_ + 3 * kDirectorNodes * static_cast<std::ptrdiff_t>(e), we,
-                              dt, e, el.d.old_d, el.d.new_d);
+    if (!advance_element_directors(directors_ + 3 * kDirectorNodes * static_cast<std::ptrdiff_t>(e),
+                                   we, dt, el.d.old_d, el.d.new_d)) {
+      return {ElementFailure::Kind::directors_not_set};
+    }
     el.basis_mid = compute_quad_basis(el.xm);
     el.map_mid = make_cartesian_map(el.basis_mid, gm.frame);
     el.inc = compute_increments(xs, xe, el.d, el.basis_mid, el.map_mid);

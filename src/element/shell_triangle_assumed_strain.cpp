@@ -56,8 +56,10 @@ class AssumedStrainTriangle {
     const Vec3 d_membrane(gm.bx.dot(vl.row(0)), gm.by.dot(vl.row(1)),
                           gm.by.dot(vl.row(0)) + gm.bx.dot(vl.row(1)));
     Tri3 d_start;
-    advance_element_directors(directors_ + 3 * kDirectorNodes * static_cast<std::ptrdiff_t>(e), we,
-                              dt, e, d_start, el.d_end);
+    if (!advance_element_directors(directors_ + 3 * kDirectorNodes * static_cast<std::ptrdiff_t>(e),
+                                   we, dt, d_start, el.d_end)) {
+      return {ElementFailure::Kind::directors_not_set};
+    }
     const TriangleDirectorMeasures start = compute_triangle_director_measures(xs, d_start);
     const TriangleDirectorMeasures end = compute_triangle_director_measures(xe, el.d_end);
     const Eigen::Matrix<double, 2, 3> shear_mid = compute_dsg3_weights(xm, gm.frame).weight;

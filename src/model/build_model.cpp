@@ -13,6 +13,7 @@
 #include "contact/contact_search.hpp"
 #include "core/errors.hpp"
 #include "core/log.hpp"
+#include "element/element_block.hpp"
 #include "material/anisotropy_fit.hpp"
 #include "mesh/nodal_area.hpp"
 #include "meshing/gmsh_reader.hpp"
@@ -445,22 +446,16 @@ void set_up_loads(const CaseConfig& config, Model& model) {
         in_group[static_cast<std::size_t>(node)] = 1;
       }
       PressureLoad pressure{{}, lc.pressure, make_scale_curve(lc.curve)};
-      const auto all_in_group = [&](const auto& conn, Eigen::Index e) {
-        bool all = true;
-        for (Eigen::Index a = 0; a < conn.rows(); ++a) {
-          all = all && in_group[static_cast<std::size_t>(conn(a, e))];
-        }
-        return all;
-      };
-      const Eigen::Index n_quads = blank.mesh.quads.cols();
-      for (Eigen::Index e = 0; e < n_quads; ++e) {
-        if (all_in_group(blank.mesh.quads, e)) {
-          pressure.elements.push_back(static_cast<int>(e));
-        }
-      }
-      for (Eigen::Index k = 0; k < blank.mesh.triangles.cols(); ++k) {
-        if (all_in_group(blank.mesh.triangles, k)) {
-          pressure.elements.push_back(static_cast<int>(n_quads + k));
+      for (const ElementBlock& block : element_blocks(blank.mesh.quads, blank.mesh.triangles)) {
+        for (int e = block.first; e < block.end(); ++e) {
+          const int* nodes = block.element_nodes(e);
+          bool all = true;
+          for (int a = 0; a < block.nodes_per_element(); ++a) {
+            all = all && in_group[static_cast<std::size_t>(nodes[a])];
+          }
+          if (all) {
+            pressure.elements.push_back(e);
+          }
         }
       }
       if (pressure.elements.empty()) {

@@ -1,5 +1,7 @@
 #include "model/external_loads.hpp"
 
+#include "element/element_block.hpp"
+
 namespace sf {
 
 namespace {
@@ -41,19 +43,15 @@ void compute_nodal_loads(const Model& model, double time, Matrix3X& f_ext, Matri
 
 void add_pressure_loads(const Model& model, double time, const Matrix3X& x, Matrix3X& f_ext) {
   const ShellPart& part = model.blank.part;
-  const Eigen::Index n_quads = part.quads.cols();
+  const ElementBlocks blocks = element_blocks(part);
   for (const PressureLoad& load : model.loads.pressures) {
     const double p = load.scale.value(time) * load.pressure;
     for (int e : load.elements) {
       const Vec3 f = pressure_node_force(part, x, e, p);
-      if (e < n_quads) {
-        for (int a = 0; a < 4; ++a) {
-          f_ext.col(part.quads(a, e)) += f;
-        }
-      } else {
-        for (int a = 0; a < 3; ++a) {
-          f_ext.col(part.triangles(a, e - n_quads)) += f;
-        }
+      const ElementBlock& block = blocks.of(e);
+      const int* nodes = block.element_nodes(e);
+      for (int a = 0; a < block.nodes_per_element(); ++a) {
+        f_ext.col(nodes[a]) += f;
       }
     }
   }
@@ -61,19 +59,18 @@ void add_pressure_loads(const Model& model, double time, const Matrix3X& x, Matr
 
 Vec3 pressure_node_force(const ShellPart& part, const Matrix3X& x, int e, double p) {
   const Vec3 area = element_vector_area(part, x, e);
-  return e < part.quads.cols() ? Vec3((-0.25 * p) * area) : Vec3((-p / 3.0) * area);
+  return block_of(part, e).shape == ElementShape::quad ? Vec3((-0.25 * p) * area)
+                                                       : Vec3((-p / 3.0) * area);
 }
 
 Vec3 element_vector_area(const ShellPart& part, const Matrix3X& x, int e) {
-  const Eigen::Index n_quads = part.quads.cols();
-  if (e < n_quads) {
-    const QuadConn& q = part.quads;
-    return 0.5 * (x.col(q(2, e)) - x.col(q(0, e))).cross(x.col(q(3, e)) - x.col(q(1, e)));
+  const ElementBlock block = block_of(part, e);
+  const int* n = block.element_nodes(e);
+  if (block.shape == ElementShape::quad) {
+    return 0.5 * (x.col(n[2]) - x.col(n[0])).cross(x.col(n[3]) - x.col(n[1]));
   }
-  const Eigen::Index k = e - n_quads;
-  const TriConn& t = part.triangles;
-  const Vec3 x1 = x.col(t(0, k));
-  return 0.5 * (x.col(t(1, k)) - x1).cross(x.col(t(2, k)) - x1);
+  const Vec3 x1 = x.col(n[0]);
+  return 0.5 * (x.col(n[1]) - x1).cross(x.col(n[2]) - x1);
 }
 
 PressureDirection compute_pressure_direction(const Model& model, const PressureLoad& load,

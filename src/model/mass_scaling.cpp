@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "element/element_block.hpp"
 #include "element/shell_mass.hpp"
 
 namespace sf {
@@ -29,10 +30,9 @@ namespace {
 void raise_element_density(const ShellPart& part, int e, MassScaling& scaling,
                            DensityRaise& raise) {
   const auto ei = static_cast<std::size_t>(e);
-  const int n_quads = static_cast<int>(part.quads.cols());
-  const int n_nodes = e < n_quads ? 4 : 3;  // the lumped mass's equal shares
-  const int first_slot =
-      e < n_quads ? quad_corner_slot(e, 0) : triangle_corner_slot(n_quads, e - n_quads, 0);
+  const ElementBlock block = block_of(part, e);
+  const int n_nodes = block.nodes_per_element();  // the lumped mass's equal shares
+  const int first_slot = block.corner_slot(e, 0);
   double* corners =
       scaling.corner_mass.data() + kMassCornerWidth * static_cast<std::ptrdiff_t>(first_slot);
   const double physical_dt = scaling.safety * scaling.element_dt[ei];

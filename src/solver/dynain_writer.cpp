@@ -11,6 +11,7 @@
 
 #include "core/build_info.hpp"
 #include "core/errors.hpp"
+#include "element/element_block.hpp"
 #include "element/shell_output.hpp"
 #include "element/shell_surface_strain.hpp"
 
@@ -102,14 +103,10 @@ PartShell part_shell(const FormedPart& part) {
 
 // The element's node numbers (1-based), a triangle's third repeated as the fourth.
 std::array<int, 4> element_nodes(const PartShell& p, int e) {
-  const auto n_quads = static_cast<int>(p.shell.quads.cols());
-  if (e < n_quads) {
-    return {p.shell.quads(0, e) + 1, p.shell.quads(1, e) + 1, p.shell.quads(2, e) + 1,
-            p.shell.quads(3, e) + 1};
-  }
-  const int k = e - n_quads;
-  return {p.shell.triangles(0, k) + 1, p.shell.triangles(1, k) + 1, p.shell.triangles(2, k) + 1,
-          p.shell.triangles(2, k) + 1};
+  const ElementBlock block = block_of(p.shell, e);
+  const int* n = block.element_nodes(e);
+  const int last = n[block.nodes_per_element() - 1];
+  return {n[0] + 1, n[1] + 1, n[2] + 1, last + 1};
 }
 
 void write_nodes(std::ostream& out, const PartShell& p) {
@@ -162,7 +159,7 @@ void write_strains(std::ostream& out, const FormedPart& part, const PartShell& p
   std::array<Vec3, 4> X, x, N, n;
   for (int e = 0; e < p.state.n_elements; ++e) {
     const std::array<int, 4> nodes = element_nodes(p, e);
-    const std::size_t corners = e < p.shell.quads.cols() ? 4 : 3;
+    const auto corners = static_cast<std::size_t>(block_of(p.shell, e).nodes_per_element());
     for (std::size_t a = 0; a < corners; ++a) {
       const int i = nodes[a] - 1;
       X[a] = part.reference_nodes.col(i);

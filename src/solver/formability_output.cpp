@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "element/element_block.hpp"
 #include "element/shell_surface_strain.hpp"
 #include "model/blank_parts.hpp"
 
@@ -52,7 +53,7 @@ void FormabilityEvaluator::evaluate(const Model& model, const Matrix3X& x,
                                     const std::vector<double>& thickness,
                                     FormabilityFields& out) const {
   const ShellPart& part = model.blank.part;
-  const Eigen::Index n_quads = part.quads.cols();
+  const ElementBlocks blocks = element_blocks(part);
   const int n = element_count(part);
   for (int k = 0; k < 3; ++k) {
     out.major[static_cast<std::size_t>(k)].resize(n);
@@ -66,11 +67,10 @@ void FormabilityEvaluator::evaluate(const Model& model, const Matrix3X& x,
   const FormabilityConfig& thresholds = model.formability.thresholds;
   std::array<Vec3, 4> X, xs, N, ns;
   for (int e = 0; e < n; ++e) {
-    const bool quad = e < n_quads;
-    const std::size_t corners = quad ? 4 : 3;
+    const ElementBlock& block = blocks.of(e);
+    const auto corners = static_cast<std::size_t>(block.nodes_per_element());
     for (std::size_t a = 0; a < corners; ++a) {
-      const auto i = quad ? part.quads(static_cast<Eigen::Index>(a), e)
-                          : part.triangles(static_cast<Eigen::Index>(a), e - n_quads);
+      const int i = block.element_nodes(e)[a];
       X[a] = model.blank.mesh.nodes.col(i);
       xs[a] = x.col(i);
       N[a] = reference_normals_.col(i);

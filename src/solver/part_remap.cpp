@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "element/element_block.hpp"
 #include "element/shell_geometry.hpp"
 #include "element/shell_part.hpp"
 #include "element/shell_triangle_geometry.hpp"
@@ -288,7 +289,7 @@ class Remapper {
   void turn_pieces(FormedPart& out) const {
     const std::vector<double>& x_old = part_.fields.at("x");
     const std::vector<double>& x_new = out.fields.at("x");
-    const auto n_quads_old = static_cast<int>(part_.quads.cols());
+    const ElementBlocks old_blocks = element_blocks(part_.quads, part_.triangles);
     const std::size_t n_new = elements_.size();
     for (std::size_t e = 0; e < n_new; ++e) {
       const ElementSource& piece = *elements_[e];
@@ -297,9 +298,9 @@ class Remapper {
       }
       const std::vector<int> parent_nodes = part_element_nodes(part_, piece.parent);
       const int count = e < map_.quads.size() ? 4 : 3;
-      const Vec2 turn =
-          frame_turn(element_frame(x_old, parent_nodes.data(), piece.parent < n_quads_old ? 4 : 3),
-                     element_frame(x_new, piece.nodes.data(), count));
+      const Vec2 turn = frame_turn(element_frame(x_old, parent_nodes.data(),
+                                                 old_blocks.of(piece.parent).nodes_per_element()),
+                                   element_frame(x_new, piece.nodes.data(), count));
       turn_point_fields(out, e, turn);
       turn_shear(out, e, turn);
       interpolate_directors(out, e, parent_nodes, count);
@@ -384,13 +385,9 @@ class Remapper {
 }  // namespace
 
 std::vector<int> part_element_nodes(const FormedPart& part, int element) {
-  const auto n_quads = static_cast<int>(part.quads.cols());
-  if (element < n_quads) {
-    return {part.quads(0, element), part.quads(1, element), part.quads(2, element),
-            part.quads(3, element)};
-  }
-  const int t = element - n_quads;
-  return {part.triangles(0, t), part.triangles(1, t), part.triangles(2, t)};
+  const ElementBlock block = element_blocks(part.quads, part.triangles).of(element);
+  const int* nodes = block.element_nodes(element);
+  return {nodes, nodes + block.nodes_per_element()};
 }
 
 std::vector<int> part_piece_sizes(const FormedPart& part) {

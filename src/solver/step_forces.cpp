@@ -8,6 +8,7 @@
 
 #include "core/errors.hpp"
 #include "core/log.hpp"
+#include "element/element_block.hpp"
 #include "model/external_loads.hpp"
 
 namespace sf {
@@ -271,7 +272,7 @@ void add_pressure_forces(const Model& model, SolutionState& s) {
     return;
   }
   const ShellPart& part = model.blank.part;
-  const int n_quads = static_cast<int>(part.quads.cols());
+  const ElementBlocks blocks = element_blocks(part);
   const auto n_corners = static_cast<std::size_t>(corner_count(part));
   if (s.pressure_corners.size() != kLoadCornerWidth * n_corners) {
     s.pressure_corners.assign(kLoadCornerWidth * n_corners, 0.0);
@@ -288,9 +289,9 @@ void add_pressure_forces(const Model& model, SolutionState& s) {
         next = std::lower_bound(next, load.elements.end(), e);
         const bool carries = next != load.elements.end() && *next == e;
         const Vec3 f = carries ? pressure_node_force(part, s.x, e, p) : Vec3::Zero();
-        const int n_nodes = e < n_quads ? 4 : 3;
-        const int slot =
-            e < n_quads ? quad_corner_slot(e, 0) : triangle_corner_slot(n_quads, e - n_quads, 0);
+        const ElementBlock& block = blocks.of(e);
+        const int n_nodes = block.nodes_per_element();
+        const int slot = block.corner_slot(e, 0);
         double* c =
             s.pressure_corners.data() + kLoadCornerWidth * static_cast<std::ptrdiff_t>(slot);
         for (int a = 0; a < n_nodes; ++a, c += kLoadCornerWidth) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "element/element_block.hpp"
 #include "solver/part_remap.hpp"
 
 namespace sf {
@@ -51,7 +52,7 @@ FormedPart trim_by_removal(const FormedPart& part, const TrimOutline& outline,
   check_trim_leaves_a_part(part, static_cast<std::size_t>(std::count(kept.begin(), kept.end(), 1)),
                            kept.size());
   const Eigen::Index n_nodes = part.reference_nodes.cols();
-  const auto n_quads = static_cast<int>(part.quads.cols());
+  const ElementBlocks blocks = element_blocks(part.quads, part.triangles);
   std::vector<int> new_node(static_cast<std::size_t>(n_nodes), -1);
   for (std::size_t e = 0; e < kept.size(); ++e) {
     if (kept[e]) {
@@ -76,7 +77,8 @@ FormedPart trim_by_removal(const FormedPart& part, const TrimOutline& outline,
     for (std::size_t a = 0; a < nodes.size(); ++a) {
       element.nodes[a] = new_node[static_cast<std::size_t>(nodes[a])];
     }
-    (element.parent < n_quads ? map.quads : map.triangles).push_back(element);
+    const bool quad = blocks.of(element.parent).shape == ElementShape::quad;
+    (quad ? map.quads : map.triangles).push_back(element);
   }
   FormedPart out = remap_part(part, map);
   if (summary) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "element/element_block.hpp"
 #include "solver/part_remap.hpp"
 
 namespace sf {
@@ -332,7 +333,7 @@ class Cutter {
     std::vector<int> new_node(side_.size(), -1), new_crossing(crossings_.size(), -1);
     TrimSummary s;
     s.elements_before = elements_;
-    const auto n_quads = static_cast<int>(part_.quads.cols());
+    const ElementBlocks blocks = element_blocks(part_.quads, part_.triangles);
     std::vector<std::pair<int, Piece>> kept;  // (parent, piece) in the parent's order
     for (int e = 0; e < elements_; ++e) {
       const std::vector<Piece> pieces = kept_pieces(e);
@@ -399,8 +400,8 @@ class Cutter {
                                        : new_crossing[static_cast<std::size_t>(c.crossing)];
         element.whole = element.whole && c.node >= 0 && !moved_[static_cast<std::size_t>(c.node)];
       }
-      const bool parent_quad = parent < n_quads;
-      element.whole = element.whole && piece.size() == (parent_quad ? 4u : 3u);
+      const auto parent_corners = static_cast<std::size_t>(blocks.of(parent).nodes_per_element());
+      element.whole = element.whole && piece.size() == parent_corners;
       (piece.size() == 4 ? map.quads : map.triangles).push_back(element);
     }
     FormedPart out = remap_part(part_, map);
