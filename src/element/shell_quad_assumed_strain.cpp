@@ -4,9 +4,9 @@
 #include <cstddef>
 
 #include "element/element_loop.hpp"
+#include "element/element_stages.hpp"
 #include "element/shell_directors.hpp"
 #include "element/shell_geometry.hpp"
-#include "element/shell_geometry_batch.hpp"
 #include "element/shell_mass.hpp"
 #include "element/shell_quad_directors.hpp"
 #include "element/shell_quad_hourglass.hpp"
@@ -150,35 +150,28 @@ class AssumedStrainQuad {
   AssumedStrainQuad(const ShellPart& part, const ShellMaterial& material, double E, double nu,
                     const ElementInputs& in, ShellState& st)
       : in_(in),
-        conn_(part.quads.data()),
+        geometry_(in, part.quads.data()),
         directors_(st.director.data()),
         unloading_(part.stabilization_unloading),
         wave_speed_(material_wave_speed(material)),
         c_{E, nu, 5.0 / 6.0 * 0.5 * E / (1.0 + nu), plane_stress_stiffness(E, nu)} {}
 
-  // The corotational geometries of kBlockLanes elements at once (begin: the first lane).
-  void prepare(int e, int begin, int end) {
-    lane_ = (e - begin) % kBlockLanes;
-    if (lane_ == 0) {
-      compute_quad_geometry_block(in_.x.data(), in_.v.data(), conn_, e,
-                                  std::min(kBlockLanes, end - e), in_.dt, geometry_);
-    }
-  }
+  SF_ELEMENT_STAGE void prepare(int e, int begin, int end) { geometry_.prepare(e, begin, end); }
 
   // Membrane: the one-point velocity strain on the mid-step geometry (exact zero for a rigid
   // rotation step); curvature and transverse shear: the change of the director measures from the
   // start to the end of the step, in the mid-step frame. Turns the element's directors by dt
   // omega.
-  StageResult strains(int e, const Quad3& xe, const Quad3& ve, const Quad3& we, Element& el,
-                      SectionStrains& s) {
+  SF_ELEMENT_STAGE StageResult strains(int e, const Quad3& xe, const Quad3& ve, const Quad3& we,
+                                       Element& el, SectionStrains& s) {
     const double dt = in_.dt;
     el.xm = xe - (0.5 * dt) * ve;
     const Quad3 xs = xe - dt * ve;
-    if (!geometry_.mid_ok[lane_]) {
+    el.mid = geometry_.mid();
+    if (!el.mid) {
       return {ElementFailure::Kind::invalid_geometry, "mid-step"};
     }
-    const ShellGeometry& gm = geometry_.mid[lane_];
-    el.mid = &gm;
+    const ShellGeometry& gm = *el.mid;
     el.vl = gm.frame.transpose() * ve;
     const Vec3 d_membrane(gm.b.row(0).dot(el.vl.row(0)), gm.b.row(1).dot(el.vl.row(1)),
                           gm.b.row(1).dot(el.vl.row(0)) + gm.b.row(0).dot(el.vl.row(1)));
@@ -195,9 +188,10 @@ class AssumedStrainQuad {
     return {};
   }
 
-  double mid_area(const Element& el) const { return el.mid->area; }
+  SF_ELEMENT_STAGE double mid_area(const Element& el) const { return el.mid->area; }
 
-  ShearUpdate transverse_shear(int e, double t, const Element& el, ShellState& st) const {
+  SF_ELEMENT_STAGE ShearUpdate transverse_shear(int e, double t, const Element& el,
+                                                ShellState& st) const {
     const Vec2 s_old(st.sxz[e], st.syz[e]);
     const Vec2 s_new = s_old + c_.ks_g * el.inc.shear;
     st.sxz[e] = s_new(0);
@@ -205,24 +199,25 @@ class AssumedStrainQuad {
     return {s_new, t * 0.5 * (s_old + s_new).dot(el.inc.shear)};
   }
 
-  StageResult end_geometry(int /*e*/, const Quad3& /*xe*/, Element& el) const {
-    if (!geometry_.end_ok[lane_]) {
+  SF_ELEMENT_STAGE StageResult end_geometry(int /*e*/, const Quad3& /*xe*/, Element& el) const {
+    el.end = geometry_.end();
+    if (!el.end) {
       return {ElementFailure::Kind::invalid_geometry, "end of step"};
     }
-    el.end = &geometry_.end[lane_];
     return {};
   }
 
-  double time_step(const Quad3& xe, const Element& el) const {
+  SF_ELEMENT_STAGE double time_step(const Quad3& xe, const Element& el) const {
     return quad_time_step(xe, el.end->area, wave_speed_);
   }
 
   // The stabilisation (shell_quad_stabilization.hpp): membrane from the warping-corrected
   // hourglass rates on the mid-step geometry, bending and shear from the director measures. Then
   // the nodal forces and moments on the end-of-step configuration (conjugate to the strains).
-  void forces(int e, double t, const Quad3& xe, const Quad3& /*ve*/, const Quad3& /*we*/,
-              const SectionResult& sr, const ShearUpdate& shear, const Element& el, ShellState& st,
-              double* corners, ExactSum& hourglass_work) const {
+  SF_ELEMENT_STAGE void forces(int e, double t, const Quad3& xe, const Quad3& /*ve*/,
+                               const Quad3& /*we*/, const SectionResult& sr,
+                               const ShearUpdate& shear, const Element& el, ShellState& st,
+                               double* corners, ExactSum& hourglass_work) const {
     const ShellGeometry& gm = *el.mid;
     const double gz_mid = compute_warp(gm, el.xm);
     const Vec2 membrane_hg = in_.dt * compute_membrane_hourglass_rates(gm, gz_mid, el.vl);
@@ -251,13 +246,11 @@ class AssumedStrainQuad {
 
  private:
   const ElementInputs& in_;
-  const int* conn_;
+  QuadGeometryStage geometry_;
   double* directors_;  // -, ShellState::director
   StabilizationUnloading unloading_;
   double wave_speed_;  // mm/s, for the time step
   Constants c_;
-  QuadGeometryBlock geometry_;  // of the kBlockLanes elements holding the current one
-  int lane_ = 0;
 };
 
 }  // namespace

@@ -5,8 +5,8 @@
 #include <cstddef>
 
 #include "element/element_loop.hpp"
+#include "element/element_stages.hpp"
 #include "element/shell_geometry.hpp"
-#include "element/shell_geometry_batch.hpp"
 #include "element/shell_mass.hpp"
 
 namespace sf {
@@ -36,7 +36,7 @@ class BtQuad {
   BtQuad(const ShellPart& part, const ShellMaterial& material, double E, double nu,
          const ElementInputs& in, ShellState& /*st*/)
       : in_(in),
-        conn_(part.quads.data()),
+        geometry_(in, part.quads.data()),
         ks_g_(5.0 / 6.0 * (0.5 * E / (1.0 + nu))),  // shear correction factor 5/6
         c_(plane_stress_wave_speed(E, nu, material.density)),
         plate_(E / (12.0 * (1.0 - nu * nu))),  // D / t^3
@@ -46,25 +46,18 @@ class BtQuad {
         density_(material.density),
         wave_speed_(material_wave_speed(material)) {}
 
-  // The corotational geometries of kBlockLanes elements at once (begin: the first lane).
-  void prepare(int e, int begin, int end) {
-    lane_ = (e - begin) % kBlockLanes;
-    if (lane_ == 0) {
-      compute_quad_geometry_block(in_.x.data(), in_.v.data(), conn_, e,
-                                  std::min(kBlockLanes, end - e), in_.dt, geometry_);
-    }
-  }
+  SF_ELEMENT_STAGE void prepare(int e, int begin, int end) { geometry_.prepare(e, begin, end); }
 
   // Velocity strains on the mid-step configuration (exact zero for a rigid rotation step).
-  StageResult strains(int /*e*/, const Quad3& xe, const Quad3& ve, const Quad3& we, Element& el,
-                      SectionStrains& s) const {
+  SF_ELEMENT_STAGE StageResult strains(int /*e*/, const Quad3& xe, const Quad3& ve, const Quad3& we,
+                                       Element& el, SectionStrains& s) const {
     const double dt = in_.dt;
     el.xm = xe - (0.5 * dt) * ve;
-    if (!geometry_.mid_ok[lane_]) {
+    el.mid = geometry_.mid();
+    if (!el.mid) {
       return {ElementFailure::Kind::invalid_geometry, "mid-step"};
     }
-    const ShellGeometry& gm = geometry_.mid[lane_];
-    el.mid = &gm;
+    const ShellGeometry& gm = *el.mid;
     el.vl = gm.frame.transpose() * ve;
     el.wl = gm.frame.transpose() * we;
     const Row4 bx = gm.b.row(0);
@@ -79,9 +72,10 @@ class BtQuad {
     return {};
   }
 
-  double mid_area(const Element& el) const { return el.mid->area; }
+  SF_ELEMENT_STAGE double mid_area(const Element& el) const { return el.mid->area; }
 
-  ShearUpdate transverse_shear(int e, double t, const Element& el, ShellState& st) const {
+  SF_ELEMENT_STAGE ShearUpdate transverse_shear(int e, double t, const Element& el,
+                                                ShellState& st) const {
     const double dt = in_.dt;
     const double sxz_old = st.sxz[e];
     const double syz_old = st.syz[e];
@@ -93,23 +87,23 @@ class BtQuad {
             t * dt * 0.5 * ((sxz_old + sxz_new) * el.g_xz + (syz_old + syz_new) * el.g_yz)};
   }
 
-  StageResult end_geometry(int /*e*/, const Quad3& /*xe*/, Element& el) const {
-    if (!geometry_.end_ok[lane_]) {
+  SF_ELEMENT_STAGE StageResult end_geometry(int /*e*/, const Quad3& /*xe*/, Element& el) const {
+    el.end = geometry_.end();
+    if (!el.end) {
       return {ElementFailure::Kind::invalid_geometry, "end of step"};
     }
-    el.end = &geometry_.end[lane_];
     return {};
   }
 
-  double time_step(const Quad3& xe, const Element& el) const {
+  SF_ELEMENT_STAGE double time_step(const Quad3& xe, const Element& el) const {
     return quad_time_step(xe, el.end->area, wave_speed_);
   }
 
   // Nodal forces and moments on the end-of-step configuration (conjugate to the strains), and
   // the hourglass control.
-  void forces(int e, double t, const Quad3& xe, const Quad3& ve, const Quad3& we,
-              const SectionResult& sr, const ShearUpdate& shear, const Element& el, ShellState& st,
-              double* corners, ExactSum& hourglass_work) const {
+  SF_ELEMENT_STAGE void forces(int e, double t, const Quad3& xe, const Quad3& ve, const Quad3& we,
+                               const SectionResult& sr, const ShearUpdate& shear, const Element& el,
+                               ShellState& st, double* corners, ExactSum& hourglass_work) const {
     const ShellGeometry& g = *el.end;
     const double q_x = t * shear.stress(0);
     const double q_y = t * shear.stress(1);
@@ -138,9 +132,9 @@ class BtQuad {
   // Hourglass control on the end-of-step geometry (Flanagan & Belytschko 1981): hourglass rates
   // q = gamma . v of the in-plane (vx, vy), out-of-plane (vz) and rotational (thx, thy) modes,
   // nodal forces f_I = Q gamma_I. See docs/element-and-material.md for coefficients.
-  void add_hourglass_forces(int e, double t, const Quad3& xe, const Quad3& ve, const Quad3& we,
-                            const Element& el, ShellState& st, Quad3& fl, Quad3& ml,
-                            ExactSum& hourglass_work) const {
+  SF_ELEMENT_STAGE void add_hourglass_forces(int e, double t, const Quad3& xe, const Quad3& ve,
+                                             const Quad3& we, const Element& el, ShellState& st,
+                                             Quad3& fl, Quad3& ml, ExactSum& hourglass_work) const {
     const ShellGeometry& g = *el.end;
     const ShellGeometry& gm = *el.mid;
     const double a = g.area;
@@ -192,8 +186,8 @@ class BtQuad {
   // a q^2 instead, a mode that alternates sign every step (the highest ones) would be counted as
   // dissipating what the trapezoidal element work does not see, and the internal energy, the rest
   // of that work, would go negative. Returns the power (N mm/s).
-  double viscous_resultants(double t, double a, const double (&q)[kBtModes], double* hs,
-                            double (&res)[kBtModes]) const {
+  SF_ELEMENT_STAGE double viscous_resultants(double t, double a, const double (&q)[kBtModes],
+                                             double* hs, double (&res)[kBtModes]) const {
     const double m_node = 0.25 * density_ * t * a;
     const double i_node = rotational_inertia_factor(a, t) * m_node;
     double coef[kBtModes];
@@ -214,9 +208,9 @@ class BtQuad {
   // Stiffness: Q += k dt q (the hourglass displacement increment), stored in the corotational
   // frame; k scaled by the element's membrane and bending stiffness (|B|^2 = B_x.B_x + B_y.B_y).
   // Power of the mid-step resultant (trapezoidal, as the driver's work).
-  double stiffness_resultants(double t, double a, const Row4& gx, const Row4& gy,
-                              const double (&q)[kBtModes], double* hs,
-                              double (&res)[kBtModes]) const {
+  SF_ELEMENT_STAGE double stiffness_resultants(double t, double a, const Row4& gx, const Row4& gy,
+                                               const double (&q)[kBtModes], double* hs,
+                                               double (&res)[kBtModes]) const {
     const double ab2 = a * (gx.squaredNorm() + gy.squaredNorm());  // 2 for a square
     const double d_plate = plate_ * t * t * t;
     double coef[kBtModes];
@@ -236,17 +230,15 @@ class BtQuad {
   }
 
   const ElementInputs& in_;
-  const int* conn_;
+  QuadGeometryStage geometry_;
   double ks_g_;      // MPa, shear-corrected shear modulus
   double c_;         // mm/s, plate wave speed (viscous hourglass)
   double plate_;     // MPa, D / t^3
   double membrane_;  // MPa, membrane stiffness / t
   double kappa_;     // -, hourglass coefficient
   bool stiffness_form_;
-  double density_;              // tonne/mm^3
-  double wave_speed_;           // mm/s, for the time step
-  QuadGeometryBlock geometry_;  // of the kBlockLanes elements holding the current one
-  int lane_ = 0;
+  double density_;     // tonne/mm^3
+  double wave_speed_;  // mm/s, for the time step
 };
 
 }  // namespace

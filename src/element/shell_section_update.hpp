@@ -56,8 +56,6 @@ struct SectionResult {
   /// N/mm, int (s_new - s_old) . d_eps dz: the stress change's work on the strain increment, the
   /// step's incremental stiffness seen along its own strain increment (elastic: d_eps . C d_eps).
   double stress_change_work = 0.0;
-  /// A point's update failed (non-finite input): the rest is not to be used.
-  MaterialFailure failure;
 };
 
 /// The flow-stress store of the points from `base` on (none if the state has none).
@@ -74,7 +72,8 @@ inline FlowStressCache flow_stress_cache(ShellState& st, std::size_t base) {
 /// update_section(kernel, ...) picks it for a GeneralKernel.
 inline SectionResult update_section(const GeneralKernel& kernel, const SectionConstants& sc, int e,
                                     double t, const Vec3& dt_d_m, const Vec3& dt_d_k,
-                                    const double* material_angle, ShellState& st) {
+                                    const double* material_angle, ShellState& st,
+                                    MaterialFailure& failure) {
   const GeneralPlasticity& law = *kernel.law;
   const MaterialFrame axes = make_material_frame(dt_d_m, dt_d_k, material_angle, e);
   const int n_back = law.kinematic.count;
@@ -98,9 +97,9 @@ inline SectionResult update_section(const GeneralKernel& kernel, const SectionCo
     // The flow stress store (ShellState::flow_stress) spares a hardening evaluation per point.
     const bool stored = cache.stress && cache.at[k] == old.eps_p;
     const GeneralPlasticityUpdate up = law.update_or_fail(
-        old, axes.d_m - z * axes.d_k, r.failure, nullptr,
+        old, axes.d_m - z * axes.d_k, failure, nullptr,
         stored ? cache.stress[k] : std::numeric_limits<double>::quiet_NaN(), kernel.dt);
-    if (r.failure.failed()) {
+    if (failure.failed()) {
       return r;
     }
     if (cache.stress) {
@@ -134,11 +133,13 @@ inline SectionResult update_section(const GeneralKernel& kernel, const SectionCo
 /// material axes (Hill48) work in the element's material frame (material_angle[e], rad, or 0 when
 /// material_angle is null); the stored stress stays in the element frame. The points are updated
 /// as one batch (material/plane_stress_batch.hpp); the resultants are summed bottom to top. A
-/// failed point update is returned in SectionResult::failure (the state is then not to be used).
+/// point update that fails is written to `failure` (nothing else is then to be used), which is
+/// left as it is otherwise.
 template <class Kernel>
 inline SectionResult update_section(const Kernel& kernel, const SectionConstants& sc, int e,
                                     double t, const Vec3& dt_d_m, const Vec3& dt_d_k,
-                                    const double* material_angle, ShellState& st) {
+                                    const double* material_angle, ShellState& st,
+                                    MaterialFailure& failure) {
   constexpr bool material_axes = Kernel::kMaterialAxes;
   // Laws with material axes: components in the material axes (the element frame turned by the
   // element's material angle theta); strains are linear in z, so dt d_m and dt d_k are turned
@@ -172,14 +173,16 @@ inline SectionResult update_section(const Kernel& kernel, const SectionConstants
     }
   }
   PlaneStressUpdate up[kMax];
-  SectionResult r;
+  bool updated;
   if constexpr (material_axes) {
-    r.failure =
-        update_points(kernel, n, law_stress, eps_n, law_d_eps, flow_stress_cache(st, base), up);
+    updated = update_points(kernel, n, law_stress, eps_n, law_d_eps, flow_stress_cache(st, base),
+                            up, failure);
   } else {
-    r.failure = update_points(kernel, n, old_stress, eps_n, d_eps, flow_stress_cache(st, base), up);
+    updated = update_points(kernel, n, old_stress, eps_n, d_eps, flow_stress_cache(st, base), up,
+                            failure);
   }
-  if (r.failure.failed()) {
+  SectionResult r;
+  if (!updated) {
     return r;
   }
   for (int k = 0; k < n; ++k) {

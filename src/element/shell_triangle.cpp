@@ -3,6 +3,7 @@
 #include <cstddef>
 
 #include "element/element_loop.hpp"
+#include "element/element_stages.hpp"
 #include "element/shell_mass.hpp"
 #include "element/shell_triangle_geometry.hpp"
 
@@ -28,13 +29,13 @@ class C0Triangle {
         ks_g_(5.0 / 6.0 * 0.5 * E / (1.0 + nu)),  // shear correction factor 5/6
         wave_speed_(material_wave_speed(material)) {}
 
-  void prepare(int /*e*/, int /*begin*/, int /*end*/) {}
+  SF_ELEMENT_STAGE void prepare(int /*e*/, int /*begin*/, int /*end*/) {}
 
   // Velocity strains on the mid-step configuration (exactly zero for a rigid rotation step: the
   // central-difference velocity is skew there, and every operator below is exact for linear
   // velocity fields and uniform angular velocity).
-  StageResult strains(int /*e*/, const Tri3& xe, const Tri3& ve, const Tri3& we, Element& el,
-                      SectionStrains& s) const {
+  SF_ELEMENT_STAGE StageResult strains(int /*e*/, const Tri3& xe, const Tri3& ve, const Tri3& we,
+                                       Element& el, SectionStrains& s) const {
     const double dt = in_.dt;
     const Tri3 xm = xe - (0.5 * dt) * ve;
     if (!compute_triangle_geometry(xm, el.mid)) {
@@ -55,10 +56,11 @@ class C0Triangle {
     return {};
   }
 
-  double mid_area(const Element& el) const { return el.mid.area; }
+  SF_ELEMENT_STAGE double mid_area(const Element& el) const { return el.mid.area; }
 
   // Elastic, with the Lyly-Stenberg-Vihinen factor t^2 / (t^2 + alpha h^2) on the modulus.
-  ShearUpdate transverse_shear(int e, double t, const Element& el, ShellState& st) const {
+  SF_ELEMENT_STAGE ShearUpdate transverse_shear(int e, double t, const Element& el,
+                                                ShellState& st) const {
     const double dt = in_.dt;
     const double shear_modulus = ks_g_ * triangle_shear_factor(t, el.mid.longest_side2);
     const double sxz_old = st.sxz[e];
@@ -71,24 +73,19 @@ class C0Triangle {
             t * dt * 0.5 * ((sxz_old + sxz_new) * el.g_s(0) + (syz_old + syz_new) * el.g_s(1))};
   }
 
-  StageResult end_geometry(int /*e*/, const Tri3& xe, Element& el) const {
-    if (!compute_triangle_geometry(xe, el.end)) {
-      return {ElementFailure::Kind::invalid_geometry, "end of step"};
-    }
-    if (!(el.end.frame.col(2).dot(el.mid.frame.col(2)) > 0.0)) {
-      return {ElementFailure::Kind::inverted};
-    }
-    return {};
+  SF_ELEMENT_STAGE StageResult end_geometry(int /*e*/, const Tri3& xe, Element& el) const {
+    return triangle_end_geometry(xe, el.mid, el.end);
   }
 
-  double time_step(const Tri3& /*xe*/, const Element& el) const {
+  SF_ELEMENT_STAGE double time_step(const Tri3& /*xe*/, const Element& el) const {
     return triangle_characteristic_length(el.end) / wave_speed_;
   }
 
   // Nodal forces and moments on the end-of-step configuration (the transpose of the strains).
-  void forces(int /*e*/, double t, const Tri3& /*xe*/, const Tri3& /*ve*/, const Tri3& /*we*/,
-              const SectionResult& sr, const ShearUpdate& shear, const Element& el,
-              ShellState& /*st*/, double* corners, ExactSum& /*hourglass_work*/) const {
+  SF_ELEMENT_STAGE void forces(int /*e*/, double t, const Tri3& /*xe*/, const Tri3& /*ve*/,
+                               const Tri3& /*we*/, const SectionResult& sr,
+                               const ShearUpdate& shear, const Element& el, ShellState& /*st*/,
+                               double* corners, ExactSum& /*hourglass_work*/) const {
     const TriangleGeometry& g = el.end;
     const double q_x = t * shear.stress(0);
     const double q_y = t * shear.stress(1);

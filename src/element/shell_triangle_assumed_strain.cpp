@@ -1,6 +1,7 @@
 #include <cstddef>
 
 #include "element/element_loop.hpp"
+#include "element/element_stages.hpp"
 #include "element/shell_directors.hpp"
 #include "element/shell_mass.hpp"
 #include "element/shell_triangle.hpp"
@@ -38,13 +39,13 @@ class AssumedStrainTriangle {
         ks_g_(5.0 / 6.0 * 0.5 * E / (1.0 + nu)),  // shear correction factor 5/6
         wave_speed_(material_wave_speed(material)) {}
 
-  void prepare(int /*e*/, int /*begin*/, int /*end*/) {}
+  SF_ELEMENT_STAGE void prepare(int /*e*/, int /*begin*/, int /*end*/) {}
 
   // Membrane strain from the velocities on the mid-step geometry; curvature and shear from the
   // change of the director measures over the step, in the mid-step frame. Turns the element's
   // directors by dt omega.
-  StageResult strains(int e, const Tri3& xe, const Tri3& ve, const Tri3& we, Element& el,
-                      SectionStrains& s) const {
+  SF_ELEMENT_STAGE StageResult strains(int e, const Tri3& xe, const Tri3& ve, const Tri3& we,
+                                       Element& el, SectionStrains& s) const {
     const double dt = in_.dt;
     const Tri3 xm = xe - (0.5 * dt) * ve;
     const Tri3 xs = xe - dt * ve;
@@ -71,10 +72,11 @@ class AssumedStrainTriangle {
     return {};
   }
 
-  double mid_area(const Element& el) const { return el.mid.area; }
+  SF_ELEMENT_STAGE double mid_area(const Element& el) const { return el.mid.area; }
 
   // Elastic, with the Lyly-Stenberg-Vihinen factor on the modulus.
-  ShearUpdate transverse_shear(int e, double t, const Element& el, ShellState& st) const {
+  SF_ELEMENT_STAGE ShearUpdate transverse_shear(int e, double t, const Element& el,
+                                                ShellState& st) const {
     const double shear_modulus = ks_g_ * triangle_shear_factor(t, el.mid.longest_side2);
     const Vec2 s_old(st.sxz[e], st.syz[e]);
     const Vec2 s_new = s_old + shear_modulus * el.d_shear;
@@ -83,24 +85,19 @@ class AssumedStrainTriangle {
     return {s_new, t * 0.5 * (s_old + s_new).dot(el.d_shear)};
   }
 
-  StageResult end_geometry(int /*e*/, const Tri3& xe, Element& el) const {
-    if (!compute_triangle_geometry(xe, el.end)) {
-      return {ElementFailure::Kind::invalid_geometry, "end of step"};
-    }
-    if (!(el.end.frame.col(2).dot(el.mid.frame.col(2)) > 0.0)) {
-      return {ElementFailure::Kind::inverted};
-    }
-    return {};
+  SF_ELEMENT_STAGE StageResult end_geometry(int /*e*/, const Tri3& xe, Element& el) const {
+    return triangle_end_geometry(xe, el.mid, el.end);
   }
 
-  double time_step(const Tri3& /*xe*/, const Element& el) const {
+  SF_ELEMENT_STAGE double time_step(const Tri3& /*xe*/, const Element& el) const {
     return triangle_characteristic_length(el.end) / wave_speed_;
   }
 
   // Nodal forces and moments on the end-of-step configuration (conjugate to the strains).
-  void forces(int /*e*/, double t, const Tri3& xe, const Tri3& /*ve*/, const Tri3& /*we*/,
-              const SectionResult& sr, const ShearUpdate& shear, const Element& el,
-              ShellState& /*st*/, double* corners, ExactSum& /*hourglass_work*/) const {
+  SF_ELEMENT_STAGE void forces(int /*e*/, double t, const Tri3& xe, const Tri3& /*ve*/,
+                               const Tri3& /*we*/, const SectionResult& sr,
+                               const ShearUpdate& shear, const Element& el, ShellState& /*st*/,
+                               double* corners, ExactSum& /*hourglass_work*/) const {
     const TriangleGeometry& g = el.end;
     const double a = g.area;
     Tri3 fl;

@@ -28,8 +28,11 @@ double plane_stress_wave_speed(double E, double nu, double rho) {
 
 PlaneStressUpdate ElasticPlaneStress::update(const State& old, const Vec3& d_strain) const {
   PlaneStressUpdate up;
-  throw_if_failed(update_points(ElasticKernel(*this), 1, &old.stress, &old.eps_p, &d_strain,
-                                FlowStressCache{}, &up));
+  MaterialFailure failure;
+  if (!update_points(ElasticKernel(*this), 1, &old.stress, &old.eps_p, &d_strain, FlowStressCache{},
+                     &up, failure)) {
+    throw_if_failed(failure);
+  }
   return up;
 }
 
@@ -37,8 +40,11 @@ PlaneStressUpdate ElasticPlaneStress::update(const State& old, const Vec3& d_str
 // update gives the same bits.
 PlaneStressUpdate J2PlaneStress::update(const State& old, const Vec3& d_strain) const {
   PlaneStressUpdate up;
-  throw_if_failed(update_points(J2Kernel(*this), 1, &old.stress, &old.eps_p, &d_strain,
-                                FlowStressCache{}, &up));
+  MaterialFailure failure;
+  if (!update_points(J2Kernel(*this), 1, &old.stress, &old.eps_p, &d_strain, FlowStressCache{}, &up,
+                     failure)) {
+    throw_if_failed(failure);
+  }
   return up;
 }
 
@@ -57,8 +63,11 @@ double hill48_equivalent_stress(const Hill48Coefficients& c, const Vec3& s) {
 
 PlaneStressUpdate Hill48PlaneStress::update(const State& old, const Vec3& d_strain) const {
   PlaneStressUpdate up;
-  throw_if_failed(update_points(Hill48Kernel(*this), 1, &old.stress, &old.eps_p, &d_strain,
-                                FlowStressCache{}, &up));
+  MaterialFailure failure;
+  if (!update_points(Hill48Kernel(*this), 1, &old.stress, &old.eps_p, &d_strain, FlowStressCache{},
+                     &up, failure)) {
+    throw_if_failed(failure);
+  }
   return up;
 }
 

@@ -41,10 +41,9 @@ inline FlowStress flow_stress_from(const Law& law, double eps, double stress) {
 }
 
 template <class Kernel, class Law>
-inline MaterialFailure update_points_with(const Kernel& k, const Law& law, int n,
-                                          const Vec3* old_stress, const double* eps_n,
-                                          const Vec3* d_strain, FlowStressCache cache,
-                                          PlaneStressUpdate* out) {
+inline bool update_points_with(const Kernel& k, const Law& law, int n, const Vec3* old_stress,
+                               const double* eps_n, const Vec3* d_strain, FlowStressCache cache,
+                               PlaneStressUpdate* out, MaterialFailure& failure) {
   ModalReturnBatch b;
   b.n = 0;
   int point[kMaxReturnLanes];
@@ -53,7 +52,8 @@ inline MaterialFailure update_points_with(const Kernel& k, const Law& law, int n
     const Vec3 tr = elastic_trial(k.E, k.nu, old_stress[p], d_strain[p]);
     const double measure = k.measure(tr);  // squared equivalent stress
     if (!std::isfinite(measure)) {
-      return {MaterialFailure::Kind::non_finite_trial_stress, Kernel::kName};
+      failure = {MaterialFailure::Kind::non_finite_trial_stress, Kernel::kName};
+      return false;
     }
     const bool stored = cache.stress && cache.at[p] == eps_n[p];
     FlowStress h0 = stored ? FlowStress{cache.stress[p], 0.0} : law.evaluate(eps_n[p]);
@@ -84,10 +84,11 @@ inline MaterialFailure update_points_with(const Kernel& k, const Law& law, int n
     trial[l] = tr;
   }
   if (b.n == 0) {
-    return {};
+    return true;
   }
   if (const int l = solve_modal_return<Kernel::kModes, Law>(b, k.lam, law); l >= 0) {
-    return {MaterialFailure::Kind::return_not_converged, Kernel::kName, {b.phi_tr[l]}};
+    failure = {MaterialFailure::Kind::return_not_converged, Kernel::kName, {b.phi_tr[l]}};
+    return false;
   }
   for (int l = 0; l < b.n; ++l) {
     const int p = point[l];
@@ -102,36 +103,39 @@ inline MaterialFailure update_points_with(const Kernel& k, const Law& law, int n
       cache.at[p] = b.eps[l];
     }
   }
-  return {};
+  return true;
 }
 
 }  // namespace detail
 
 /// Updates n points (n <= kMaxReturnLanes) for the strain increments d_strain[p] = (d_exx, d_eyy,
-/// d_gxy) from old_stress[p] and plastic strain eps_n[p]; results in out[p]. Returns the failure
-/// of a return mapping (non-finite input), after which out is not to be used.
+/// d_gxy) from old_stress[p] and plastic strain eps_n[p]; results in out[p]. Returns false when a
+/// return mapping fails (non-finite input), with `failure` saying how; out is then not to be
+/// used.
 template <class Kernel>
-[[nodiscard]] inline MaterialFailure update_points(const Kernel& k, int n, const Vec3* old_stress,
-                                                   const double* eps_n, const Vec3* d_strain,
-                                                   FlowStressCache cache, PlaneStressUpdate* out) {
+[[nodiscard]] inline bool update_points(const Kernel& k, int n, const Vec3* old_stress,
+                                        const double* eps_n, const Vec3* d_strain,
+                                        FlowStressCache cache, PlaneStressUpdate* out,
+                                        MaterialFailure& failure) {
   return std::visit(
       [&](const auto& law) {
-        return detail::update_points_with(k, law, n, old_stress, eps_n, d_strain, cache, out);
+        return detail::update_points_with(k, law, n, old_stress, eps_n, d_strain, cache, out,
+                                          failure);
       },
       *k.hardening);
 }
 
 /// Linear elasticity: the predictor, no check.
-[[nodiscard]] inline MaterialFailure update_points(const ElasticKernel& k, int n,
-                                                   const Vec3* old_stress, const double* eps_n,
-                                                   const Vec3* d_strain, FlowStressCache /*cache*/,
-                                                   PlaneStressUpdate* out) {
+[[nodiscard]] inline bool update_points(const ElasticKernel& k, int n, const Vec3* old_stress,
+                                        const double* eps_n, const Vec3* d_strain,
+                                        FlowStressCache /*cache*/, PlaneStressUpdate* out,
+                                        MaterialFailure& /*failure*/) {
   for (int p = 0; p < n; ++p) {
     const Vec3 s = elastic_trial(k.E, k.nu, old_stress[p], d_strain[p]);
     out[p] = {s, eps_n[p], through_thickness_increment(k.E, k.nu, d_strain[p], old_stress[p], s),
               false};
   }
-  return {};
+  return true;
 }
 
 }  // namespace sf
