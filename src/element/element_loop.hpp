@@ -25,7 +25,8 @@
 //   ShearUpdate transverse_shear(e, t, Element&, ShellState&)
 //   StageResult end_geometry(e, xe, Element&)
 //   double time_step(xe, const Element&)                 s
-//   void forces(e, t, xe, ve, we, sr, shear, Element&, ShellState&, corners, hourglass_work)
+//   void forces(e, t, xe, ve, we, strains, sr, shear, Element&, ShellState&, corners,
+//               hourglass_work)
 // with t the thickness at the start of the step (mm).
 #include <cmath>
 #include <variant>
@@ -136,7 +137,7 @@ void run_element_loop(Formulation& f, const Kernel& kernel, const LoopContext& c
     if (out.element_dt) {
       out.element_dt[e] = f.time_step(xe, el);  // the next step's bound, at x
     }
-    f.forces(e, t, xe, ve, we, sr, shear, el, st,
+    f.forces(e, t, xe, ve, we, strains, sr, shear, el, st,
              out.corners + kCornerWidth * static_cast<std::ptrdiff_t>(c.block.corner_slot(e, 0)),
              out.hourglass_work);
   }

@@ -25,14 +25,19 @@ class QuadGeometryStage {
     }
   }
 
-  /// The element's geometry at x - dt/2 v (the strains'), or null where it is inverted,
+  /// The element's geometry at x - dt/2 v (the strains') into `g`; fails where it is inverted,
   /// collapsed or not finite.
-  SF_ELEMENT_STAGE const ShellGeometry* mid() const {
-    return block_.mid_ok[lane_] ? &block_.mid[lane_] : nullptr;
+  SF_ELEMENT_STAGE StageResult mid(const ShellGeometry*& g) const {
+    g = &block_.mid[lane_];
+    return block_.mid_ok[lane_] ? StageResult{}
+                                : StageResult{ElementFailure::Kind::invalid_geometry, "mid-step"};
   }
   /// The same at x (the forces').
-  SF_ELEMENT_STAGE const ShellGeometry* end() const {
-    return block_.end_ok[lane_] ? &block_.end[lane_] : nullptr;
+  SF_ELEMENT_STAGE StageResult end(const ShellGeometry*& g) const {
+    g = &block_.end[lane_];
+    return block_.end_ok[lane_]
+               ? StageResult{}
+               : StageResult{ElementFailure::Kind::invalid_geometry, "end of step"};
   }
 
  private:

@@ -144,7 +144,6 @@ class AssumedStrainQuad {
     QuadBasis basis_mid;
     CartesianMap map_mid;
     BendingShearIncrements inc;
-    Vec3 dt_d_membrane;  // -, the membrane strain increment
   };
 
   AssumedStrainQuad(const ShellPart& part, const ShellMaterial& material, double E, double nu,
@@ -167,9 +166,8 @@ class AssumedStrainQuad {
     const double dt = in_.dt;
     el.xm = xe - (0.5 * dt) * ve;
     const Quad3 xs = xe - dt * ve;
-    el.mid = geometry_.mid();
-    if (!el.mid) {
-      return {ElementFailure::Kind::invalid_geometry, "mid-step"};
+    if (const StageResult r = geometry_.mid(el.mid); !r.ok()) {
+      return r;
     }
     const ShellGeometry& gm = *el.mid;
     el.vl = gm.frame.transpose() * ve;
@@ -182,8 +180,7 @@ class AssumedStrainQuad {
     el.basis_mid = compute_quad_basis(el.xm);
     el.map_mid = make_cartesian_map(el.basis_mid, gm.frame);
     el.inc = compute_increments(xs, xe, el.d, el.basis_mid, el.map_mid);
-    el.dt_d_membrane = dt * d_membrane;
-    s.membrane = el.dt_d_membrane;
+    s.membrane = dt * d_membrane;
     s.curvature = el.inc.curvature;
     return {};
   }
@@ -200,11 +197,7 @@ class AssumedStrainQuad {
   }
 
   SF_ELEMENT_STAGE StageResult end_geometry(int /*e*/, const Quad3& /*xe*/, Element& el) const {
-    el.end = geometry_.end();
-    if (!el.end) {
-      return {ElementFailure::Kind::invalid_geometry, "end of step"};
-    }
-    return {};
+    return geometry_.end(el.end);
   }
 
   SF_ELEMENT_STAGE double time_step(const Quad3& xe, const Element& el) const {
@@ -215,16 +208,17 @@ class AssumedStrainQuad {
   // hourglass rates on the mid-step geometry, bending and shear from the director measures. Then
   // the nodal forces and moments on the end-of-step configuration (conjugate to the strains).
   SF_ELEMENT_STAGE void forces(int e, double t, const Quad3& xe, const Quad3& /*ve*/,
-                               const Quad3& /*we*/, const SectionResult& sr,
-                               const ShearUpdate& shear, const Element& el, ShellState& st,
-                               double* corners, ExactSum& hourglass_work) const {
+                               const Quad3& /*we*/, const SectionStrains& strains,
+                               const SectionResult& sr, const ShearUpdate& shear, const Element& el,
+                               ShellState& st, double* corners, ExactSum& hourglass_work) const {
     const ShellGeometry& gm = *el.mid;
     const double gz_mid = compute_warp(gm, el.xm);
     const Vec2 membrane_hg = in_.dt * compute_membrane_hourglass_rates(gm, gz_mid, el.vl);
     const StabilizationStiffness k = compute_stabilization_stiffness(
         el.basis_mid, el.map_mid, gm.frame, c_.young, c_.poisson, t, c_.ks_g);
     double* hs = st.hourglass.data() + kHourglassModes * static_cast<std::ptrdiff_t>(e);
-    const double ratio = incremental_stiffness_ratio(c_, t, el.dt_d_membrane, el.inc.curvature, sr);
+    const double ratio =
+        incremental_stiffness_ratio(c_, t, strains.membrane, strains.curvature, sr);
     hourglass_work.add(update_stabilization(k, unloading_, ratio, membrane_hg, el.inc.hourglass,
                                             el.inc.shear_linear, hs));
 

@@ -53,9 +53,8 @@ class BtQuad {
                                        Element& el, SectionStrains& s) const {
     const double dt = in_.dt;
     el.xm = xe - (0.5 * dt) * ve;
-    el.mid = geometry_.mid();
-    if (!el.mid) {
-      return {ElementFailure::Kind::invalid_geometry, "mid-step"};
+    if (const StageResult r = geometry_.mid(el.mid); !r.ok()) {
+      return r;
     }
     const ShellGeometry& gm = *el.mid;
     el.vl = gm.frame.transpose() * ve;
@@ -88,11 +87,7 @@ class BtQuad {
   }
 
   SF_ELEMENT_STAGE StageResult end_geometry(int /*e*/, const Quad3& /*xe*/, Element& el) const {
-    el.end = geometry_.end();
-    if (!el.end) {
-      return {ElementFailure::Kind::invalid_geometry, "end of step"};
-    }
-    return {};
+    return geometry_.end(el.end);
   }
 
   SF_ELEMENT_STAGE double time_step(const Quad3& xe, const Element& el) const {
@@ -102,8 +97,9 @@ class BtQuad {
   // Nodal forces and moments on the end-of-step configuration (conjugate to the strains), and
   // the hourglass control.
   SF_ELEMENT_STAGE void forces(int e, double t, const Quad3& xe, const Quad3& ve, const Quad3& we,
-                               const SectionResult& sr, const ShearUpdate& shear, const Element& el,
-                               ShellState& st, double* corners, ExactSum& hourglass_work) const {
+                               const SectionStrains& /*strains*/, const SectionResult& sr,
+                               const ShearUpdate& shear, const Element& el, ShellState& st,
+                               double* corners, ExactSum& hourglass_work) const {
     const ShellGeometry& g = *el.end;
     const double q_x = t * shear.stress(0);
     const double q_y = t * shear.stress(1);

@@ -83,9 +83,10 @@ class C0Triangle {
 
   // Nodal forces and moments on the end-of-step configuration (the transpose of the strains).
   SF_ELEMENT_STAGE void forces(int /*e*/, double t, const Tri3& /*xe*/, const Tri3& /*ve*/,
-                               const Tri3& /*we*/, const SectionResult& sr,
-                               const ShearUpdate& shear, const Element& el, ShellState& /*st*/,
-                               double* corners, ExactSum& /*hourglass_work*/) const {
+                               const Tri3& /*we*/, const SectionStrains& /*strains*/,
+                               const SectionResult& sr, const ShearUpdate& shear, const Element& el,
+                               ShellState& /*st*/, double* corners,
+                               ExactSum& /*hourglass_work*/) const {
     const TriangleGeometry& g = el.end;
     const double q_x = t * shear.stress(0);
     const double q_y = t * shear.stress(1);

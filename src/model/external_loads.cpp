@@ -47,8 +47,8 @@ void add_pressure_loads(const Model& model, double time, const Matrix3X& x, Matr
   for (const PressureLoad& load : model.loads.pressures) {
     const double p = load.scale.value(time) * load.pressure;
     for (int e : load.elements) {
-      const Vec3 f = pressure_node_force(part, x, e, p);
       const ElementBlock& block = blocks.of(e);
+      const Vec3 f = pressure_node_force(block, x, e, p);
       const int* nodes = block.element_nodes(e);
       for (int a = 0; a < block.nodes_per_element(); ++a) {
         f_ext.col(nodes[a]) += f;
@@ -57,14 +57,12 @@ void add_pressure_loads(const Model& model, double time, const Matrix3X& x, Matr
   }
 }
 
-Vec3 pressure_node_force(const ShellPart& part, const Matrix3X& x, int e, double p) {
-  const Vec3 area = element_vector_area(part, x, e);
-  return block_of(part, e).shape == ElementShape::quad ? Vec3((-0.25 * p) * area)
-                                                       : Vec3((-p / 3.0) * area);
+Vec3 pressure_node_force(const ElementBlock& block, const Matrix3X& x, int e, double p) {
+  const Vec3 area = element_vector_area(block, x, e);
+  return block.shape == ElementShape::quad ? Vec3((-0.25 * p) * area) : Vec3((-p / 3.0) * area);
 }
 
-Vec3 element_vector_area(const ShellPart& part, const Matrix3X& x, int e) {
-  const ElementBlock block = block_of(part, e);
+Vec3 element_vector_area(const ElementBlock& block, const Matrix3X& x, int e) {
   const int* n = block.element_nodes(e);
   if (block.shape == ElementShape::quad) {
     return 0.5 * (x.col(n[2]) - x.col(n[0])).cross(x.col(n[3]) - x.col(n[1]));
@@ -77,8 +75,9 @@ PressureDirection compute_pressure_direction(const Model& model, const PressureL
                                              const Matrix3X& x) {
   PressureDirection d;
   Vec3 vector_area = Vec3::Zero();
+  const ElementBlocks blocks = element_blocks(model.blank.part);
   for (int e : load.elements) {
-    const Vec3 a = element_vector_area(model.blank.part, x, e);
+    const Vec3 a = element_vector_area(blocks.of(e), x, e);
     vector_area += a;
     d.area += a.norm();
   }

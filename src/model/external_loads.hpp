@@ -4,6 +4,7 @@
 // analysis (which runs its load curves over a pseudo-time).
 #include <span>
 
+#include "element/element_block.hpp"
 #include "model/model.hpp"
 
 namespace sf {
@@ -23,14 +24,14 @@ void compute_nodal_loads(const Model& model, double time, Matrix3X& f_ext, Matri
 /// turn, its elements in ascending order, each element's share to its nodes.
 void add_pressure_loads(const Model& model, double time, const Matrix3X& x, Matrix3X& f_ext);
 
-/// The force (N) pressure p (MPa) puts on each node of blank element e on the coordinates x: its
-/// vector area shared equally by its nodes, pushing the top face along -normal.
-Vec3 pressure_node_force(const ShellPart& part, const Matrix3X& x, int e, double p);
+/// The force (N) pressure p (MPa) puts on each node of blank element e (of `block`) on the
+/// coordinates x: its vector area shared equally by its nodes, pushing the top face along -normal.
+Vec3 pressure_node_force(const ElementBlock& block, const Matrix3X& x, int e, double p);
 
-/// The vector area (mm^2) of blank element e (quads, then triangles, as in ShellPart) on the
-/// coordinates x: along the element's normal, which points to its top side (the +normal side a
-/// pressure acts on). Quad: (x3 - x1) x (x4 - x2) / 2; triangle: (x2 - x1) x (x3 - x1) / 2.
-Vec3 element_vector_area(const ShellPart& part, const Matrix3X& x, int e);
+/// The vector area (mm^2) of blank element e (of `block`) on the coordinates x: along the
+/// element's normal, which points to its top side (the +normal side a pressure acts on). Quad:
+/// (x3 - x1) x (x4 - x2) / 2; triangle: (x2 - x1) x (x3 - x1) / 2.
+Vec3 element_vector_area(const ElementBlock& block, const Matrix3X& x, int e);
 
 /// Where a pressure load pushes, on the coordinates x: for users to check that their elements'
 /// top side is the one they meant.

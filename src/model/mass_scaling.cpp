@@ -27,10 +27,9 @@ namespace {
 
 // Element e's density raised to the target if its step is below it; its step after, the mass
 // it added and its nodes' shares written to its corner slots (0 if it added none).
-void raise_element_density(const ShellPart& part, int e, MassScaling& scaling,
+void raise_element_density(const ElementBlock& block, int e, MassScaling& scaling,
                            DensityRaise& raise) {
   const auto ei = static_cast<std::size_t>(e);
-  const ElementBlock block = block_of(part, e);
   const int n_nodes = block.nodes_per_element();  // the lumped mass's equal shares
   const int first_slot = block.corner_slot(e, 0);
   double* corners =
@@ -65,16 +64,19 @@ void raise_element_density(const ShellPart& part, int e, MassScaling& scaling,
 DensityRaise raise_element_densities(const ShellPart& part, std::span<const ElementRun> runs,
                                      MassScaling& scaling) {
   DensityRaise raise;
+  const ElementBlocks blocks = element_blocks(part);
   if (runs.empty()) {
-    const int n = element_count(part);
-    for (int e = 0; e < n; ++e) {
-      raise_element_density(part, e, scaling, raise);
+    for (const ElementBlock& block : blocks) {
+      for (int e = block.first; e < block.end(); ++e) {
+        raise_element_density(block, e, scaling, raise);
+      }
     }
     return raise;
   }
-  for (const ElementRun& run : runs) {
+  for (const ElementRun& run : runs) {  // each run within one block (element_runs)
+    const ElementBlock& block = blocks.of(run.begin);
     for (int e = run.begin; e < run.end; ++e) {
-      raise_element_density(part, e, scaling, raise);
+      raise_element_density(block, e, scaling, raise);
     }
   }
   return raise;

@@ -288,8 +288,8 @@ void add_pressure_forces(const Model& model, SolutionState& s) {
       for (int e = run.begin; e < run.end; ++e) {
         next = std::lower_bound(next, load.elements.end(), e);
         const bool carries = next != load.elements.end() && *next == e;
-        const Vec3 f = carries ? pressure_node_force(part, s.x, e, p) : Vec3::Zero();
         const ElementBlock& block = blocks.of(e);
+        const Vec3 f = carries ? pressure_node_force(block, s.x, e, p) : Vec3::Zero();
         const int n_nodes = block.nodes_per_element();
         const int slot = block.corner_slot(e, 0);
         double* c =

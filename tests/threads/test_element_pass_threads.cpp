@@ -54,8 +54,10 @@ PassRun run_passes(const ShellPart& part, const Matrix3X& x0, int threads,
       if (broken && step == 1) {
         x = *broken;
       }
-      for (const int e : poisoned&& step == 1 ? *poisoned : std::vector<int>{}) {
-        st.sxx[static_cast<std::size_t>(5 * e + 2)] = std::nan("");
+      if (poisoned && step == 1) {
+        for (const int e : *poisoned) {
+          st.sxx[static_cast<std::size_t>(5 * e + 2)] = std::nan("");
+        }
       }
       run.works = run_element_pass(part, ElementInputs{x, v, w, dt}, st, pass, run.element_dt);
     }
