@@ -11,41 +11,32 @@ namespace {
 constexpr int kMinParallelNodes = 1024;
 }  // namespace
 
-NodeCorners build_node_corners(std::span<const int> quads, std::span<const int> triangles,
-                               int n_nodes) {
+NodeCorners build_node_corners(const ElementBlocks& blocks, int n_nodes) {
   NodeCorners list;
-  list.n_quads = static_cast<int>(quads.size() / 4);
   list.offsets.assign(static_cast<std::size_t>(n_nodes) + 1, 0);
-  auto node_of_slot = [&](std::size_t slot) {
-    return slot < quads.size() ? quads[slot] : triangles[slot - quads.size()];
-  };
-  const std::size_t n_slots = quads.size() + triangles.size();
-  for (std::size_t slot = 0; slot < n_slots; ++slot) {
-    const int node = node_of_slot(slot);
-    if (node < 0 || node >= n_nodes) {
-      throw std::invalid_argument("build_node_corners: element node " + std::to_string(node) +
-                                  " outside [0, " + std::to_string(n_nodes) + ")");
+  for (const ElementBlock& block : blocks) {
+    for (int slot = block.first_slot; slot < block.slot_end(); ++slot) {
+      const int node = block.node_of_slot(slot);
+      if (node < 0 || node >= n_nodes) {
+        throw std::invalid_argument("build_node_corners: element node " + std::to_string(node) +
+                                    " outside [0, " + std::to_string(n_nodes) + ")");
+      }
+      ++list.offsets[static_cast<std::size_t>(node) + 1];
     }
-    ++list.offsets[static_cast<std::size_t>(node) + 1];
   }
   for (int i = 0; i < n_nodes; ++i) {
     list.offsets[static_cast<std::size_t>(i) + 1] += list.offsets[static_cast<std::size_t>(i)];
   }
   // Filled in ascending slot order, so each node's slots come out ascending.
   std::vector<int> next(list.offsets.begin(), list.offsets.end() - 1);
-  list.slots.resize(n_slots);
-  for (std::size_t slot = 0; slot < n_slots; ++slot) {
-    list.slots[static_cast<std::size_t>(next[static_cast<std::size_t>(node_of_slot(slot))]++)] =
-        static_cast<int>(slot);
+  list.slots.resize(static_cast<std::size_t>(blocks.corner_count()));
+  for (const ElementBlock& block : blocks) {
+    for (int slot = block.first_slot; slot < block.slot_end(); ++slot) {
+      const auto node = static_cast<std::size_t>(block.node_of_slot(slot));
+      list.slots[static_cast<std::size_t>(next[node]++)] = slot;
+    }
   }
   return list;
-}
-
-NodeCorners build_node_corners(const ShellPart& part, int n_nodes) {
-  return build_node_corners(
-      std::span<const int>(part.quads.data(), static_cast<std::size_t>(part.quads.size())),
-      std::span<const int>(part.triangles.data(), static_cast<std::size_t>(part.triangles.size())),
-      n_nodes);
 }
 
 void gather_corner_forces(const NodeCorners& nodes, std::span<const double> corners, Matrix3X& f,
@@ -107,15 +98,17 @@ void add_flagged_corner_forces(const NodeCorners& nodes, std::span<const double>
   }
 }
 
-void gather_half_thickness(const NodeCorners& nodes, std::span<const double> thickness,
-                           const VectorX& inverse_element_count, VectorX& half_thickness) {
+void gather_half_thickness(const ElementBlocks& blocks, const NodeCorners& nodes,
+                           std::span<const double> thickness, const VectorX& inverse_element_count,
+                           VectorX& half_thickness) {
   const int n = nodes.node_count();
 #pragma omp parallel for schedule(static) if (n >= kMinParallelNodes)
   for (int i = 0; i < n; ++i) {
     double sum = 0.0;
     for (int j = nodes.offsets[static_cast<std::size_t>(i)];
          j < nodes.offsets[static_cast<std::size_t>(i) + 1]; ++j) {
-      const int e = element_of_corner(nodes.n_quads, nodes.slots[static_cast<std::size_t>(j)]);
+      const int slot = nodes.slots[static_cast<std::size_t>(j)];
+      const int e = blocks.of_slot(slot).element_of_slot(slot);
       sum += 0.5 * thickness[static_cast<std::size_t>(e)];
     }
     half_thickness[i] = sum * inverse_element_count[i];

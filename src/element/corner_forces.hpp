@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "element/element_block.hpp"
 #include "element/shell_part.hpp"
 
 namespace sf {
@@ -15,22 +16,9 @@ namespace sf {
 /// Values per corner slot: force (N) and moment (N mm), global components.
 inline constexpr int kCornerWidth = 6;
 
-/// Corner slot of corner a of quad e: 4 e + a; of triangle k (element n_quads + k):
-/// 4 n_quads + 3 k + a.
-inline int quad_corner_slot(int e, int a) {
-  return 4 * e + a;
-}
-inline int triangle_corner_slot(int n_quads, int k, int a) {
-  return 4 * n_quads + 3 * k + a;
-}
+/// Corner slots in all: each element's corners, block after block (ElementBlock::corner_slot).
 inline int corner_count(const ShellPart& part) {
-  return static_cast<int>(4 * part.quads.cols() + 3 * part.triangles.cols());
-}
-
-/// The element a corner slot belongs to (its index in the part's state: quads first).
-inline int element_of_corner(int n_quads, int slot) {
-  const int quad_slots = 4 * n_quads;
-  return slot < quad_slots ? slot / 4 : n_quads + (slot - quad_slots) / 3;
+  return element_blocks(part).corner_count();
 }
 
 /// Writes an element's N corners, forces f (N) and moments m (N mm) in global components, to its
@@ -54,18 +42,17 @@ inline void store_corners(const Eigen::Matrix<double, 3, N>& f,
 struct NodeCorners {
   std::vector<int> offsets;
   std::vector<int> slots;
-  int n_quads = 0;
 
   int node_count() const { return offsets.empty() ? 0 : static_cast<int>(offsets.size()) - 1; }
 };
 
-/// The lists of a blank given as its connectivity: quads (4 node ids per quad) then triangles
-/// (3 per triangle), 0-based, so that slot s's node is entry s of the quads followed by the
-/// triangles. Throws std::invalid_argument when a node id is outside [0, n_nodes).
-NodeCorners build_node_corners(std::span<const int> quads, std::span<const int> triangles,
-                               int n_nodes);
-/// The same for a part (ShellPart::quads and triangles).
-NodeCorners build_node_corners(const ShellPart& part, int n_nodes);
+/// The lists of a blank given as its element blocks. Throws std::invalid_argument when a node id
+/// is outside [0, n_nodes).
+NodeCorners build_node_corners(const ElementBlocks& blocks, int n_nodes);
+/// The same for a part (its blocks).
+inline NodeCorners build_node_corners(const ShellPart& part, int n_nodes) {
+  return build_node_corners(element_blocks(part), n_nodes);
+}
 
 /// f.col(i) and m.col(i) = the sum of node i's corners' forces and moments (0 + c1 + c2 + ...,
 /// in slot order) from corners (kCornerWidth per slot). Threads share out the nodes.
@@ -95,7 +82,8 @@ void add_flagged_corner_forces(const NodeCorners& nodes, std::span<const double>
 
 /// half_thickness[i] = (sum over node i's corners of half their element's thickness) *
 /// inverse_element_count[i]: the mean half thickness around the node (mm), the contact offset.
-void gather_half_thickness(const NodeCorners& nodes, std::span<const double> thickness,
-                           const VectorX& inverse_element_count, VectorX& half_thickness);
+void gather_half_thickness(const ElementBlocks& blocks, const NodeCorners& nodes,
+                           std::span<const double> thickness, const VectorX& inverse_element_count,
+                           VectorX& half_thickness);
 
 }  // namespace sf

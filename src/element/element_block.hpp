@@ -6,6 +6,7 @@
 // (element_loop.hpp) runs one block at a time.
 #include <array>
 #include <cstddef>
+#include <span>
 
 #include "element/shell_part.hpp"
 
@@ -33,6 +34,13 @@ struct ElementBlock {
   }
   /// Corner slot of corner a of state element e.
   int corner_slot(int e, int a) const { return first_slot + nodes_per_element() * local(e) + a; }
+  /// One past the corner slot of its last element's last corner.
+  int slot_end() const { return first_slot + nodes_per_element() * count; }
+  bool holds_slot(int slot) const { return slot >= first_slot && slot < slot_end(); }
+  /// The state element of one of its corner slots.
+  int element_of_slot(int slot) const { return first + (slot - first_slot) / nodes_per_element(); }
+  /// The node of one of its corner slots.
+  int node_of_slot(int slot) const { return nodes[slot - first_slot]; }
 };
 
 /// A part's blocks in state order (empty shapes left out): no allocation, so the time loop may
@@ -47,12 +55,22 @@ struct ElementBlocks {
   const ElementBlock& of(int e) const {
     return size > 1 && block[1].holds(e) ? block[1] : block[0];
   }
+  /// The block holding corner slot s (which must be one of the part's).
+  const ElementBlock& of_slot(int s) const {
+    return size > 1 && block[1].holds_slot(s) ? block[1] : block[0];
+  }
+  int element_count() const { return size == 0 ? 0 : block[size - 1].end(); }
+  int corner_count() const { return size == 0 ? 0 : block[size - 1].slot_end(); }
 };
 
 /// The blocks of a mesh given as its connectivity (a part's, a formed part's, a blank mesh's):
 /// its quads, then its triangles, which is how every state array, corner slot and output cell
 /// numbers them.
 ElementBlocks element_blocks(const QuadConn& quads, const TriConn& triangles);
+/// The same for connectivity given as flat node ids: 4 per quad, then 3 per triangle (views:
+/// the blocks point into them). A trailing partial element (a size not a multiple of 4 or 3) is
+/// left out; check such input before.
+ElementBlocks element_blocks(std::span<const int> quads, std::span<const int> triangles);
 /// The part's blocks: its quads, then its triangles.
 inline ElementBlocks element_blocks(const ShellPart& part) {
   return element_blocks(part.quads, part.triangles);

@@ -127,11 +127,11 @@ void run_share(const ShellPart& part, const ElementInputs& in, ShellState& state
 
 }  // namespace
 
-std::vector<ElementRun> element_runs(std::span<const int> elements, int n_quads) {
+std::vector<ElementRun> element_runs(std::span<const int> elements, const ElementBlocks& blocks) {
   std::vector<ElementRun> runs;
   for (const int e : elements) {
-    if (!runs.empty() && runs.back().end == e && e != n_quads) {
-      runs.back().end = e + 1;  // consecutive, and not the first triangle after the last quad
+    if (!runs.empty() && runs.back().end == e && blocks.of(e).first != e) {
+      runs.back().end = e + 1;  // consecutive, and not the first element of the next block
     } else {
       runs.push_back({e, e + 1});
     }

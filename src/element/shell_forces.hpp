@@ -27,16 +27,17 @@ struct ShellForceResult {
                                ///< the points' d_plastic_work on the same quadrature
 };
 
-/// Consecutive elements [begin, end) by state index (quads first, then triangles): a piece of a
-/// rank's share of the blank (parallel/rank_plan.hpp); a pass over all elements is one run.
+/// Consecutive elements [begin, end) by state index, all in one element block: a piece of a
+/// rank's share of the blank (parallel/rank_plan.hpp); a pass over all elements is one run per
+/// block.
 struct ElementRun {
   int begin = 0;
   int end = 0;
 };
 
-/// The runs of consecutive ids in `elements` (ascending state indices), quads and triangles in
-/// separate runs.
-std::vector<ElementRun> element_runs(std::span<const int> elements, int n_quads);
+/// The runs of consecutive ids in `elements` (ascending state indices of the blocks' elements),
+/// never crossing from one block into the next.
+std::vector<ElementRun> element_runs(std::span<const int> elements, const ElementBlocks& blocks);
 
 /// The scratch of the element passes over one part: the corner buffer and one output share per
 /// thread. Sized by the first pass; later passes allocate nothing.

@@ -28,10 +28,10 @@ ShellSection make_gauss_section(int n_points);
 /// Throws InputError for a point count outside the family's range.
 ShellSection make_section(int n_points, ThroughThicknessRule rule);
 
-/// Integration-point state of a shell part, structure of arrays. Elements are numbered quads
-/// first, then triangles: element e < n_quads is quad e, otherwise triangle e - n_quads (see
-/// ShellPart). In-plane quantities are indexed e * n_points + k (k = 0 bottom .. n_points - 1
-/// top); stresses are components in the element's corotational frame (e1, e2, e3).
+/// Integration-point state of a shell part, structure of arrays. Elements are numbered by the
+/// part's element blocks (element/element_block.hpp; see ShellPart). In-plane quantities are
+/// indexed e * n_points + k (k = 0 bottom .. n_points - 1 top); stresses are components in the
+/// element's corotational frame (e1, e2, e3).
 struct ShellState {
   int n_elements = 0;
   int n_points = 0;
@@ -97,11 +97,11 @@ struct ShellMaterial {
 
 /// A shell part: connectivity (node indices, counter-clockwise seen from the +normal side) of its
 /// quads and triangles, section, materials and the hourglass control (quads only). A part may
-/// hold quads, triangles or both; its elements are numbered quads first, then triangles: element
-/// e < quads.cols() is quad e, otherwise triangle e - quads.cols(). State arrays, stable-step
-/// elements and output cells use this numbering. A part of several materials (a tailor-welded
-/// blank) names each element's material; elements of one material are best kept consecutive
-/// (the element loops take a run of one material at a time).
+/// hold quads, triangles or both; its elements are numbered block by block, its quads and then
+/// its triangles, and only element/element_block.hpp turns that numbering into a shape and a
+/// column. State arrays, stable-step elements and output cells use this numbering. A part of
+/// several materials (a tailor-welded blank) names each element's material; elements of one
+/// material are best kept consecutive (the element loops take a run of one material at a time).
 struct ShellPart {
   QuadConn quads;
   TriConn triangles;  ///< 3-node C0 shell triangles (DSG3 transverse shear)

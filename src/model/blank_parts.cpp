@@ -9,6 +9,7 @@
 
 #include "core/errors.hpp"
 #include "element/corner_forces.hpp"
+#include "element/element_block.hpp"
 
 namespace sf {
 namespace {
@@ -110,26 +111,23 @@ std::vector<int> sort_blank_by_part(const GmshModel& model,
                                     const std::string& case_file, PartMesh& mesh) {
   check_joined(mesh, case_file);
   const std::vector<int> part_of = find_element_parts(model, parts, case_file, mesh);
-  const int n_quads = static_cast<int>(mesh.quads.cols());
-  const int n_elements = n_quads + static_cast<int>(mesh.triangles.cols());
-  const std::vector<int> quads = sorted_by_part(part_of, 0, n_quads);
-  const std::vector<int> triangles = sorted_by_part(part_of, n_quads, n_elements);
+  // Within each block (the part's quads, then its triangles), its elements ordered by part.
   const QuadConn old_quads = mesh.quads;
   const TriConn old_triangles = mesh.triangles;
   const std::vector<std::size_t> old_tags = mesh.gmsh_element_tags;
-  std::vector<int> element_part(static_cast<std::size_t>(n_elements));
-  for (int k = 0; k < n_quads; ++k) {
-    const int e = quads[static_cast<std::size_t>(k)];
-    mesh.quads.col(k) = old_quads.col(e);
-    mesh.gmsh_element_tags[static_cast<std::size_t>(k)] = old_tags[static_cast<std::size_t>(e)];
-    element_part[static_cast<std::size_t>(k)] = part_of[static_cast<std::size_t>(e)];
-  }
-  for (int k = 0; k < n_elements - n_quads; ++k) {
-    const int e = triangles[static_cast<std::size_t>(k)];
-    mesh.triangles.col(k) = old_triangles.col(e - n_quads);
-    const auto to = static_cast<std::size_t>(n_quads + k);
-    mesh.gmsh_element_tags[to] = old_tags[static_cast<std::size_t>(e)];
-    element_part[to] = part_of[static_cast<std::size_t>(e)];
+  const ElementBlocks blocks = element_blocks(old_quads, old_triangles);
+  std::vector<int> element_part(static_cast<std::size_t>(blocks.element_count()));
+  for (const ElementBlock& block : blocks) {
+    const std::vector<int> order = sorted_by_part(part_of, block.first, block.end());
+    int* nodes = block.shape == ElementShape::quad ? mesh.quads.data() : mesh.triangles.data();
+    const int width = block.nodes_per_element();
+    for (int k = 0; k < block.count; ++k) {
+      const int e = order[static_cast<std::size_t>(k)];
+      const auto to = static_cast<std::size_t>(block.first + k);
+      std::copy_n(block.element_nodes(e), width, nodes + static_cast<std::ptrdiff_t>(width) * k);
+      mesh.gmsh_element_tags[to] = old_tags[static_cast<std::size_t>(e)];
+      element_part[to] = part_of[static_cast<std::size_t>(e)];
+    }
   }
   return element_part;
 }
@@ -206,8 +204,8 @@ VectorX initial_half_thickness(const Blank& blank, const InitialConditions& init
     return VectorX::Constant(blank.mesh.nodes.cols(), 0.5 * initial.thickness);
   }
   VectorX half(blank.mesh.nodes.cols());
-  gather_half_thickness(blank.node_corners, initial.element_thickness, blank.inverse_element_count,
-                        half);
+  gather_half_thickness(element_blocks(blank.part), blank.node_corners, initial.element_thickness,
+                        blank.inverse_element_count, half);
   return half;
 }
 

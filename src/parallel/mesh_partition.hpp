@@ -7,35 +7,30 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "element/element_block.hpp"
 
 namespace sf {
 
-/// The blank's connectivity as the parallel module sees it (views, no copies).
-/// Global element ids: quads 0..nq-1, then triangles nq..nq+nt-1. Global corner slots: quad e
-/// corner a -> 4e + a; triangle k corner a -> 4nq + 3k + a. So slot s's node is simply entry s
-/// of the quads' connectivity followed by the triangles'.
+/// The blank's connectivity as the parallel module sees it (views, no copies): its element
+/// blocks give the global element ids and corner slots (element/element_block.hpp).
 struct BlankTopology {
   std::span<const int> quads;      ///< 4 x nq node ids (0-based), column-major
   std::span<const int> triangles;  ///< 3 x nt node ids (0-based), column-major
   int n_nodes = 0;
+  ElementBlocks blocks;  ///< of quads and triangles
 
-  int n_quads() const { return static_cast<int>(quads.size() / 4); }
-  int n_triangles() const { return static_cast<int>(triangles.size() / 3); }
-  int n_elements() const { return n_quads() + n_triangles(); }
-  int n_corners() const { return static_cast<int>(quads.size() + triangles.size()); }
-  int corner_count(int element) const { return element < n_quads() ? 4 : 3; }
-  int first_slot(int element) const {
-    const int nq = n_quads();
-    return element < nq ? 4 * element : 4 * nq + 3 * (element - nq);
-  }
-  int element_of_slot(int slot) const {
-    const int quad_slots = static_cast<int>(quads.size());
-    return slot < quad_slots ? slot / 4 : n_quads() + (slot - quad_slots) / 3;
-  }
-  int node_of_slot(int slot) const {
-    const auto s = static_cast<std::size_t>(slot);
-    return s < quads.size() ? quads[s] : triangles[s - quads.size()];
-  }
+  BlankTopology(std::span<const int> quad_nodes, std::span<const int> triangle_nodes, int nodes)
+      : quads(quad_nodes),
+        triangles(triangle_nodes),
+        n_nodes(nodes),
+        blocks(element_blocks(quad_nodes, triangle_nodes)) {}
+
+  int n_elements() const { return blocks.element_count(); }
+  int n_corners() const { return blocks.corner_count(); }
+  int corner_count(int element) const { return blocks.of(element).nodes_per_element(); }
+  int first_slot(int element) const { return blocks.of(element).corner_slot(element, 0); }
+  int element_of_slot(int slot) const { return blocks.of_slot(slot).element_of_slot(slot); }
+  int node_of_slot(int slot) const { return blocks.of_slot(slot).node_of_slot(slot); }
 };
 
 /// A view of the solver's connectivity matrices (they must outlive the view).

@@ -60,7 +60,7 @@ RankPlan make_plan(const QuadConn& quads, const TriConn& triangles, int n_nodes,
 MpiDomain::MpiDomain(const QuadConn& quads, const TriConn& triangles, int n_nodes, MPI_Comm comm)
     : comm_(comm),
       plan_(make_plan(quads, triangles, n_nodes, comm)),
-      runs_(sf::element_runs(plan_.elements, static_cast<int>(quads.cols()))),
+      runs_(sf::element_runs(plan_.elements, element_blocks(quads, triangles))),
       forces_(plan_, kCornerWidth),
       thickness_(plan_, 1),
       masses_(plan_, kMassCornerWidth),
@@ -121,17 +121,17 @@ void MpiDomain::add_flagged_corner_forces(const NodeCorners& /*nodes*/,
       });
 }
 
-void MpiDomain::assemble_half_thickness(const NodeCorners& nodes, std::span<const double> thickness,
+void MpiDomain::assemble_half_thickness(const ElementBlocks& blocks, const NodeCorners& /*nodes*/,
+                                        std::span<const double> thickness,
                                         const VectorX& inverse_element_count,
                                         VectorX& half_thickness) {
   // Each own corner carries half its element's thickness, as gather_half_thickness adds it.
-  const int nq = nodes.n_quads;
   for (const ElementRun& run : runs_) {
+    const ElementBlock& block = blocks.of(run.begin);  // a run lies in one block
     for (int e = run.begin; e < run.end; ++e) {
       const double half = 0.5 * thickness[static_cast<std::size_t>(e)];
-      for (int a = 0; a < (e < nq ? 4 : 3); ++a) {
-        const int slot = e < nq ? quad_corner_slot(e, a) : triangle_corner_slot(nq, e - nq, a);
-        thickness_corners_[static_cast<std::size_t>(slot)] = half;
+      for (int a = 0; a < block.nodes_per_element(); ++a) {
+        thickness_corners_[static_cast<std::size_t>(block.corner_slot(e, a))] = half;
       }
     }
   }

@@ -40,7 +40,8 @@ class MpiDomain final : public Domain {
                          VectorX& mass, VectorX& inertia) override;
   void add_flagged_corner_forces(const NodeCorners& nodes, std::span<const double> corners,
                                  Matrix3X& f) override;
-  void assemble_half_thickness(const NodeCorners& nodes, std::span<const double> thickness,
+  void assemble_half_thickness(const ElementBlocks& blocks, const NodeCorners& nodes,
+                               std::span<const double> thickness,
                                const VectorX& inverse_element_count,
                                VectorX& half_thickness) override;
   void reduce(std::span<ExactSum> sums) override;

@@ -169,14 +169,14 @@ void collect_gather_lists(RankPlan& plan, const BlankTopology& t, const NodeCorn
 
 NodeCorners node_corner_lists(const BlankTopology& t) {
   check_topology(t);
-  return build_node_corners(t.quads, t.triangles, t.n_nodes);
+  return build_node_corners(t.blocks, t.n_nodes);
 }
 
 RankPlan build_rank_plan(const BlankTopology& t, std::span<const int> part_of_element, int rank,
                          int ranks) {
   check_topology(t);
   check_partition(t, part_of_element, rank, ranks);
-  const NodeCorners nc = build_node_corners(t.quads, t.triangles, t.n_nodes);
+  const NodeCorners nc = build_node_corners(t.blocks, t.n_nodes);
   const NodeRanks nr = node_ranks(t, nc, part_of_element);
   RankPlan plan;
   plan.rank = rank;

@@ -69,7 +69,8 @@ class Domain {
 
   /// The contact offset at the nodes this process holds: half the mean thickness (mm) of the
   /// elements around each node (as gather_half_thickness).
-  virtual void assemble_half_thickness(const NodeCorners& nodes, std::span<const double> thickness,
+  virtual void assemble_half_thickness(const ElementBlocks& blocks, const NodeCorners& nodes,
+                                       std::span<const double> thickness,
                                        const VectorX& inverse_element_count,
                                        VectorX& half_thickness) = 0;
 
@@ -128,10 +129,11 @@ class SerialDomain final : public Domain {
                                  Matrix3X& f) override {
     sf::add_flagged_corner_forces(nodes, corners, f);
   }
-  void assemble_half_thickness(const NodeCorners& nodes, std::span<const double> thickness,
+  void assemble_half_thickness(const ElementBlocks& blocks, const NodeCorners& nodes,
+                               std::span<const double> thickness,
                                const VectorX& inverse_element_count,
                                VectorX& half_thickness) override {
-    gather_half_thickness(nodes, thickness, inverse_element_count, half_thickness);
+    gather_half_thickness(blocks, nodes, thickness, inverse_element_count, half_thickness);
   }
   void reduce(std::span<ExactSum> /*sums*/) override {}
   StableStep smallest_time_step(std::span<const double> element_dt) override {

@@ -290,6 +290,7 @@ class Remapper {
     const std::vector<double>& x_old = part_.fields.at("x");
     const std::vector<double>& x_new = out.fields.at("x");
     const ElementBlocks old_blocks = element_blocks(part_.quads, part_.triangles);
+    const ElementBlocks new_blocks = element_blocks(out.quads, out.triangles);
     const std::size_t n_new = elements_.size();
     for (std::size_t e = 0; e < n_new; ++e) {
       const ElementSource& piece = *elements_[e];
@@ -297,7 +298,7 @@ class Remapper {
         continue;
       }
       const std::vector<int> parent_nodes = part_element_nodes(part_, piece.parent);
-      const int count = e < map_.quads.size() ? 4 : 3;
+      const int count = new_blocks.of(static_cast<int>(e)).nodes_per_element();
       const Vec2 turn = frame_turn(element_frame(x_old, parent_nodes.data(),
                                                  old_blocks.of(piece.parent).nodes_per_element()),
                                    element_frame(x_new, piece.nodes.data(), count));

@@ -90,8 +90,9 @@ ShellForceResult compute_internal_forces(const Model& model, SolutionState& s, d
 
 // The contact offset of every node: half the mean thickness of the elements around it (mm).
 void update_contact_offsets(const Model& model, SolutionState& s) {
-  s.domain->assemble_half_thickness(model.blank.node_corners, s.shell.thickness,
-                                    model.blank.inverse_element_count, s.half_thickness);
+  s.domain->assemble_half_thickness(element_blocks(model.blank.part), model.blank.node_corners,
+                                    s.shell.thickness, model.blank.inverse_element_count,
+                                    s.half_thickness);
 }
 
 // The blank against a tool over the step dt just taken (s.v its mid-step velocity; dt = 0 on the

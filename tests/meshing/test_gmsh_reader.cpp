@@ -24,9 +24,12 @@ const fs::path data_dir = SF_TEST_DATA_DIR;
 const fs::path cup_dir = fs::path(SF_SOURCE_DIR) / "cases" / "square_cup_aluminium";
 constexpr double t_half = 0.81 / 2;  // mm, half the blank thickness (REFERENCES.md, grade A)
 
-/// A fresh, empty folder for files a test writes.
+/// A fresh, empty folder for files a test writes, under the test's own name: ctest runs the tests
+/// side by side, and two tests asking for the same `name` would empty each other's folder.
 fs::path scratch_dir(const std::string& name) {
-  const fs::path dir = fs::path(SF_BINARY_DIR) / "test_scratch" / "gmsh_reader" / name;
+  const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path dir = fs::path(SF_BINARY_DIR) / "test_scratch" / "gmsh_reader" /
+                       test->test_suite_name() / test->name() / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

@@ -25,8 +25,11 @@ namespace fs = std::filesystem;
 const fs::path data_dir = SF_TEST_DATA_DIR;
 const fs::path cup_dir = fs::path(SF_SOURCE_DIR) / "cases" / "square_cup_aluminium";
 
+/// A folder of this test's own: ctest runs the tests of this file side by side, and a folder
+/// shared between them would be emptied by one while another writes into it.
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::path(SF_BINARY_DIR) / "test_scratch" / "msh_file" / name;
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const fs::path dir = fs::path(SF_BINARY_DIR) / "test_scratch" / "msh_file" / test / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
@@ -185,6 +188,11 @@ TEST(MshFile, EveryCutIsAnInputError) {
 
 /// The file with the 8 bytes at `offset` replaced by `value`.
 std::string with_size_at(std::string bytes, std::size_t offset, std::uint64_t value) {
+  if (offset > bytes.size() || bytes.size() - offset < sizeof(value)) {
+    ADD_FAILURE() << "offset " << offset << " is not inside the file of " << bytes.size()
+                  << " bytes";
+    return bytes;
+  }
   std::memcpy(bytes.data() + offset, &value, sizeof(value));
   return bytes;
 }
@@ -200,6 +208,8 @@ std::string error_of(const std::string& bytes) {
 
 TEST(MshFile, CountsLargerThanTheFileAreRefusedBeforeAllocating) {
   const auto [reference, bytes] = through_gmsh(data_dir / "cad" / "die_open.stl", 0.0, false);
+  ASSERT_NE(bytes.find("$Nodes\n"), std::string::npos);
+  ASSERT_NE(bytes.find("$Elements\n"), std::string::npos);
   const std::size_t nodes = bytes.find("$Nodes\n") + 7, elements = bytes.find("$Elements\n") + 10;
   for (const std::size_t at : {nodes, nodes + 8, elements, elements + 8}) {
     const std::string message = error_of(with_size_at(bytes, at, std::uint64_t(1) << 60));

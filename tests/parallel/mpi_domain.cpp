@@ -86,8 +86,9 @@ int main(int argc, char** argv) {
                                 nodes.offsets[static_cast<std::size_t>(i)]);
     }
     VectorX h_serial(n_nodes), h = VectorX::Zero(n_nodes);
-    gather_half_thickness(nodes, thickness, inverse_count, h_serial);
-    domain.assemble_half_thickness(nodes, thickness, inverse_count, h);
+    const ElementBlocks blocks = element_blocks(part);
+    gather_half_thickness(blocks, nodes, thickness, inverse_count, h_serial);
+    domain.assemble_half_thickness(blocks, nodes, thickness, inverse_count, h);
     bool held_ok = true;
     for (const std::span<const int> list : {domain.owned_nodes(), domain.ghost_nodes()}) {
       for (const int i : list) {
@@ -104,13 +105,9 @@ int main(int argc, char** argv) {
     // the nodes have: the bits of the serial rule, each element's share added to its nodes in
     // element order. Every third element adds nothing (0 / flag 0). Each rank writes only its
     // own elements' slots; the others hold NaN, which would show if they were read.
-    const auto n_quads = static_cast<int>(part.quads.cols());
-    const auto slot_of = [&](int e, int a) {
-      return e < n_quads ? quad_corner_slot(e, a) : triangle_corner_slot(n_quads, e - n_quads, a);
-    };
-    const auto node_of = [&](int e, int a) {
-      return e < n_quads ? part.quads(a, e) : part.triangles(a, e - n_quads);
-    };
+    const auto slot_of = [&](int e, int a) { return blocks.of(e).corner_slot(e, a); };
+    const auto node_of = [&](int e, int a) { return blocks.of(e).element_nodes(e)[a]; };
+    const auto corners_of = [&](int e) { return blocks.of(e).nodes_per_element(); };
     const auto share = [](int e, int c) {
       return e % 3 == 2 ? 0.0 : 1e-6 * (1.0 + 0.3 * std::sin(0.71 * e + c));
     };
@@ -122,7 +119,7 @@ int main(int argc, char** argv) {
     VectorX mass_want = mass0, inertia_want = inertia0;
     Matrix3X f_want = f_serial;
     for (int e = 0; e < n_el; ++e) {
-      for (int a = 0; a < (e < n_quads ? 4 : 3); ++a) {
+      for (int a = 0; a < corners_of(e); ++a) {
         const int i = node_of(e, a);
         mass_want[i] += share(e, 0);
         inertia_want[i] += share(e, 1);
@@ -138,7 +135,7 @@ int main(int argc, char** argv) {
     for (int e = 0; e < n_el; ++e) {
       const bool own =
           std::binary_search(domain.plan().elements.begin(), domain.plan().elements.end(), e);
-      for (int a = 0; a < (e < n_quads ? 4 : 3); ++a) {
+      for (int a = 0; a < corners_of(e); ++a) {
         const auto k = static_cast<std::size_t>(slot_of(e, a));
         const double mass_values[2] = {share(e, 0), share(e, 1)};
         const double load_values[4] = {share(e, 2), -share(e, 3), share(e, 4),

@@ -53,8 +53,7 @@ bool check_formulation(ShellFormulation formulation, bool two_materials, int ran
   }
   MPI_Bcast(parts.data(), n_el, MPI_INT, 0, MPI_COMM_WORLD);
   const RankPlan plan = build_rank_plan(topology, parts, rank, ranks);
-  const std::vector<ElementRun> runs =
-      element_runs(plan.elements, static_cast<int>(part.quads.cols()));
+  const std::vector<ElementRun> runs = element_runs(plan.elements, element_blocks(part));
   CornerExchange exchange(plan, kCornerWidth);
   std::vector<double> received(static_cast<std::size_t>(plan.receive_size) * kCornerWidth);
   std::vector<double> node_values(static_cast<std::size_t>(n_nodes) * kCornerWidth);

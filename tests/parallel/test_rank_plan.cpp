@@ -54,7 +54,8 @@ std::vector<std::vector<int>> serial_lists(const BlankTopology& t) {
 std::vector<int> stripes(const BlankTopology& t, int parts) {
   std::vector<int> part;
   for (int e = 0; e < t.n_elements(); ++e) {
-    const int column = e < t.n_quads() ? e % 6 : 6;  // the triangles are column 6
+    const bool quad = t.blocks.of(e).shape == ElementShape::quad;
+    const int column = quad ? e % 6 : 6;  // the triangles are column 6
     part.push_back(column * parts / 7);
   }
   return part;

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "element/element_block.hpp"
 #include "model/build_model.hpp"
 #include "results/hdf5_file.hpp"
 #include "solver/case_model.hpp"
@@ -117,13 +118,11 @@ void run_case(const fs::path& case_file, const fs::path& results) {
 
 // The centre of element e of the part's reference mesh.
 Vec3 centre(const FormedPart& part, std::size_t e) {
-  const auto n_quads = static_cast<std::size_t>(part.quads.cols());
+  const ElementBlock block = element_blocks(part.quads, part.triangles).of(static_cast<int>(e));
   Vec3 sum = Vec3::Zero();
-  const int count = e < n_quads ? 4 : 3;
+  const int count = block.nodes_per_element();
   for (int a = 0; a < count; ++a) {
-    const int node = e < n_quads ? part.quads(a, static_cast<Eigen::Index>(e))
-                                 : part.triangles(a, static_cast<Eigen::Index>(e - n_quads));
-    sum += part.reference_nodes.col(node);
+    sum += part.reference_nodes.col(block.element_nodes(static_cast<int>(e))[a]);
   }
   return sum / count;
 }

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "element/element_block.hpp"
 #include "element/shell_part.hpp"
 
 namespace sf::test {
@@ -74,10 +75,12 @@ inline ShellMaterial second_material() {
 inline ShellPart two_material_part(const Mesh& mesh, ShellFormulation formulation,
                                    std::vector<int>* which = nullptr) {
   ShellPart p = make_part(mesh, formulation);
-  const int n_quads = static_cast<int>(p.quads.cols());
   std::vector<int> m(static_cast<std::size_t>(element_count(p)));
-  for (int e = 0; e < element_count(p); ++e) {
-    m[static_cast<std::size_t>(e)] = e < n_quads ? (e / 37) % 2 : ((e - n_quads) / 13) % 2;
+  for (const ElementBlock& block : element_blocks(p)) {
+    const int run = block.shape == ElementShape::quad ? 37 : 13;
+    for (int e = block.first; e < block.end(); ++e) {
+      m[static_cast<std::size_t>(e)] = (block.local(e) / run) % 2;
+    }
   }
   if (which) {
     *which = m;

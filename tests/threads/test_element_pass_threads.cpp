@@ -155,17 +155,16 @@ TEST_P(ElementPassThreads, EachElementOfTwoMaterialsAsInAPartOfItsOwn) {
   const Mesh mesh = make_mesh(50, 30, 7);
   const ShellPart base = make_part(mesh, GetParam());
   const int n = element_count(base);
-  const int n_quads = static_cast<int>(base.quads.cols());
+  const ElementBlocks blocks = element_blocks(base);
   std::vector<int> which;
   const ShellPart mixed = test::two_material_part(mesh, GetParam(), &which);
   ShellPart all_second = base;
   all_second.materials = {test::second_material()};
   const PassRun alone[2] = {run_passes(base, mesh.x, 1), run_passes(all_second, mesh.x, 1)};
   // An element's corner slots (its forces and moments before they are summed at the nodes).
-  const auto corners_of = [n_quads](const std::vector<double>& corners, int e) {
-    const int first =
-        e < n_quads ? quad_corner_slot(e, 0) : triangle_corner_slot(n_quads, e - n_quads, 0);
-    const int count = e < n_quads ? 4 : 3;
+  const auto corners_of = [&blocks](const std::vector<double>& corners, int e) {
+    const int first = blocks.of(e).corner_slot(e, 0);
+    const int count = blocks.of(e).nodes_per_element();
     return std::vector<double>(corners.begin() + static_cast<long>(kCornerWidth) * first,
                                corners.begin() + static_cast<long>(kCornerWidth) * (first + count));
   };
