@@ -20,7 +20,7 @@
 // A policy F provides: kNodes and Nodes (Eigen 3 x kNodes); a per-element struct F::Element
 // carried from stage to stage; prepare(e, begin, end) before each element (the quads compute
 // their geometries kBlockLanes elements at a time); and the stages
-//   StageResult strains(e, xe, ve, we, Element&, SectionStrains&)
+//   StageResult strains(e, nodes, xe, ve, we, Element&, SectionStrains&)
 //   double mid_area(const Element&)                      mm^2, the work's area
 //   ShearUpdate transverse_shear(e, t, Element&, ShellState&)
 //   StageResult end_geometry(e, xe, Element&)
@@ -110,7 +110,7 @@ void run_element_loop(Formulation& f, const Kernel& kernel, const LoopContext& c
     }
     typename Formulation::Element el;
     SectionStrains strains;
-    if (const StageResult r = f.strains(e, xe, ve, we, el, strains); !r.ok()) {
+    if (const StageResult r = f.strains(e, nodes, xe, ve, we, el, strains); !r.ok()) {
       return out.fail(e, r.kind, r.when, triangle);
     }
 

@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "element/element_pass.hpp"
+#include "element/node_turns.hpp"
 #include "element/shell_part.hpp"
 
 namespace sf {
@@ -31,16 +33,7 @@ void initialize_directors(const ShellPart& part, const Matrix3X& x, ShellState& 
 /// The unit vector d turned by the rotation vector phi (rad; Rodrigues' formula, exact for any
 /// angle), renormalised against round-off.
 inline Vec3 rotate_director(const Vec3& d, const Vec3& phi) {
-  const double angle2 = phi.squaredNorm();
-  if (angle2 == 0.0) {
-    return d;
-  }
-  const double angle = std::sqrt(angle2);
-  const Vec3 axis = phi / angle;
-  const double c = std::cos(angle);
-  const double s = std::sin(angle);
-  const Vec3 r = c * d + s * axis.cross(d) + ((1.0 - c) * axis.dot(d)) * axis;
-  return r / r.norm();
+  return turn_director(director_turn(phi), d);
 }
 
 /// An element's directors over a step: `start` read from the state at `director` (3 per node),
@@ -65,6 +58,41 @@ template <int N>
     c[2] = end(2, i);
   }
   return true;
+}
+
+/// The same with each node's turn found beforehand (compute_node_turns over the step's dt omega):
+/// the same bits. nodes: the element's N node ids.
+template <int N>
+[[nodiscard]] inline bool advance_element_directors(double* director, const int* nodes,
+                                                    const NodeTurns& turns,
+                                                    Eigen::Matrix<double, 3, N>& start,
+                                                    Eigen::Matrix<double, 3, N>& end) {
+  for (int i = 0; i < N; ++i) {
+    start.col(i) = Vec3(director[3 * i], director[3 * i + 1], director[3 * i + 2]);
+    if (!(start.col(i).squaredNorm() > 0.5)) {
+      return false;
+    }
+  }
+  for (int i = 0; i < N; ++i) {
+    double* c = director + 3 * i;
+    end.col(i) = turn_director(turns.of(nodes[i]), start.col(i));
+    c[0] = end(0, i);
+    c[1] = end(1, i);
+    c[2] = end(2, i);
+  }
+  return true;
+}
+
+/// An element's directors over the step of `in`: by the nodes' turns where the pass found them
+/// (in.turns), else by dt w_I (w: the element's nodal angular velocities); the same bits.
+template <int N>
+[[nodiscard]] inline bool advance_element_directors(double* director, const int* nodes,
+                                                    const Eigen::Matrix<double, 3, N>& w,
+                                                    const ElementInputs& in,
+                                                    Eigen::Matrix<double, 3, N>& start,
+                                                    Eigen::Matrix<double, 3, N>& end) {
+  return in.turns ? advance_element_directors<N>(director, nodes, *in.turns, start, end)
+                  : advance_element_directors<N>(director, w, in.dt, start, end);
 }
 
 }  // namespace sf

@@ -163,6 +163,12 @@ ShellForceResult run_element_pass(const ShellPart& part, const ElementInputs& in
   if (pass.shares.size() < static_cast<std::size_t>(threads)) {
     pass.shares.resize(static_cast<std::size_t>(threads));
   }
+  // The directors' turn at each node, once per pass instead of once per element corner.
+  ElementInputs with_turns = in;
+  if (part.formulation == ShellFormulation::assumed_strain && in.turns == nullptr) {
+    compute_node_turns(in.omega, in.dt, pass.turns);
+    with_turns.turns = &pass.turns;
+  }
   int used = 1;
 #pragma omp parallel num_threads(threads)
   {
@@ -173,7 +179,7 @@ ShellForceResult run_element_pass(const ShellPart& part, const ElementInputs& in
     }
     ElementOutputs& out = pass.shares[static_cast<std::size_t>(t)];
     out.reset(pass.corners.data(), element_dt.empty() ? nullptr : element_dt.data());
-    run_share(part, in, state, blocks, given, t, shares, out);
+    run_share(part, with_turns, state, blocks, given, t, shares, out);
   }
   // Exact sums and the lowest failure: the same whatever the number of shares.
   ElementOutputs& total = pass.shares[0];

@@ -44,6 +44,7 @@ std::vector<ElementRun> element_runs(std::span<const int> elements, const Elemen
 struct ElementPass {
   std::vector<double> corners;         ///< kCornerWidth per corner slot
   std::vector<ElementOutputs> shares;  ///< one per thread of the last pass
+  NodeTurns turns;                     ///< the directors' turn at each node (assumed strain)
 };
 
 /// Every element's (quads, then triangles) internal nodal forces (N) and moments (N mm) into its

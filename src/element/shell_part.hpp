@@ -38,7 +38,8 @@ struct ShellState {
   std::vector<double> sxx, syy, sxy;  ///< MPa, in-plane stress per point
   std::vector<double> eps_p;          ///< -, equivalent plastic strain per point
   /// MPa, per point: the flow stress at the plastic strain flow_stress_at (set by the element
-  /// loops' material update, FlowStressCache in material/plane_stress_batch.hpp), so that a yield
+  /// loops' material update, FlowStressCache in material/plane_stress_batch.hpp: the value the
+  /// return converged on, a Swift law's within 1e-13 relative of its pow), so that a yield
   /// check needs no hardening evaluation. Where flow_stress_at differs from eps_p (at the start,
   /// or after eps_p was set from outside) the flow stress is evaluated again. Belongs to the
   /// part's hardening law: a state moved to another law must be made again. Empty: not stored.

@@ -49,8 +49,9 @@ class BtQuad {
   SF_ELEMENT_STAGE void prepare(int e, int begin, int end) { geometry_.prepare(e, begin, end); }
 
   // Velocity strains on the mid-step configuration (exact zero for a rigid rotation step).
-  SF_ELEMENT_STAGE StageResult strains(int /*e*/, const Quad3& xe, const Quad3& ve, const Quad3& we,
-                                       Element& el, SectionStrains& s) const {
+  SF_ELEMENT_STAGE StageResult strains(int /*e*/, const int* /*nodes*/, const Quad3& xe,
+                                       const Quad3& ve, const Quad3& we, Element& el,
+                                       SectionStrains& s) const {
     const double dt = in_.dt;
     el.xm = xe - (0.5 * dt) * ve;
     if (const StageResult r = geometry_.mid(el.mid); !r.ok()) {

@@ -34,8 +34,9 @@ class C0Triangle {
   // Velocity strains on the mid-step configuration (exactly zero for a rigid rotation step: the
   // central-difference velocity is skew there, and every operator below is exact for linear
   // velocity fields and uniform angular velocity).
-  SF_ELEMENT_STAGE StageResult strains(int /*e*/, const Tri3& xe, const Tri3& ve, const Tri3& we,
-                                       Element& el, SectionStrains& s) const {
+  SF_ELEMENT_STAGE StageResult strains(int /*e*/, const int* /*nodes*/, const Tri3& xe,
+                                       const Tri3& ve, const Tri3& we, Element& el,
+                                       SectionStrains& s) const {
     const double dt = in_.dt;
     const Tri3 xm = xe - (0.5 * dt) * ve;
     if (!compute_triangle_geometry(xm, el.mid)) {

@@ -49,6 +49,7 @@ SF_BLOCK_INLINE int check_convergence(Lanes& s, ModalReturnBatch& b, int nb) {
     const Mask done = s.active[k] & converged;
     store_block(b.D + B * k, done ? s.D[k] : load_block(b.D + B * k));
     store_block(b.eps + B * k, done ? s.eps[k] : load_block(b.eps + B * k));
+    store_block(b.sy + B * k, done ? s.sy[k] : load_block(b.sy + B * k));
     s.active[k] &= ~converged;
     s.r[k] = r;
     for (int j = 0; j < B; ++j) {
@@ -167,6 +168,7 @@ SF_BLOCK_INLINE void start_lanes(Lanes& s, ModalReturnBatch& b, int nb) {
     }
     store_block(b.D + B * k, Block{});
     store_block(b.eps + B * k, Block{});
+    store_block(b.sy + B * k, Block{});
   }
 }
 

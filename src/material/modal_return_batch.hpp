@@ -37,6 +37,10 @@ struct ModalReturnBatch {
   double slope_n[kMaxReturnLanes];  ///< MPa, its slope
   double D[kMaxReturnLanes];        ///< 1/MPa, out: d_lambda / sigma_eq(n+1)
   double eps[kMaxReturnLanes];      ///< -, out: new plastic strain
+  /// MPa, out: the flow stress at eps the return converged on (a Swift law's by the binomial
+  /// series from sy_n where the step is small: SwiftHardening::evaluate_near), so that its next
+  /// yield check needs no evaluation (no pow).
+  double sy[kMaxReturnLanes];
 };
 
 /// Solves r(D) = 0 for every lane of `b` (the first kModes modes carry weight; a J2 return has

@@ -98,8 +98,8 @@ inline bool update_points_with(const Kernel& k, const Law& law, int n, const Vec
     out[p] = {s, b.eps[l], through_thickness_increment(k.E, k.nu, d_strain[p], old_stress[p], s),
               true, work};
     if (cache.stress) {
-      // The one hardening evaluation of a yielding point, for its next check.
-      cache.stress[p] = law.evaluate(b.eps[l]).stress;
+      // The flow stress the return converged on, for the point's next check.
+      cache.stress[p] = b.sy[l];
       cache.at[p] = b.eps[l];
     }
   }

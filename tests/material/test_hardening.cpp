@@ -8,9 +8,12 @@
 #include <fstream>
 #include <limits>
 #include <string>
+#include <variant>
 
 #include "core/errors.hpp"
 #include "material/plane_stress.hpp"
+#include "material/plane_stress_batch.hpp"
+#include "material/plane_stress_kernels.hpp"
 
 namespace sf {
 namespace {
@@ -296,5 +299,55 @@ TEST(Hardening, SwiftEvaluateNearEqualsTheClosedForm) {
         EXPECT_NEAR(near.slope, exact.slope, 1e-13 * std::abs(exact.slope) + 1e-300);
       }
     }
+  }
+}
+
+// The flow stress a yielding point keeps for its next check (FlowStressCache) is the one its
+// return converged on, with no further evaluation: for a Swift law the binomial series from the
+// step's start, within its truncation bound of the closed form (1e-13 relative, as above); for
+// the other laws the law's own value, bit for bit. 60 mixed steps of 5 points at different
+// strains, every point yielding from the second step on; the cache is what the next step
+// reads, so the stresses must also stay on the curve (the return's tolerance, 1e-9).
+TEST(Hardening, TheStoredFlowStressIsTheLawsAtThePointsStrain) {
+  for (const sf::Hardening& law : {sf::Hardening{sf::SwiftHardening{565.0, 0.007, 0.26}},
+                                   sf::Hardening{sf::VoceHardening{180.0, 250.0, 12.5}}}) {
+    const bool swift = std::holds_alternative<sf::SwiftHardening>(law);
+    const sf::J2PlaneStress j2{210000.0, 0.3, law};
+    const sf::J2Kernel kernel(j2);
+    constexpr int kPoints = 5;
+    sf::Vec3 stress[kPoints], strain[kPoints];
+    double eps_p[kPoints], cached[kPoints], cached_at[kPoints];
+    for (int p = 0; p < kPoints; ++p) {
+      stress[p].setZero();
+      strain[p] = (1.0 + 0.3 * p) * sf::Vec3(2e-4, -1e-4 + 3e-5 * p, 2e-5);
+      eps_p[p] = 0.0;
+      cached_at[p] = std::numeric_limits<double>::quiet_NaN();
+    }
+    int checked = 0;
+    for (int step = 0; step < 60; ++step) {
+      sf::PlaneStressUpdate up[kPoints];
+      sf::MaterialFailure failure;
+      ASSERT_TRUE(sf::update_points(kernel, kPoints, stress, eps_p, strain,
+                                    sf::FlowStressCache{cached, cached_at}, up, failure));
+      for (int p = 0; p < kPoints; ++p) {
+        if (up[p].eps_p > eps_p[p]) {
+          ASSERT_EQ(cached_at[p], up[p].eps_p);
+          const double exact = sf::flow_stress(law, up[p].eps_p);
+          if (swift) {
+            EXPECT_NEAR(cached[p], exact, 1e-13 * exact) << "step " << step << " point " << p;
+          } else {
+            EXPECT_EQ(cached[p], exact) << "step " << step << " point " << p;
+          }
+          const sf::Vec3& s = up[p].stress;
+          const double mises =
+              std::sqrt(s(0) * s(0) - s(0) * s(1) + s(1) * s(1) + 3.0 * s(2) * s(2));
+          EXPECT_NEAR(mises / exact, 1.0, 1e-9) << "step " << step << " point " << p;
+          ++checked;
+        }
+        stress[p] = up[p].stress;
+        eps_p[p] = up[p].eps_p;
+      }
+    }
+    EXPECT_GT(checked, 50 * kPoints);
   }
 }
