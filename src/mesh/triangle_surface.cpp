@@ -178,6 +178,42 @@ std::pair<double, bool> closest_on_triangle(const Vec3& p, const Vec3& a, const 
       edges.size() > kListed ? ", ..." : ""));
 }
 
+// Bounding spheres of triangles (centre: the mean of the vertices; radius: the farthest vertex),
+// structure of arrays, so that a search for the closest triangle can pass over a triangle whose
+// sphere lies farther than a triangle already found.
+struct TriangleSpheres {
+  std::vector<double> cx, cy, cz, radius;
+
+  TriangleSpheres(const Matrix3X& x, const TriConn& tri) {
+    const auto nt = static_cast<std::size_t>(tri.cols());
+    cx.resize(nt);
+    cy.resize(nt);
+    cz.resize(nt);
+    radius.resize(nt);
+    for (Eigen::Index t = 0; t < tri.cols(); ++t) {
+      const Vec3 c = (x.col(tri(0, t)) + x.col(tri(1, t)) + x.col(tri(2, t))) / 3.0;
+      double r2 = 0.0;
+      for (int a = 0; a < 3; ++a) {
+        r2 = std::max(r2, (x.col(tri(a, t)) - c).squaredNorm());
+      }
+      const auto k = static_cast<std::size_t>(t);
+      cx[k] = c(0);
+      cy[k] = c(1);
+      cz[k] = c(2);
+      radius[k] = std::sqrt(r2);
+    }
+  }
+
+  // Whether every point of triangle t is farther from p than sqrt(d2), by a margin (1e-9
+  // relative) far above the round-off of this test and of the exact distance: a triangle passed
+  // over could never have been the strictly closer one.
+  bool beyond(std::size_t t, const Vec3& p, double d2) const {
+    const double dx = p(0) - cx[t], dy = p(1) - cy[t], dz = p(2) - cz[t];
+    const double lower = std::sqrt(dx * dx + dy * dy + dz * dz) - radius[t];
+    return lower > 0.0 && lower * lower > d2 * (1.0 + 1e-9);
+  }
+};
+
 }  // namespace
 
 SurfaceOrientation orient_surface(TriangleSurface& surface, const Matrix3X& blank_nodes) {
@@ -228,10 +264,29 @@ SurfaceOrientation orient_surface(TriangleSurface& surface, const Matrix3X& blan
   std::vector<char> best_face(num_components);
   std::vector<Vec3> best_q(num_components);
   const Matrix3X& x = surface.nodes();
+  // Each piece's closest triangle, in ascending triangle order (the first of equals), as trying
+  // every triangle finds it; a triangle whose bounding sphere lies beyond the piece's closest
+  // so far, or beyond the previous node's closest triangle (a neighbour's: the sampled nodes
+  // follow the blank's numbering), is passed over, as it could not have been strictly closer.
+  const TriangleSpheres spheres(x, tri);
+  std::vector<int> previous_t(num_components, -1);
+  std::vector<double> bound(num_components);
   for (int b = 0; b < nb; b += stride) {
     const Vec3 p = blank_nodes.col(b);
     std::fill(best_d2.begin(), best_d2.end(), std::numeric_limits<double>::infinity());
+    for (int c = 0; c < num_components; ++c) {
+      const int s = previous_t[static_cast<std::size_t>(c)];
+      Vec3 q = Vec3::Zero();
+      bound[static_cast<std::size_t>(c)] =
+          s < 0 ? std::numeric_limits<double>::infinity()
+                : closest_on_triangle(p, x.col(tri(0, s)), x.col(tri(1, s)), x.col(tri(2, s)), q)
+                      .first;
+    }
     for (int t = 0; t < nt; ++t) {
+      const auto c_t = static_cast<std::size_t>(component[t]);
+      if (spheres.beyond(static_cast<std::size_t>(t), p, std::min(bound[c_t], best_d2[c_t]))) {
+        continue;
+      }
       Vec3 q = Vec3::Zero();
       const auto [d2, face] =
           closest_on_triangle(p, x.col(tri(0, t)), x.col(tri(1, t)), x.col(tri(2, t)), q);
@@ -244,6 +299,7 @@ SurfaceOrientation orient_surface(TriangleSurface& surface, const Matrix3X& blan
       }
     }
     for (int c = 0; c < num_components; ++c) {
+      previous_t[static_cast<std::size_t>(c)] = std::isfinite(best_d2[c]) ? best_t[c] : -1;
       const double d = std::sqrt(best_d2[c]);
       if (!(d > 0) || !std::isfinite(d)) {
         continue;  // on the surface: no side
