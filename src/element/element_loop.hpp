@@ -93,6 +93,7 @@ template <class Formulation, class Kernel>
 void run_element_loop(Formulation& f, const Kernel& kernel, const LoopContext& c, int begin,
                       int end, ElementOutputs& out) {
   using Nodes = typename Formulation::Nodes;
+  static_assert(Nodes::ColsAtCompileTime == Formulation::kNodes, "a column per element node");
   const bool triangles = c.block.shape == ElementShape::triangle;
   ShellState& st = c.st;
   for (int e = begin; e < end; ++e) {

@@ -37,13 +37,13 @@ inline Vec3 rotate_director(const Vec3& d, const Vec3& phi) {
 }
 
 /// An element's directors over a step: `start` read from the state at `director` (3 per node),
-/// `end` = start turned by dt w_I and written back. Returns false, leaving the state as it is, if
-/// they were never set (initialize_directors): a program error the element loop reports.
-template <int N>
-[[nodiscard]] inline bool advance_element_directors(double* director,
-                                                    const Eigen::Matrix<double, 3, N>& w, double dt,
-                                                    Eigen::Matrix<double, 3, N>& start,
-                                                    Eigen::Matrix<double, 3, N>& end) {
+/// `end` = start turned by turn_of(i) (a DirectorTurn for node i of the element) and written
+/// back. Returns false, leaving the state as it is, if they were never set
+/// (initialize_directors): a program error the element loop reports.
+template <int N, class TurnOf>
+[[nodiscard]] inline bool turn_element_directors(double* director, TurnOf turn_of,
+                                                 Eigen::Matrix<double, 3, N>& start,
+                                                 Eigen::Matrix<double, 3, N>& end) {
   for (int i = 0; i < N; ++i) {
     start.col(i) = Vec3(director[3 * i], director[3 * i + 1], director[3 * i + 2]);
     if (!(start.col(i).squaredNorm() > 0.5)) {
@@ -52,12 +52,22 @@ template <int N>
   }
   for (int i = 0; i < N; ++i) {
     double* c = director + 3 * i;
-    end.col(i) = rotate_director(start.col(i), dt * w.col(i));
+    end.col(i) = turn_director(turn_of(i), start.col(i));
     c[0] = end(0, i);
     c[1] = end(1, i);
     c[2] = end(2, i);
   }
   return true;
+}
+
+/// The directors turned by dt w_I (w: the element's nodal angular velocities, rad/s; dt: s).
+template <int N>
+[[nodiscard]] inline bool advance_element_directors(double* director,
+                                                    const Eigen::Matrix<double, 3, N>& w, double dt,
+                                                    Eigen::Matrix<double, 3, N>& start,
+                                                    Eigen::Matrix<double, 3, N>& end) {
+  return turn_element_directors<N>(
+      director, [&](int i) { return director_turn(dt * w.col(i)); }, start, end);
 }
 
 /// The same with each node's turn found beforehand (compute_node_turns over the step's dt omega):
@@ -67,20 +77,8 @@ template <int N>
                                                     const NodeTurns& turns,
                                                     Eigen::Matrix<double, 3, N>& start,
                                                     Eigen::Matrix<double, 3, N>& end) {
-  for (int i = 0; i < N; ++i) {
-    start.col(i) = Vec3(director[3 * i], director[3 * i + 1], director[3 * i + 2]);
-    if (!(start.col(i).squaredNorm() > 0.5)) {
-      return false;
-    }
-  }
-  for (int i = 0; i < N; ++i) {
-    double* c = director + 3 * i;
-    end.col(i) = turn_director(turns.of(nodes[i]), start.col(i));
-    c[0] = end(0, i);
-    c[1] = end(1, i);
-    c[2] = end(2, i);
-  }
-  return true;
+  return turn_element_directors<N>(
+      director, [&](int i) { return turns.of(nodes[i]); }, start, end);
 }
 
 /// An element's directors over the step of `in`: by the nodes' turns where the pass found them

@@ -142,7 +142,7 @@ SF_BLOCK_INLINE auto compute_geometry_lanes(const T (&x)[3][4], GeometryLanes<T>
 /// Lane `j` of `lanes` (the value itself for T = double) as a ShellGeometry.
 template <class T>
 SF_BLOCK_INLINE void unpack_geometry(const GeometryLanes<T>& lanes, int j, ShellGeometry& g) {
-  const auto at = [j](const T& v) {
+  const auto at = [=](const T& v) {  // (j unused for T = double)
     if constexpr (std::is_same_v<T, double>) {
       return v;
     } else {

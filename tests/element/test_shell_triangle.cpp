@@ -627,7 +627,7 @@ TEST(TriangleFailure, CollapseInversionAndNaNNameTheElement) {
   x << 0, 1, 1, 0, 2, 2, 3,   //
       0, 0, 1, 1, 0, 1, 0.5,  //
       0, 0, 0, 0, 0, 0, 0;
-  ShellPart part = test::make_part(QuadConn(4, 1), kSteel);
+  ShellPart part = test::make_part(QuadConn::Zero(4, 1), kSteel);
   part.quads << 0, 1, 2, 3;
   part.triangles = TriConn(3, 2);
   part.triangles << 1, 4,  //
