@@ -2,10 +2,10 @@
 // Belytschko-Lin-Tsay shells, t = 1 mm, 5 Gauss points, steel (E 210 GPa, nu 0.3, Swift
 // K 565 MPa, eps0 0.007, n 0.26), under biaxial stretching plus bending. Prints ns per
 // element-cycle of the solver's internal-force pass (run_element_pass with its scratch kept,
-// then gather_corner_forces with the node lists made once) for: elastic material, J2 staying elastic, J2 with
-// every point yielding, and the same two for Hill48 (r 1.79/1.51/2.27, material axes at 0.5 rad
-// to e1); each with the Belytschko-Tsay formulation (viscous and stiffness hourglass forms) and
-// the assumed-strain formulation.
+// then gather_corner_forces with the node lists made once) for: elastic material, J2 staying
+// elastic, J2 with every point yielding, and the same two for Hill48 (r 1.79/1.51/2.27, material
+// axes at 0.5 rad to e1); each with the Belytschko-Tsay formulation (viscous and stiffness
+// hourglass forms) and the assumed-strain formulation.
 //
 // Each case: the fastest of 5 batches by the wall clock and, beside it, by the thread's CPU time
 // (steadier on a shared machine).
