@@ -39,11 +39,15 @@ struct BendingShearIncrements {
   Vec2 hourglass;     ///< rad, of the director hourglass amplitudes (frame components)
 };
 
+// end_gradients: the gradients of the end-of-step directors, which the forces use again.
 BendingShearIncrements compute_increments(const Quad3& x_start, const Quad3& x_end,
                                           const StepDirectors& d, const QuadBasis& mid,
-                                          const CartesianMap& map) {
-  const DirectorMeasures start = compute_director_measures(x_start, d.old_d, mid);
-  const DirectorMeasures end = compute_director_measures(x_end, d.new_d, mid);
+                                          const CartesianMap& map,
+                                          QuadDirectorGradients& end_gradients) {
+  end_gradients = compute_director_gradients(d.new_d);
+  const DirectorMeasures start =
+      compute_director_measures(x_start, d.old_d, compute_director_gradients(d.old_d), mid);
+  const DirectorMeasures end = compute_director_measures(x_end, d.new_d, end_gradients, mid);
   double de[4];
   for (int k = 0; k < 4; ++k) {
     de[k] = end.edge[k] - start.edge[k];
@@ -141,6 +145,7 @@ class AssumedStrainQuad {
     Quad3 xm;                            // mm, mid-step nodes
     Quad3 vl;                            // mm/s, velocities in the mid-step frame
     StepDirectors d;
+    QuadDirectorGradients end_gradients;  // of d.new_d
     QuadBasis basis_mid;
     CartesianMap map_mid;
     BendingShearIncrements inc;
@@ -179,7 +184,7 @@ class AssumedStrainQuad {
     }
     el.basis_mid = compute_quad_basis(el.xm);
     el.map_mid = make_cartesian_map(el.basis_mid, gm.frame);
-    el.inc = compute_increments(xs, xe, el.d, el.basis_mid, el.map_mid);
+    el.inc = compute_increments(xs, xe, el.d, el.basis_mid, el.map_mid, el.end_gradients);
     s.membrane = dt * d_membrane;
     s.curvature = el.inc.curvature;
     return {};
@@ -234,7 +239,7 @@ class AssumedStrainQuad {
     const QuadBasis basis_end = compute_quad_basis(xe);
     const CartesianMap map_end = make_cartesian_map(basis_end, g.frame);
     const DirectorResultants r = make_director_resultants(map_end, a, sr.m, t * shear.stress, hs);
-    add_director_forces(xe, el.d.new_d, el.basis_mid, r, fg, mg);
+    add_director_forces(xe, el.d.new_d, el.end_gradients, el.basis_mid, r, fg, mg);
     store_corners(fg, mg, corners);
   }
 

@@ -124,14 +124,15 @@ struct DirectorMeasures {
   Vec2 hourglass;
 };
 
-/// The measures of coordinates x and directors d (unit, global components) with the hourglass
-/// vector gamma of `basis` (taken fixed over a step).
+/// The measures of coordinates x and directors d (unit, global components, their gradients dg =
+/// compute_director_gradients(d)) with the hourglass vector gamma of `basis` (taken fixed over a
+/// step).
 inline DirectorMeasures compute_director_measures(const Quad3& x, const Quad3& d,
+                                                  const QuadDirectorGradients& dg,
                                                   const QuadBasis& basis) {
   DirectorMeasures m;
   const Vec3 g_xi = 0.25 * (-x.col(0) + x.col(1) + x.col(2) - x.col(3));
   const Vec3 g_eta = 0.25 * (-x.col(0) - x.col(1) + x.col(2) + x.col(3));
-  const QuadDirectorGradients dg = compute_director_gradients(d);
   const Vec3& d_xi = dg.d_xi;
   const Vec3& d_eta = dg.d_eta;
   m.curvature = Vec3(g_xi.dot(d_xi), g_eta.dot(d_eta), g_xi.dot(d_eta) + g_eta.dot(d_xi));
@@ -157,13 +158,14 @@ struct DirectorResultants {
 };
 
 /// Adds the nodal forces f (N) and moments m (N mm) of the resultants r at coordinates x and
-/// directors d (global components): f_I = r . dM/dx_I, m_I = d_I x (r . dM/dd_I), the latter
-/// because a rotation w_I turns d_I at the rate w_I x d_I. gamma from `basis`, as the measures.
-inline void add_director_forces(const Quad3& x, const Quad3& d, const QuadBasis& basis,
-                                const DirectorResultants& r, Quad3& f, Quad3& m) {
+/// directors d (global components; dg = compute_director_gradients(d)): f_I = r . dM/dx_I,
+/// m_I = d_I x (r . dM/dd_I), the latter because a rotation w_I turns d_I at the rate w_I x d_I.
+/// gamma from `basis`, as the measures.
+inline void add_director_forces(const Quad3& x, const Quad3& d, const QuadDirectorGradients& dg,
+                                const QuadBasis& basis, const DirectorResultants& r, Quad3& f,
+                                Quad3& m) {
   const Vec3 g_xi = 0.25 * (-x.col(0) + x.col(1) + x.col(2) - x.col(3));
   const Vec3 g_eta = 0.25 * (-x.col(0) - x.col(1) + x.col(2) + x.col(3));
-  const QuadDirectorGradients dg = compute_director_gradients(d);
   const Vec3& d_xi = dg.d_xi;
   const Vec3& d_eta = dg.d_eta;
   Vec3 q = Vec3::Zero();
