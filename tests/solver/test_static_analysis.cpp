@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <string>
 
@@ -98,6 +99,52 @@ geometry = "linear"
   EXPECT_EQ(summary.static_step->report.last_factorization.method,
             sf::FactorizationMethod::cholmod);
   EXPECT_GE(summary.static_step->report.last_factorization.fill_ratio, 1.0);
+}
+
+// The cantilever strip meshed in triangles (assumed-strain triangles): a linear analysis is
+// linear in its load, u(2P) = 2 u(P), to the solver's round-off (2e-9 relative), in one Newton
+// iteration each.
+double linear_triangle_strip_tip(double tip_force) {
+  const fs::path folder = fs::path(SF_BINARY_DIR) / "test_output" / "static_triangle_strip";
+  fs::create_directories(folder);
+  std::ifstream quads(fs::path(SF_TEST_DATA_DIR) / "strip.geo");
+  std::ofstream triangles(folder / "strip_triangles.geo");
+  for (std::string line; std::getline(quads, line);) {
+    if (line.rfind("Recombine", 0) != 0) {
+      triangles << line << "\n";
+    }
+  }
+  triangles.close();
+  sf::Model model =
+      build_static_case("static_triangle_strip", (folder / "strip_triangles.geo").string(), 0.0,
+                        fmt::format(R"(
+[[boundary]]
+group = "clamp"
+type = "fixed"
+[[load]]
+group = "tip"
+type = "force"
+value = [0.0, 0.0, {}]
+[analysis]
+type = "static"
+geometry = "linear"
+)",
+                                    0.5 * tip_force),
+                        "element = \"as_meshed\"\n");
+  EXPECT_GT(model.blank.part.triangles.cols(), 0);
+  EXPECT_EQ(model.blank.part.quads.cols(), 0);
+  sf::RunSummary summary;
+  const sf::SolutionState s = run(model, &summary);
+  EXPECT_TRUE(summary.static_step.has_value() &&
+              summary.static_step->report.newton_iterations == 1);
+  return mean_tip(model, s, 2);
+}
+
+TEST(StaticAnalysis, LinearAnalysisOfTrianglesIsLinearInTheLoad) {
+  const double w1 = linear_triangle_strip_tip(10.0);
+  const double w2 = linear_triangle_strip_tip(20.0);
+  EXPECT_GT(w1, 0.0);
+  EXPECT_NEAR(w2 / w1, 2.0, 2e-9) << "tip deflections " << w1 << " and " << w2 << " mm";
 }
 
 // The patch: left edge symmetric in x, bottom edge symmetric in y; consistent edge loads on the
