@@ -21,8 +21,8 @@ struct ElementInputs {
   /// true in the implicit static steps, whose dt is a pseudo-time: rate-dependent laws then take
   /// their rate-free flow stress.
   bool pseudo_time = false;
-  /// Each node's director turn over the step (dt omega), or null: each element turns its
-  /// directors itself (the same bits). run_element_pass finds them when the part has directors.
+  /// Each node's director turn over the step (dt omega): run_element_pass finds them for a part
+  /// whose elements turn directors (assumed strain); null otherwise.
   const NodeTurns* turns = nullptr;
 
   double rate_dt() const { return pseudo_time ? 0.0 : dt; }  ///< s, for rate-dependent laws

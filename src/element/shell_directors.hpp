@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "core/types.hpp"
-#include "element/element_pass.hpp"
 #include "element/node_turns.hpp"
 #include "element/shell_part.hpp"
 
@@ -60,7 +59,8 @@ template <int N, class TurnOf>
   return true;
 }
 
-/// The directors turned by dt w_I (w: the element's nodal angular velocities, rad/s; dt: s).
+/// The directors turned by dt w_I (w: the element's nodal angular velocities, rad/s; dt: s): the
+/// reference the node turns below must reproduce bit for bit (tests/element/test_node_turns.cpp).
 template <int N>
 [[nodiscard]] inline bool advance_element_directors(double* director,
                                                     const Eigen::Matrix<double, 3, N>& w, double dt,
@@ -79,18 +79,6 @@ template <int N>
                                                     Eigen::Matrix<double, 3, N>& end) {
   return turn_element_directors<N>(
       director, [&](int i) { return turns.of(nodes[i]); }, start, end);
-}
-
-/// An element's directors over the step of `in`: by the nodes' turns where the pass found them
-/// (in.turns), else by dt w_I (w: the element's nodal angular velocities); the same bits.
-template <int N>
-[[nodiscard]] inline bool advance_element_directors(double* director, const int* nodes,
-                                                    const Eigen::Matrix<double, 3, N>& w,
-                                                    const ElementInputs& in,
-                                                    Eigen::Matrix<double, 3, N>& start,
-                                                    Eigen::Matrix<double, 3, N>& end) {
-  return in.turns ? advance_element_directors<N>(director, nodes, *in.turns, start, end)
-                  : advance_element_directors<N>(director, w, in.dt, start, end);
 }
 
 }  // namespace sf

@@ -165,7 +165,7 @@ ShellForceResult run_element_pass(const ShellPart& part, const ElementInputs& in
   }
   // The directors' turn at each node, once per pass instead of once per element corner.
   ElementInputs with_turns = in;
-  if (part.formulation == ShellFormulation::assumed_strain && in.turns == nullptr) {
+  if (part.formulation == ShellFormulation::assumed_strain) {
     compute_node_turns(in.omega, in.dt, pass.turns);
     with_turns.turns = &pass.turns;
   }

@@ -164,10 +164,10 @@ class AssumedStrainQuad {
 
   // Membrane: the one-point velocity strain on the mid-step geometry (exact zero for a rigid
   // rotation step); curvature and transverse shear: the change of the director measures from the
-  // start to the end of the step, in the mid-step frame. Turns the element's directors by dt
-  // omega.
+  // start to the end of the step, in the mid-step frame. Turns the element's directors by its
+  // nodes' turns (dt omega, found once per node: ElementInputs::turns).
   SF_ELEMENT_STAGE StageResult strains(int e, const int* nodes, const Quad3& xe, const Quad3& ve,
-                                       const Quad3& we, Element& el, SectionStrains& s) {
+                                       const Quad3& /*we*/, Element& el, SectionStrains& s) {
     const double dt = in_.dt;
     el.xm = xe - (0.5 * dt) * ve;
     const Quad3 xs = xe - dt * ve;
@@ -179,7 +179,7 @@ class AssumedStrainQuad {
     const Vec3 d_membrane(gm.b.row(0).dot(el.vl.row(0)), gm.b.row(1).dot(el.vl.row(1)),
                           gm.b.row(1).dot(el.vl.row(0)) + gm.b.row(0).dot(el.vl.row(1)));
     if (!advance_element_directors(directors_ + 3 * kDirectorNodes * static_cast<std::ptrdiff_t>(e),
-                                   nodes, we, in_, el.d.old_d, el.d.new_d)) {
+                                   nodes, *in_.turns, el.d.old_d, el.d.new_d)) {
       return {ElementFailure::Kind::directors_not_set};
     }
     el.basis_mid = compute_quad_basis(el.xm);

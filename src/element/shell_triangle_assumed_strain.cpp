@@ -43,9 +43,9 @@ class AssumedStrainTriangle {
 
   // Membrane strain from the velocities on the mid-step geometry; curvature and shear from the
   // change of the director measures over the step, in the mid-step frame. Turns the element's
-  // directors by dt omega.
+  // directors by its nodes' turns (dt omega, found once per node: ElementInputs::turns).
   SF_ELEMENT_STAGE StageResult strains(int e, const int* nodes, const Tri3& xe, const Tri3& ve,
-                                       const Tri3& we, Element& el, SectionStrains& s) const {
+                                       const Tri3& /*we*/, Element& el, SectionStrains& s) const {
     const double dt = in_.dt;
     const Tri3 xm = xe - (0.5 * dt) * ve;
     const Tri3 xs = xe - dt * ve;
@@ -58,7 +58,7 @@ class AssumedStrainTriangle {
                           gm.by.dot(vl.row(0)) + gm.bx.dot(vl.row(1)));
     Tri3 d_start;
     if (!advance_element_directors(directors_ + 3 * kDirectorNodes * static_cast<std::ptrdiff_t>(e),
-                                   nodes, we, in_, d_start, el.d_end)) {
+                                   nodes, *in_.turns, d_start, el.d_end)) {
       return {ElementFailure::Kind::directors_not_set};
     }
     const TriangleDirectorMeasures start = compute_triangle_director_measures(xs, d_start);

@@ -11,6 +11,23 @@
 
 namespace sf {
 
+namespace {
+
+// One point's update through the batched kernels, a failure thrown as an InstabilityError.
+template <class Kernel>
+PlaneStressUpdate update_one_point(const Kernel& kernel, const PlaneStressState& old,
+                                   const Vec3& d_strain) {
+  PlaneStressUpdate up;
+  MaterialFailure failure;
+  if (!update_points(kernel, 1, &old.stress, &old.eps_p, &d_strain, FlowStressCache{}, &up,
+                     failure)) {
+    throw_if_failed(failure);
+  }
+  return up;
+}
+
+}  // namespace
+
 Mat3 plane_stress_stiffness(double E, double nu) {
   const double f = E / (1.0 - nu * nu);
   Mat3 c;
@@ -27,25 +44,13 @@ double plane_stress_wave_speed(double E, double nu, double rho) {
 }
 
 PlaneStressUpdate ElasticPlaneStress::update(const State& old, const Vec3& d_strain) const {
-  PlaneStressUpdate up;
-  MaterialFailure failure;
-  if (!update_points(ElasticKernel(*this), 1, &old.stress, &old.eps_p, &d_strain, FlowStressCache{},
-                     &up, failure)) {
-    throw_if_failed(failure);
-  }
-  return up;
+  return update_one_point(ElasticKernel(*this), old, d_strain);
 }
 
 // The single-point update is a batch of one (plane_stress_batch.hpp): the element loops' batched
 // update gives the same bits.
 PlaneStressUpdate J2PlaneStress::update(const State& old, const Vec3& d_strain) const {
-  PlaneStressUpdate up;
-  MaterialFailure failure;
-  if (!update_points(J2Kernel(*this), 1, &old.stress, &old.eps_p, &d_strain, FlowStressCache{}, &up,
-                     failure)) {
-    throw_if_failed(failure);
-  }
-  return up;
+  return update_one_point(J2Kernel(*this), old, d_strain);
 }
 
 Hill48Coefficients hill48_coefficients(double r0, double r45, double r90) {
@@ -62,13 +67,7 @@ double hill48_equivalent_stress(const Hill48Coefficients& c, const Vec3& s) {
 }
 
 PlaneStressUpdate Hill48PlaneStress::update(const State& old, const Vec3& d_strain) const {
-  PlaneStressUpdate up;
-  MaterialFailure failure;
-  if (!update_points(Hill48Kernel(*this), 1, &old.stress, &old.eps_p, &d_strain, FlowStressCache{},
-                     &up, failure)) {
-    throw_if_failed(failure);
-  }
-  return up;
+  return update_one_point(Hill48Kernel(*this), old, d_strain);
 }
 
 Vec3 rotate_strain(const Vec3& e, double angle) {

@@ -68,20 +68,28 @@ double mean_tip(const sf::Model& model, const sf::SolutionState& s, int componen
   return sum / static_cast<double>(tip.size());
 }
 
-TEST(StaticAnalysis, LinearCantileverMatchesTheBeamFormula) {
-  const double force = 10.0;  // N in total, 5 N on each of the two tip nodes
-  sf::Model model = build_static_case("static_cantilever_linear", "strip.geo", 0.0, R"(
+// The strip clamped at x = 0 under a transverse tip force (N in total, half on each of the two
+// tip nodes), linear analysis: the case's boundaries, loads and [analysis].
+std::string linear_cantilever(double tip_force) {
+  return fmt::format(R"(
 [[boundary]]
 group = "clamp"
 type = "fixed"
 [[load]]
 group = "tip"
 type = "force"
-value = [0.0, 0.0, 5.0]
+value = [0.0, 0.0, {}]
 [analysis]
 type = "static"
 geometry = "linear"
-)");
+)",
+                     0.5 * tip_force);
+}
+
+TEST(StaticAnalysis, LinearCantileverMatchesTheBeamFormula) {
+  const double force = 10.0;  // N in total, 5 N on each of the two tip nodes
+  sf::Model model =
+      build_static_case("static_cantilever_linear", "strip.geo", 0.0, linear_cantilever(force));
   sf::RunSummary summary;
   const sf::SolutionState s = run(model, &summary);
   const double bending = force * std::pow(kLength, 3) / (3.0 * kYoung * kInertia);
@@ -117,20 +125,7 @@ double linear_triangle_strip_tip(double tip_force) {
   triangles.close();
   sf::Model model =
       build_static_case("static_triangle_strip", (folder / "strip_triangles.geo").string(), 0.0,
-                        fmt::format(R"(
-[[boundary]]
-group = "clamp"
-type = "fixed"
-[[load]]
-group = "tip"
-type = "force"
-value = [0.0, 0.0, {}]
-[analysis]
-type = "static"
-geometry = "linear"
-)",
-                                    0.5 * tip_force),
-                        "element = \"as_meshed\"\n");
+                        linear_cantilever(tip_force), "element = \"as_meshed\"\n");
   EXPECT_GT(model.blank.part.triangles.cols(), 0);
   EXPECT_EQ(model.blank.part.quads.cols(), 0);
   sf::RunSummary summary;
