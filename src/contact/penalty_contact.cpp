@@ -48,30 +48,69 @@ bool bound_node(const ContactPair& pair, NodeDistanceBounds& bounds, int i, cons
   return bounds.beyond_cutoff(i, p);
 }
 
-// Whether node i at p provably has no tool triangle within the cutoff (then the search would
-// find none and the node exerts no force). A node that had the tool within the cutoff at its
-// last query is searched without bounding it first (it most likely still has).
-bool provably_beyond_cutoff(const ContactPair& pair, NodeDistanceBounds& bounds, int i,
-                            const Vec3& p) {
-  if (bounds.beyond_cutoff(i, p)) {
+// Whether node i at p with half thickness h is provably out of contact: no tool triangle within
+// the cutoff (then the search would find none), or its front bound holds. A node that had the
+// tool within the cutoff at its last query is searched without bounding it first (it most likely
+// still has).
+bool provably_out_of_contact(const ContactPair& pair, NodeDistanceBounds& bounds, int i,
+                             const Vec3& p, double h) {
+  if (bounds.beyond_cutoff(i, p) || bounds.provably_apart(i, p, h)) {
     return true;
   }
   return !bounds.was_within_cutoff(i) && bound_node(pair, bounds, i, p);
 }
 
+// A front bound is taken only for a node whose gap is at least this many cutoffs (a node closer
+// would soon be searched again anyway), and not again within this many cutoffs of a failed one.
+constexpr double front_min_gap = 0.05;
+constexpr double front_retry = 0.25;
+
+// Takes node i's front bound at p, where it was found apart with gap g >= 0 (mm) and half
+// thickness h (mm). Proof (docs/contact.md, "Nodes near a tool but out of contact"): at p' with
+// delta = |p' - p|, a gap D - h < 0 with D > -h - cutoff needs |D| < h + cutoff, so it would come
+// from a triangle within reach = h + 2 cutoff of p when delta + h <= reach - cutoff; on such a
+// triangle D has the sign of p' against its plane (the nodal normals agree with the face normal),
+// which stays positive while delta < least side; the orthogonal fallback's sign is that of every
+// face normal within reach while the cone condition holds; and then D >= distance(p') >=
+// distance(p) - delta >= h. Rounding is covered by 10 of the bound's allowances.
+void bound_front(const ContactPair& pair, NodeDistanceBounds& bounds, int i, const Vec3& p,
+                 double h, double g) {
+  if (!(g >= front_min_gap * pair.cutoff) ||
+      !bounds.may_bound_front(i, p, front_retry * pair.cutoff)) {
+    return;
+  }
+  const ToolDistanceBound& tool = *pair.distance_bound;
+  const double reach = h + 2.0 * pair.cutoff;
+  const FrontClearance front = tool.front_clearance(p, reach);
+  const double allowance = 10.0 * tool.rounding_allowance(p.cwiseAbs().maxCoeff(), reach);
+  const double gap = std::min(front.distance, reach - pair.cutoff) - allowance;
+  double side = -1.0;
+  if (front.sided) {
+    // The fallback's sign: the angle b between p' - (closest point) and its triangle's normal
+    // has cos b >= (least side - delta) / (nearest + delta), above the cone's sine.
+    side = std::isfinite(front.nearest)
+               ? (front.least_side - allowance - front.cone_sine * front.nearest) /
+                     (1.0 + front.cone_sine)
+               : gap;
+  }
+  bounds.set_front(i, p, side, gap);
+}
+
 // The distance D along the normal and the unit normal of the gap of a node at p whose search
-// answer is cp (a triangle within the cutoff), per pair.projection.
-void gap_geometry(const ContactPair& pair, const Vec3& p, const ClosestPoint& cp,
-                  ContactShare& result, double& distance, Vec3& normal) {
+// answer is cp (a triangle within the cutoff), per pair.projection; whether an interpolated
+// projection fell back to the orthogonal one.
+bool gap_geometry(const ContactPair& pair, const Vec3& p, const ClosestPoint& cp, double& distance,
+                  Vec3& normal) {
   distance = cp.signed_distance;
   normal = cp.normal;
   if (pair.projection == ContactProjection::interpolated) {
     InterpolatedProjection ip;
     pair.projector->project(p, cp, ip);
-    result.projection_fallbacks += ip.fallback ? 1 : 0;
     distance = ip.distance;
     normal = ip.normal;
+    return ip.fallback;
   }
+  return false;
 }
 
 // The penalty and friction force on node i with gap g = distance - h < 0 along `normal`, into
@@ -135,7 +174,8 @@ NodeOutcome node_contact(const ContactPair& pair, ContactState& state,
                          const ContactKinematics& kinematics, bool rotating, int i, const Vec3& p,
                          ContactShare& result, Matrix3X& f_contact) {
   const bool bounded = pair.distance_bound != nullptr;
-  if (bounded && provably_beyond_cutoff(pair, state.distance_bounds, i, p)) {
+  const double h = kinematics.half_thickness[i];
+  if (bounded && provably_out_of_contact(pair, state.distance_bounds, i, p, h)) {
     return NodeOutcome::skipped;
   }
   ClosestPoint cp;
@@ -152,11 +192,17 @@ NodeOutcome node_contact(const ContactPair& pair, ContactState& state,
   }
   double distance = 0;
   Vec3 normal;
-  gap_geometry(pair, p, cp, result, distance, normal);
-  const double h = kinematics.half_thickness[i];
+  const bool fallback = gap_geometry(pair, p, cp, distance, normal);
   const double g = distance - h;
   if (!(g < 0 && distance > -h - pair.cutoff)) {
+    if (bounded && g >= 0) {
+      bound_front(pair, state.distance_bounds, i, p, h, g);
+    }
     return NodeOutcome::apart;
+  }
+  result.projection_fallbacks += fallback ? 1 : 0;
+  if (bounded) {
+    state.distance_bounds.clear_front(i);
   }
   if (rotating) {
     normal = kinematics.tool_rotation * normal;  // found in the tool's mesh frame

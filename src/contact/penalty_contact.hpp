@@ -77,11 +77,13 @@ struct ContactResult {
   /// (moment_on_tool - c x force_on_tool) . axis)
   Vec3 moment_on_tool = Vec3::Zero();
   int nodes_in_contact = 0;
-  double energy = 0;             ///< penalty energy sum 1/2 k g^2, N mm
-  double friction_work = 0;      ///< friction work dissipated in this call, N mm (>= 0)
-  int sliding_nodes = 0;         ///< nodes in contact whose friction force is at the Coulomb limit
-  int sticking_nodes = 0;        ///< nodes in contact below the limit (friction active)
-  int projection_fallbacks = 0;  ///< interpolated projections that fell back to the orthogonal
+  double energy = 0;         ///< penalty energy sum 1/2 k g^2, N mm
+  double friction_work = 0;  ///< friction work dissipated in this call, N mm (>= 0)
+  int sliding_nodes = 0;     ///< nodes in contact whose friction force is at the Coulomb limit
+  int sticking_nodes = 0;    ///< nodes in contact below the limit (friction active)
+  /// Nodes in contact whose interpolated projection fell back to the orthogonal one (nodes out of
+  /// contact are not counted: the bounds may skip them).
+  int projection_fallbacks = 0;
   /// Per TableEnd: the nodes whose contact pressure or slip speed lay beyond that end of the
   /// friction tables (their end value held).
   int beyond_table[kTableEnds] = {};

@@ -2,13 +2,19 @@
 // tool (against the brute-force oracle) and is exact within its reach; skipping the nodes that
 // the bounds prove beyond the cutoff changes nothing, bit for bit, over a moving sequence on a
 // curved tool (nodes approaching, touching and leaving it, the tool moving), with friction and
-// the interpolated projection, for the cached and the modified search.
+// the interpolated projection, for the cached and the modified search. The front bounds (nodes
+// within the cutoff proved out of contact) the same way, around a tool's edges, behind it and over
+// a crease, where the side a node is on decides its contact.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstring>
+#include <functional>
+#include <limits>
 #include <memory>
+#include <numbers>
 #include <random>
+#include <vector>
 
 #include "allocation_counter.hpp"
 #include "brute_force_oracle.hpp"
@@ -83,6 +89,16 @@ bool same_result(const ContactResult& a, const ContactResult& b) {
          a.sticking_nodes == b.sticking_nodes && a.projection_fallbacks == b.projection_fallbacks;
 }
 
+/// The contact's per-node results: normal forces and sliding distances.
+bool same_state(const ContactState& a, const ContactState& b) {
+  const auto same = [](const VectorX& x, const VectorX& y) {
+    return x.size() == y.size() &&
+           std::memcmp(x.data(), y.data(), sizeof(double) * static_cast<std::size_t>(x.size())) ==
+               0;
+  };
+  return same(a.normal_force, b.normal_force) && same(a.sliding_distance, b.sliding_distance);
+}
+
 TEST(DistanceBound, SkippingGivesTheSameForcesAsSearchingEveryNode) {
   // 13 x 13 nodes over [-6, 6]^2 (some beyond the tool's edge) at z = 3.2 mm, h = 0.4 mm,
   // wandering 4e-3 mm per step in random directions; the bowl rises 3.6 mm in 180 steps while
@@ -128,6 +144,8 @@ TEST(DistanceBound, SkippingGivesTheSameForcesAsSearchingEveryNode) {
     ASSERT_TRUE(same_result(r_mod, r_ref)) << "step " << k;
     ASSERT_TRUE(same_bits(skipping.state.stick_force, reference.state.stick_force)) << k;
     ASSERT_TRUE(same_bits(skipping_modified.state.stick_force, reference.state.stick_force)) << k;
+    ASSERT_TRUE(same_state(skipping.state, reference.state)) << k;
+    ASSERT_TRUE(same_state(skipping_modified.state, reference.state)) << k;
     most_in_contact = std::max(most_in_contact, r_ref.nodes_in_contact);
     last_in_contact = r_ref.nodes_in_contact;
     // The next step: the nodes wander, the tool moves.
@@ -170,6 +188,254 @@ TEST(DistanceBound, ANodeJumpingTowardsTheToolIsNotSkipped) {
     EXPECT_TRUE(same_result(r_skip, r_ref)) << z;
     EXPECT_EQ(r_ref.nodes_in_contact, z < 0.4 ? 1 : 0) << z;
   }
+}
+
+/// The plane of a triangle: the signed distance of p from it, on the side of its normal.
+double plane_side(const TriangleSurface& s, int t, const Vec3& p) {
+  const Vec3 x1 = s.nodes().col(s.triangles()(0, t));
+  return s.triangle_normals().col(t).dot(p - x1);
+}
+
+TEST(ToolDistanceBound, FrontClearanceIsTheBruteForceOneWithinReach) {
+  // Against every triangle by brute force (the oracle's distance): the least plane side and the
+  // least distance over the triangles within reach, and the normal cone, on the bowl (smooth:
+  // sided) and on a roof creased by 2 atan(2) = 127 degrees (not sided near the crease).
+  const TriangleSurface bowl = make_bowl();
+  const TriangleSurface roof = test::make_height_field(
+      "roof", 8, 8, -4, 4, -4, 4, [](double x, double) { return -2.0 * std::abs(x); });
+  const double reach = 1.5;
+  int sided = 0, unsided = 0;
+  for (const TriangleSurface* s : {&bowl, &roof}) {
+    const ToolDistanceBound bound(*s);
+    for (const Vec3& p : test::random_points(1500, Vec3(-5, -5, -9), Vec3(5, 5, 6), 7)) {
+      double nearest = std::numeric_limits<double>::infinity();
+      double least_side = nearest;
+      std::vector<int> within;
+      for (int t = 0; t < s->num_triangles(); ++t) {
+        const Vec3 q = oracle::closest_point_on_triangle(p, s->nodes().col(s->triangles()(0, t)),
+                                                         s->nodes().col(s->triangles()(1, t)),
+                                                         s->nodes().col(s->triangles()(2, t)));
+        const double d = (q - p).norm();
+        if (d <= reach) {
+          nearest = std::min(nearest, d);
+          least_side = std::min(least_side, plane_side(*s, t, p));
+          within.push_back(t);
+        }
+      }
+      const FrontClearance front = bound.front_clearance(p, reach);
+      if (within.empty()) {
+        EXPECT_GE(front.distance, reach - 1e-12) << p.transpose();
+        continue;
+      }
+      EXPECT_NEAR(front.nearest, nearest, 1e-12) << p.transpose();
+      EXPECT_NEAR(front.distance, nearest, 1e-12) << p.transpose();
+      EXPECT_NEAR(front.least_side, least_side, 1e-12) << p.transpose();
+      // The largest angle between two face normals within reach: a sided answer needs it below
+      // 90 degrees, and its sine bounds that angle's.
+      double least_cos = 1.0;
+      for (const int a : within) {
+        for (const int b : within) {
+          least_cos =
+              std::min(least_cos, s->triangle_normals().col(a).dot(s->triangle_normals().col(b)));
+        }
+      }
+      if (front.sided) {
+        EXPECT_GT(least_cos, 0.0) << p.transpose();
+        EXPECT_GE(front.cone_sine, std::sqrt(1.0 - least_cos * least_cos) - 1e-12) << p.transpose();
+        ++sided;
+      } else {
+        ++unsided;
+      }
+      if (s == &bowl) {
+        EXPECT_TRUE(front.sided) << p.transpose();  // 20 degrees at most within reach
+      }
+      if (least_cos < 0.0) {
+        EXPECT_FALSE(front.sided) << p.transpose();
+      }
+    }
+  }
+  EXPECT_GT(sided, 300);
+  EXPECT_GT(unsided, 50);
+}
+
+/// Runs `steps` contact calls of nodes x wandering (`wander` mm per step, random directions) with
+/// the tool moving by tool_step(k), without bounds (the reference) and with them (cached and
+/// modified search); asserts the same forces, results and stick forces, bit for bit, at every
+/// step. Returns {node queries that reached the bounded cached search, node-steps with the tool
+/// within the cutoff (brute force), most nodes in contact in a step, node-steps pressed while
+/// below z = 0 (behind a flat tool at z = 0)}.
+struct SequenceCounts {
+  long searched = 0, within_cutoff = 0;
+  int most_in_contact = 0;
+  long pressed_from_behind = 0;
+};
+
+SequenceCounts run_sequence(const TriangleSurface& s, Matrix3X x, double h, int steps,
+                            double wander, const std::function<Vec3(int)>& tool_step) {
+  const int n = static_cast<int>(x.cols());
+  const VectorX half = VectorX::Constant(n, h);
+  const double dt = 1e-3;  // s
+  Contact reference = make_contact(s, "cached", false, n);
+  Contact skipping = make_contact(s, "cached", true, n);
+  Contact skipping_modified = make_contact(s, "modified", true, n);
+  std::mt19937 rng(5);
+  std::normal_distribution<double> g(0.0, 1.0);
+  Vec3 tool = Vec3::Zero();
+  Matrix3X v = Matrix3X::Zero(3, n);
+  SequenceCounts counts;
+  for (int k = 0; k < steps; ++k) {
+    const Vec3 step = tool_step(k);
+    Matrix3X f_ref = Matrix3X::Zero(3, n), f_skip = f_ref, f_mod = f_ref;
+    const ContactKinematics kinematics{
+        x, v, half, tool, k > 0 ? step : Vec3::Zero(), k > 0 ? dt : 0.0};
+    const ContactResult r_ref =
+        compute_penalty_contact(reference.pair, reference.state, kinematics, f_ref);
+    const ContactResult r_skip =
+        compute_penalty_contact(skipping.pair, skipping.state, kinematics, f_skip);
+    const ContactResult r_mod =
+        compute_penalty_contact(skipping_modified.pair, skipping_modified.state, kinematics, f_mod);
+    EXPECT_TRUE(same_bits(f_skip, f_ref)) << "step " << k;
+    EXPECT_TRUE(same_bits(f_mod, f_ref)) << "step " << k;
+    EXPECT_TRUE(same_result(r_skip, r_ref)) << "step " << k;
+    EXPECT_TRUE(same_result(r_mod, r_ref)) << "step " << k;
+    EXPECT_TRUE(same_bits(skipping.state.stick_force, reference.state.stick_force)) << k;
+    EXPECT_TRUE(same_state(skipping.state, reference.state)) << k;
+    EXPECT_TRUE(same_state(skipping_modified.state, reference.state)) << k;
+    if (::testing::Test::HasFailure()) {
+      return counts;
+    }
+    counts.most_in_contact = std::max(counts.most_in_contact, r_ref.nodes_in_contact);
+    for (int i = 0; i < n; ++i) {
+      const Vec3 p = x.col(i) - tool;
+      const oracle::OracleAnswer o = oracle::closest(s.nodes(), s.triangles(), p, 0.0);
+      counts.within_cutoff += o.distance <= reference.pair.cutoff ? 1 : 0;
+      counts.pressed_from_behind += f_ref.col(i).squaredNorm() > 0.0 && p.z() < 0.0 ? 1 : 0;
+    }
+    for (int i = 0; i < n; ++i) {
+      v.col(i) = (wander / dt) * Vec3(g(rng), g(rng), g(rng)).normalized();  // mm/s
+    }
+    x += dt * v;
+    tool += step;
+  }
+  const auto& cached = dynamic_cast<const CachedSearch&>(*skipping.pair.search);
+  counts.searched = cached.statistics(*skipping.state.search_cache).queries;
+  std::printf("node-steps: %ld with the tool within the cutoff, %ld searched with the bounds\n",
+              counts.within_cutoff, counts.searched);
+  return counts;
+}
+
+TEST(FrontBound, SkippingNodesNearAFlatToolChangesNothingAroundItsEdgesAndBehindIt) {
+  // A flat square tool [-4, 4]^2 (normal +z) and 17 x 17 nodes over [-6, 6]^2 in layers at
+  // z = +0.6, -0.6 and +1.0 mm, h = 0.4 mm, cutoff 0.8 mm: nodes above it apart or touching as
+  // the tool bobs, nodes below it pressed through (the penalty acts within h + cutoff behind a
+  // tool), nodes beyond its edges turning round them. Without the side test a front bound would
+  // skip a node that went round an edge to the back.
+  const TriangleSurface plate =
+      test::make_height_field("plate", 8, 8, -4, 4, -4, 4, [](double, double) { return 0.0; });
+  const int side = 17;
+  Matrix3X x(3, side * side);
+  for (int j = 0; j < side; ++j) {
+    for (int i = 0; i < side; ++i) {
+      const double z = (i + j) % 3 == 0 ? 0.6 : ((i + j) % 3 == 1 ? -0.6 : 1.0);
+      x.col(j * side + i) = Vec3(-6.0 + 0.75 * i, -6.0 + 0.75 * j, z);
+    }
+  }
+  const SequenceCounts counts = run_sequence(plate, x, 0.4, 400, 4e-3, [](int k) {
+    return Vec3(0.003, 0.001, 0.004 * std::sin(0.05 * k));  // mm
+  });
+  EXPECT_GT(counts.most_in_contact, 20);
+  EXPECT_GT(counts.pressed_from_behind, 1000);
+  // The front bounds did skip nodes within the cutoff.
+  EXPECT_LT(counts.searched, counts.within_cutoff * 3 / 4);
+}
+
+TEST(FrontBound, SkippingNodesNearACreasedToolChangesNothing) {
+  // A roof creased by 2 atan(0.25) = 28 degrees (sided, the cone's sine 0.47) and by 127 degrees
+  // (not sided along the crease), nodes wandering over and under it as it rises and falls.
+  for (const double slope : {0.25, 2.0}) {
+    const TriangleSurface roof = test::make_height_field(
+        "roof", 8, 8, -4, 4, -4, 4, [slope](double x, double) { return -slope * std::abs(x); });
+    const int side = 15;
+    Matrix3X x(3, side * side);
+    for (int j = 0; j < side; ++j) {
+      for (int i = 0; i < side; ++i) {
+        const double px = -5.0 + 10.0 * i / (side - 1), py = -5.0 + 10.0 * j / (side - 1);
+        const double z = -slope * std::min(std::abs(px), 4.0) + ((i + j) % 2 == 0 ? 0.7 : -0.55);
+        x.col(j * side + i) = Vec3(px, py, z);
+      }
+    }
+    const SequenceCounts counts = run_sequence(roof, x, 0.4, 300, 3e-3, [](int k) {
+      return Vec3(0.002, -0.001, 0.004 * std::cos(0.04 * k));  // mm
+    });
+    EXPECT_GT(counts.most_in_contact, 10) << slope;
+    EXPECT_LT(counts.searched, counts.within_cutoff) << slope;
+  }
+}
+
+TEST(FrontBound, ANodeBackNearItsBoundAfterAPressHasItsForcesReset) {
+  // Apart at 0.7 mm above the bowl (a front bound: 0.3 mm of gap slack), pressed at 0.3 mm (the
+  // bound ran out), then back at 0.65 mm: within the old bound's slack, apart, and its normal
+  // and stick forces must be zero again, as the search leaves them.
+  const TriangleSurface s = make_bowl();
+  Contact reference = make_contact(s, "cached", false, 1);
+  Contact skipping = make_contact(s, "cached", true, 1);
+  const VectorX h = VectorX::Constant(1, 0.4);
+  const Matrix3X v = Matrix3X::Constant(3, 1, 1.0);  // mm/s: sliding, so friction sticks or slips
+  for (const double z : {0.7, 0.3, 0.65, 0.3, 0.66}) {
+    const Matrix3X x = Vec3(0.3, -0.2, z);
+    Matrix3X f_ref = Matrix3X::Zero(3, 1), f_skip = f_ref;
+    const ContactKinematics kinematics{x, v, h, Vec3::Zero(), Vec3::Zero(), 1e-3};
+    const ContactResult r_ref =
+        compute_penalty_contact(reference.pair, reference.state, kinematics, f_ref);
+    const ContactResult r_skip =
+        compute_penalty_contact(skipping.pair, skipping.state, kinematics, f_skip);
+    EXPECT_TRUE(same_bits(f_skip, f_ref)) << z;
+    EXPECT_TRUE(same_result(r_skip, r_ref)) << z;
+    EXPECT_TRUE(same_state(skipping.state, reference.state)) << z;
+    EXPECT_TRUE(same_bits(skipping.state.stick_force, reference.state.stick_force)) << z;
+    EXPECT_EQ(r_ref.nodes_in_contact, z < 0.4 ? 1 : 0) << z;
+  }
+}
+
+TEST(FrontBound, ANodeMovingIntoATieOfTwoFacetsAcrossAWideAngleIsNotSkipped) {
+  // Two separate facets (a soup: every projection beyond their edges falls back to the
+  // orthogonal one) whose edges are 0.6 mm from the origin along -x and -z, both facing the
+  // origin's side of their planes, their normals 124 degrees apart. At the origin the two tie,
+  // and the fallback's sign (p - the first facet's point against the mean normal) is negative:
+  // pressed (D = -0.6 > -h - cutoff). 1e-3 mm towards the first facet it is apart (D = +0.599):
+  // every plane side is positive there, so only the normal cone keeps a front bound from
+  // skipping the node's step into the tie.
+  const double a = 10.0 * std::numbers::pi / 180.0, b = 60.0 * std::numbers::pi / 180.0;
+  Matrix3X nodes(3, 6);
+  nodes.col(0) = Vec3(0.6, 5, 0);  // facet A, normal (-sin a, 0, cos a)
+  nodes.col(1) = Vec3(0.6, -5, 0);
+  nodes.col(2) = Vec3(0.6 + 3 * std::cos(a), 0, 3 * std::sin(a));
+  nodes.col(3) = Vec3(0, -5, 0.6);  // facet B, normal (sin b, 0, -cos b)
+  nodes.col(4) = Vec3(0, 5, 0.6);
+  nodes.col(5) = Vec3(3 * std::cos(b), 0, 0.6 + 3 * std::sin(b));
+  TriConn tri(3, 2);
+  tri << 0, 3, 1, 4, 2, 5;
+  const TriangleSurface facets("facets", nodes, tri);
+  ASSERT_LT(facets.triangle_normals().col(0).dot(facets.triangle_normals().col(1)), -0.5);
+  Contact reference = make_contact(facets, "modified", false, 1);
+  Contact skipping = make_contact(facets, "modified", true, 1);
+  const VectorX h = VectorX::Constant(1, 0.4);
+  const Matrix3X v = Matrix3X::Zero(3, 1);
+  int pressed = 0;
+  for (const double x : {1e-3, 0.0, 1e-3, 0.0}) {
+    const Matrix3X p = Vec3(x, 0, 0);
+    Matrix3X f_ref = Matrix3X::Zero(3, 1), f_skip = f_ref;
+    const ContactKinematics kinematics{p, v, h, Vec3::Zero(), Vec3::Zero(), 1e-3};
+    const ContactResult r_ref =
+        compute_penalty_contact(reference.pair, reference.state, kinematics, f_ref);
+    const ContactResult r_skip =
+        compute_penalty_contact(skipping.pair, skipping.state, kinematics, f_skip);
+    EXPECT_TRUE(same_bits(f_skip, f_ref)) << x;
+    EXPECT_TRUE(same_result(r_skip, r_ref)) << x;
+    EXPECT_EQ(r_ref.nodes_in_contact, x == 0.0 ? 1 : 0) << x;
+    pressed += r_ref.nodes_in_contact;
+  }
+  EXPECT_EQ(pressed, 2);
 }
 
 }  // namespace
