@@ -37,46 +37,25 @@ void size_state(const ContactPair& pair, ContactState& state, int n, bool fricti
   }
 }
 
-// Bounds node i's distance to the tool afresh at p; whether that proves it beyond the cutoff.
-// The search finds a triangle only when its computed distance is <= cutoff; the rounding
-// allowance (1e-9 of the lengths involved) also covers its tie window (1e-12 of them).
-bool bound_node(const ContactPair& pair, NodeDistanceBounds& bounds, int i, const Vec3& p) {
-  const ToolDistanceBound& tool = *pair.distance_bound;
-  const double lower = tool.lower_bound(p, distance_bound_reach_factor * pair.cutoff);
-  const double allowance = tool.rounding_allowance(p.cwiseAbs().maxCoeff(), lower);
-  bounds.set(i, p, lower - pair.cutoff - allowance);
-  return bounds.beyond_cutoff(i, p);
-}
-
-// Whether node i at p with half thickness h is provably out of contact: no tool triangle within
-// the cutoff (then the search would find none), or its front bound holds. A node that had the
-// tool within the cutoff at its last query is searched without bounding it first (it most likely
-// still has).
-bool provably_out_of_contact(const ContactPair& pair, NodeDistanceBounds& bounds, int i,
-                             const Vec3& p, double h) {
-  if (bounds.beyond_cutoff(i, p) || bounds.provably_apart(i, p, h)) {
-    return true;
-  }
-  return !bounds.was_within_cutoff(i) && bound_node(pair, bounds, i, p);
-}
-
-// A front bound is taken only for a node whose gap is at least this many cutoffs (a node closer
-// would soon be searched again anyway), and not again within this many cutoffs of a failed one.
+// A front bound is taken for a node found apart with a gap of at least front_min_gap cutoffs (a
+// node closer would soon be searched again anyway), and for a node bounded beyond the cutoff by
+// less than front_beyond cutoffs (a front bound lets it move about cutoff - h); not again within
+// front_retry cutoffs of a failed attempt.
 constexpr double front_min_gap = 0.05;
+constexpr double front_beyond = 0.5;
 constexpr double front_retry = 0.25;
 
-// Takes node i's front bound at p, where it was found apart with gap g >= 0 (mm) and half
-// thickness h (mm). Proof (docs/contact.md, "Nodes near a tool but out of contact"): at p' with
-// delta = |p' - p|, a gap D - h < 0 with D > -h - cutoff needs |D| < h + cutoff, so it would come
-// from a triangle within reach = h + 2 cutoff of p when delta + h <= reach - cutoff; on such a
-// triangle D has the sign of p' against its plane (the nodal normals agree with the face normal),
-// which stays positive while delta < least side; the orthogonal fallback's sign is that of every
-// face normal within reach while the cone condition holds; and then D >= distance(p') >=
-// distance(p) - delta >= h. Rounding is covered by 10 of the bound's allowances.
+// Takes node i's front bound at p, where it is out of contact with half thickness h (mm). Proof
+// (docs/contact.md, "Nodes near a tool but out of contact"): at p' with delta = |p' - p|, a gap D -
+// h < 0 with D > -h - cutoff needs |D| < h + cutoff, so it would come from a triangle within reach
+// = h + 2 cutoff of p when delta + h <= reach - cutoff; on such a triangle D has the sign of p'
+// against its plane (the nodal normals agree with the face normal), which stays positive while
+// delta < least side; the orthogonal fallback's sign is that of every face normal within reach
+// while the cone condition holds; and then D >= distance(p') >= distance(p) - delta >= h. Rounding
+// is covered by 10 of the bound's allowances.
 void bound_front(const ContactPair& pair, NodeDistanceBounds& bounds, int i, const Vec3& p,
-                 double h, double g) {
-  if (!(g >= front_min_gap * pair.cutoff) ||
-      !bounds.may_bound_front(i, p, front_retry * pair.cutoff)) {
+                 double h) {
+  if (!bounds.may_bound_front(i, p, front_retry * pair.cutoff)) {
     return;
   }
   const ToolDistanceBound& tool = *pair.distance_bound;
@@ -94,6 +73,35 @@ void bound_front(const ContactPair& pair, NodeDistanceBounds& bounds, int i, con
                : gap;
   }
   bounds.set_front(i, p, side, gap);
+}
+
+// Bounds node i's distance to the tool afresh at p (its half thickness h, mm); whether that
+// proves it out of contact. The search finds a triangle only when its computed distance is <=
+// cutoff; the rounding allowance (1e-9 of the lengths involved) also covers its tie window (1e-12
+// of them). A node left little slack beyond the cutoff gets a front bound too.
+bool bound_node(const ContactPair& pair, NodeDistanceBounds& bounds, int i, const Vec3& p,
+                double h) {
+  const ToolDistanceBound& tool = *pair.distance_bound;
+  const double lower = tool.lower_bound(p, distance_bound_reach_factor * pair.cutoff);
+  const double allowance = tool.rounding_allowance(p.cwiseAbs().maxCoeff(), lower);
+  const double slack = lower - pair.cutoff - allowance;
+  bounds.set(i, p, slack);
+  if (slack < front_beyond * pair.cutoff) {
+    bound_front(pair, bounds, i, p, h);
+  }
+  return bounds.beyond_cutoff(i, p) || bounds.provably_apart(i, p, h);
+}
+
+// Whether node i at p with half thickness h is provably out of contact: no tool triangle within
+// the cutoff (then the search would find none), or its front bound holds. A node that had the
+// tool within the cutoff at its last query is searched without bounding it first (it most likely
+// still has).
+bool provably_out_of_contact(const ContactPair& pair, NodeDistanceBounds& bounds, int i,
+                             const Vec3& p, double h) {
+  if (bounds.beyond_cutoff(i, p) || bounds.provably_apart(i, p, h)) {
+    return true;
+  }
+  return !bounds.was_within_cutoff(i) && bound_node(pair, bounds, i, p, h);
 }
 
 // The distance D along the normal and the unit normal of the gap of a node at p whose search
@@ -184,7 +192,7 @@ NodeOutcome node_contact(const ContactPair& pair, ContactState& state,
     if (cp.triangle >= 0) {
       state.distance_bounds.set_within_cutoff(i);
     } else {
-      bound_node(pair, state.distance_bounds, i, p);  // for the next calls
+      bound_node(pair, state.distance_bounds, i, p, h);  // for the next calls
     }
   }
   if (cp.triangle < 0) {
@@ -195,8 +203,8 @@ NodeOutcome node_contact(const ContactPair& pair, ContactState& state,
   const bool fallback = gap_geometry(pair, p, cp, distance, normal);
   const double g = distance - h;
   if (!(g < 0 && distance > -h - pair.cutoff)) {
-    if (bounded && g >= 0) {
-      bound_front(pair, state.distance_bounds, i, p, h, g);
+    if (bounded && g >= front_min_gap * pair.cutoff) {
+      bound_front(pair, state.distance_bounds, i, p, h);
     }
     return NodeOutcome::apart;
   }

@@ -30,10 +30,13 @@ NodeCorners build_node_corners(const ElementBlocks& blocks, int n_nodes) {
   // Filled in ascending slot order, so each node's slots come out ascending.
   std::vector<int> next(list.offsets.begin(), list.offsets.end() - 1);
   list.slots.resize(static_cast<std::size_t>(blocks.corner_count()));
+  list.elements.resize(list.slots.size());
   for (const ElementBlock& block : blocks) {
     for (int slot = block.first_slot; slot < block.slot_end(); ++slot) {
       const auto node = static_cast<std::size_t>(block.node_of_slot(slot));
-      list.slots[static_cast<std::size_t>(next[node]++)] = slot;
+      const auto j = static_cast<std::size_t>(next[node]++);
+      list.slots[j] = slot;
+      list.elements[j] = block.element_of_slot(slot);
     }
   }
   return list;
@@ -98,18 +101,17 @@ void add_flagged_corner_forces(const NodeCorners& nodes, std::span<const double>
   }
 }
 
-void gather_half_thickness(const ElementBlocks& blocks, const NodeCorners& nodes,
-                           std::span<const double> thickness, const VectorX& inverse_element_count,
-                           VectorX& half_thickness) {
+void gather_half_thickness(const NodeCorners& nodes, std::span<const double> thickness,
+                           const VectorX& inverse_element_count, VectorX& half_thickness) {
   const int n = nodes.node_count();
+  const int* offsets = nodes.offsets.data();
+  const int* elements = nodes.elements.data();
+  const double* t = thickness.data();
 #pragma omp parallel for schedule(static) if (n >= kMinParallelNodes)
   for (int i = 0; i < n; ++i) {
     double sum = 0.0;
-    for (int j = nodes.offsets[static_cast<std::size_t>(i)];
-         j < nodes.offsets[static_cast<std::size_t>(i) + 1]; ++j) {
-      const int slot = nodes.slots[static_cast<std::size_t>(j)];
-      const int e = blocks.of_slot(slot).element_of_slot(slot);
-      sum += 0.5 * thickness[static_cast<std::size_t>(e)];
+    for (int j = offsets[i]; j < offsets[i + 1]; ++j) {
+      sum += 0.5 * t[elements[j]];
     }
     half_thickness[i] = sum * inverse_element_count[i];
   }

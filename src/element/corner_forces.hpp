@@ -42,6 +42,9 @@ inline void store_corners(const Eigen::Matrix<double, 3, N>& f,
 struct NodeCorners {
   std::vector<int> offsets;
   std::vector<int> slots;
+  /// The element of each of `slots` (state index): what the per-cycle gathers of element values
+  /// read, instead of finding each slot's block.
+  std::vector<int> elements;
 
   int node_count() const { return offsets.empty() ? 0 : static_cast<int>(offsets.size()) - 1; }
 };
@@ -82,8 +85,7 @@ void add_flagged_corner_forces(const NodeCorners& nodes, std::span<const double>
 
 /// half_thickness[i] = (sum over node i's corners of half their element's thickness) *
 /// inverse_element_count[i]: the mean half thickness around the node (mm), the contact offset.
-void gather_half_thickness(const ElementBlocks& blocks, const NodeCorners& nodes,
-                           std::span<const double> thickness, const VectorX& inverse_element_count,
-                           VectorX& half_thickness);
+void gather_half_thickness(const NodeCorners& nodes, std::span<const double> thickness,
+                           const VectorX& inverse_element_count, VectorX& half_thickness);
 
 }  // namespace sf

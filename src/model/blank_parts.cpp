@@ -204,8 +204,8 @@ VectorX initial_half_thickness(const Blank& blank, const InitialConditions& init
     return VectorX::Constant(blank.mesh.nodes.cols(), 0.5 * initial.thickness);
   }
   VectorX half(blank.mesh.nodes.cols());
-  gather_half_thickness(element_blocks(blank.part), blank.node_corners, initial.element_thickness,
-                        blank.inverse_element_count, half);
+  gather_half_thickness(blank.node_corners, initial.element_thickness, blank.inverse_element_count,
+                        half);
   return half;
 }
 

@@ -133,7 +133,7 @@ class SerialDomain final : public Domain {
                                std::span<const double> thickness,
                                const VectorX& inverse_element_count,
                                VectorX& half_thickness) override {
-    gather_half_thickness(blocks, nodes, thickness, inverse_element_count, half_thickness);
+    gather_half_thickness(nodes, thickness, inverse_element_count, half_thickness);
   }
   void reduce(std::span<ExactSum> /*sums*/) override {}
   StableStep smallest_time_step(std::span<const double> element_dt) override {

@@ -19,8 +19,7 @@ namespace sf {
                                         Matrix3X& /*m*/) {
   std::abort();
 }
-[[gnu::weak]] void gather_half_thickness(const ElementBlocks& /*blocks*/,
-                                         const NodeCorners& /*nodes*/,
+[[gnu::weak]] void gather_half_thickness(const NodeCorners& /*nodes*/,
                                          std::span<const double> /*thickness*/,
                                          const VectorX& /*weight*/, VectorX& /*half_thickness*/) {
   std::abort();

@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
     }
     VectorX h_serial(n_nodes), h = VectorX::Zero(n_nodes);
     const ElementBlocks blocks = element_blocks(part);
-    gather_half_thickness(blocks, nodes, thickness, inverse_count, h_serial);
+    gather_half_thickness(nodes, thickness, inverse_count, h_serial);
     domain.assemble_half_thickness(blocks, nodes, thickness, inverse_count, h);
     bool held_ok = true;
     for (const std::span<const int> list : {domain.owned_nodes(), domain.ghost_nodes()}) {

@@ -141,7 +141,7 @@ TEST(TailorWelded, PartsHoldTheirElementsThicknessAndMaterial) {
   EXPECT_LT(step.element, 8);
   // The contact offset: half an element's own thickness, the mean of two at a weld node.
   sf::VectorX half(model.blank.mesh.nodes.cols());
-  sf::gather_half_thickness(sf::element_blocks(part), model.blank.node_corners, state.thickness,
+  sf::gather_half_thickness(model.blank.node_corners, state.thickness,
                             model.blank.inverse_element_count, half);
   for (Eigen::Index i = 0; i < half.size(); ++i) {
     const double x = model.blank.mesh.nodes(0, i);
