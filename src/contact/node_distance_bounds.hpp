@@ -52,6 +52,13 @@ class NodeDistanceBounds {
   const Matrix3X& anchors() const { return anchor_; }
   VectorX& slacks() { return slack_; }
   const VectorX& slacks() const { return slack_; }
+  /// The front bounds as they are (anchors mm, side and gap slacks mm), for a checkpoint.
+  Matrix3X& front_anchors() { return front_anchor_; }
+  const Matrix3X& front_anchors() const { return front_anchor_; }
+  VectorX& front_sides() { return front_side_; }
+  const VectorX& front_sides() const { return front_side_; }
+  VectorX& front_gaps() { return front_gap_; }
+  const VectorX& front_gaps() const { return front_gap_; }
 
   /// Node i found the tool within the cutoff.
   void set_within_cutoff(int i) { slack_[i] = -1.0; }
@@ -85,7 +92,8 @@ class NodeDistanceBounds {
  private:
   Matrix3X anchor_;  ///< where each bound was taken, reference frame, mm
   VectorX slack_;    ///< mm; > 0 a bound, 0 unknown, < 0 within the cutoff at the last query
-  // The front bounds, a shortcut only (a checkpoint does not keep them: they start afresh).
+  // The front bounds, a shortcut only (a checkpoint keeps them, so that a restart skips the same
+  // nodes; the next case's pairs start afresh).
   Matrix3X front_anchor_;  ///< where each front bound was taken (or last failed), mm
   VectorX front_side_;     ///< mm; >= 0 the side slack, < 0 the last attempt failed
   VectorX front_gap_;      ///< mm; the gap slack (delta + h must stay below it)

@@ -21,7 +21,7 @@ namespace {
 constexpr const char* kFormat = "sheetform checkpoint";
 // 2: the operation and the tools' motion origins; 3: turns; 4: the contact's normal forces and
 // sliding distances
-constexpr int kFormatVersion = 4;
+constexpr int kFormatVersion = 5;
 
 std::span<const double> values(const double* data, Eigen::Index size) {
   return {data, static_cast<std::size_t>(size)};

@@ -280,6 +280,14 @@ inline constexpr StateField drawbead_work{"energies/drawbead_work",
 inline constexpr StateField bound_slack{
     "bound_slack", contact, "mm",
     kCheckpoint,   reset,   "distance bound: distance left before a search"};
+// The front bounds (issue 34): kept so that a restart skips the same nodes as the whole run.
+inline constexpr StateField front_anchor{
+    "front_anchor", contact, "mm", kCheckpoint, reset, "front bound: position where it was taken"};
+inline constexpr StateField front_side{
+    "front_side", contact, "mm",
+    kCheckpoint,  reset,   "front bound: side slack (< 0: the last attempt failed)"};
+inline constexpr StateField front_gap{"front_gap", contact, "mm",
+                                      kCheckpoint, reset,   "front bound: gap slack (with h)"};
 }  // namespace state_field
 
 /// SolutionState members visit_state_fields does not visit, and why (tests/solver/
@@ -435,6 +443,10 @@ void visit_state_fields(Visitor& v, State& s) {
     v(f::sliding_distance, p + "sliding_distance", contact.sliding_distance);
     v(f::bound_anchor, p + "bound_anchor", contact.distance_bounds.anchors());
     v(f::bound_slack, p + "bound_slack", contact.distance_bounds.slacks());
+    // (format 5: the front bounds)
+    v(f::front_anchor, p + "front_anchor", contact.distance_bounds.front_anchors());
+    v(f::front_side, p + "front_side", contact.distance_bounds.front_sides());
+    v(f::front_gap, p + "front_gap", contact.distance_bounds.front_gaps());
   }
   // A case with drawbeads only (a case without keeps the layout of format 3).
   if (!s.drawbeads.empty()) {

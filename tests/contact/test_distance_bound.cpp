@@ -99,6 +99,26 @@ bool same_state(const ContactState& a, const ContactState& b) {
   return same(a.normal_force, b.normal_force) && same(a.sliding_distance, b.sliding_distance);
 }
 
+/// One call for a single node at p (velocity v, mm/s; half thickness h, mm) without the bounds
+/// (`reference`) and with them (`skipping`): the same forces, results, contact fields and stick
+/// forces, bit for bit (`what` names the step in a failure). The reference's result.
+ContactResult step_one_node(Contact& reference, Contact& skipping, const Vec3& p, const Vec3& v,
+                            double h, double what) {
+  const Matrix3X x = p, velocity = v;
+  const VectorX half = VectorX::Constant(1, h);
+  Matrix3X f_ref = Matrix3X::Zero(3, 1), f_skip = f_ref;
+  const ContactKinematics kinematics{x, velocity, half, Vec3::Zero(), Vec3::Zero(), 1e-3};
+  const ContactResult r_ref =
+      compute_penalty_contact(reference.pair, reference.state, kinematics, f_ref);
+  const ContactResult r_skip =
+      compute_penalty_contact(skipping.pair, skipping.state, kinematics, f_skip);
+  EXPECT_TRUE(same_bits(f_skip, f_ref)) << what;
+  EXPECT_TRUE(same_result(r_skip, r_ref)) << what;
+  EXPECT_TRUE(same_state(skipping.state, reference.state)) << what;
+  EXPECT_TRUE(same_bits(skipping.state.stick_force, reference.state.stick_force)) << what;
+  return r_ref;
+}
+
 TEST(DistanceBound, SkippingGivesTheSameForcesAsSearchingEveryNode) {
   // 13 x 13 nodes over [-6, 6]^2 (some beyond the tool's edge) at z = 3.2 mm, h = 0.4 mm,
   // wandering 4e-3 mm per step in random directions; the bowl rises 3.6 mm in 180 steps while
@@ -174,19 +194,10 @@ TEST(DistanceBound, ANodeJumpingTowardsTheToolIsNotSkipped) {
   const TriangleSurface s = make_bowl();
   Contact reference = make_contact(s, "modified", false, 1);
   Contact skipping = make_contact(s, "modified", true, 1);
-  const VectorX h = VectorX::Constant(1, 0.4);
-  const Matrix3X v = Matrix3X::Zero(3, 1);
   for (const double z : {9.0, 9.0, 0.3, 0.3, 5.0, 0.2, 1.25, 1.15}) {
-    const Matrix3X x = Vec3(0.3, -0.2, z);
-    Matrix3X f_ref = Matrix3X::Zero(3, 1), f_skip = f_ref;
-    const ContactKinematics kinematics{x, v, h, Vec3::Zero(), Vec3::Zero(), 1e-3};
-    const ContactResult r_ref =
-        compute_penalty_contact(reference.pair, reference.state, kinematics, f_ref);
-    const ContactResult r_skip =
-        compute_penalty_contact(skipping.pair, skipping.state, kinematics, f_skip);
-    EXPECT_TRUE(same_bits(f_skip, f_ref)) << z;
-    EXPECT_TRUE(same_result(r_skip, r_ref)) << z;
-    EXPECT_EQ(r_ref.nodes_in_contact, z < 0.4 ? 1 : 0) << z;
+    const ContactResult r =
+        step_one_node(reference, skipping, Vec3(0.3, -0.2, z), Vec3::Zero(), 0.4, z);
+    EXPECT_EQ(r.nodes_in_contact, z < 0.4 ? 1 : 0) << z;
   }
 }
 
@@ -379,21 +390,10 @@ TEST(FrontBound, ANodeBackNearItsBoundAfterAPressHasItsForcesReset) {
   const TriangleSurface s = make_bowl();
   Contact reference = make_contact(s, "cached", false, 1);
   Contact skipping = make_contact(s, "cached", true, 1);
-  const VectorX h = VectorX::Constant(1, 0.4);
-  const Matrix3X v = Matrix3X::Constant(3, 1, 1.0);  // mm/s: sliding, so friction sticks or slips
+  const Vec3 v = Vec3::Constant(1.0);  // mm/s: sliding, so friction sticks or slips
   for (const double z : {0.7, 0.3, 0.65, 0.3, 0.66}) {
-    const Matrix3X x = Vec3(0.3, -0.2, z);
-    Matrix3X f_ref = Matrix3X::Zero(3, 1), f_skip = f_ref;
-    const ContactKinematics kinematics{x, v, h, Vec3::Zero(), Vec3::Zero(), 1e-3};
-    const ContactResult r_ref =
-        compute_penalty_contact(reference.pair, reference.state, kinematics, f_ref);
-    const ContactResult r_skip =
-        compute_penalty_contact(skipping.pair, skipping.state, kinematics, f_skip);
-    EXPECT_TRUE(same_bits(f_skip, f_ref)) << z;
-    EXPECT_TRUE(same_result(r_skip, r_ref)) << z;
-    EXPECT_TRUE(same_state(skipping.state, reference.state)) << z;
-    EXPECT_TRUE(same_bits(skipping.state.stick_force, reference.state.stick_force)) << z;
-    EXPECT_EQ(r_ref.nodes_in_contact, z < 0.4 ? 1 : 0) << z;
+    const ContactResult r = step_one_node(reference, skipping, Vec3(0.3, -0.2, z), v, 0.4, z);
+    EXPECT_EQ(r.nodes_in_contact, z < 0.4 ? 1 : 0) << z;
   }
 }
 
@@ -419,21 +419,11 @@ TEST(FrontBound, ANodeMovingIntoATieOfTwoFacetsAcrossAWideAngleIsNotSkipped) {
   ASSERT_LT(facets.triangle_normals().col(0).dot(facets.triangle_normals().col(1)), -0.5);
   Contact reference = make_contact(facets, "modified", false, 1);
   Contact skipping = make_contact(facets, "modified", true, 1);
-  const VectorX h = VectorX::Constant(1, 0.4);
-  const Matrix3X v = Matrix3X::Zero(3, 1);
   int pressed = 0;
   for (const double x : {1e-3, 0.0, 1e-3, 0.0}) {
-    const Matrix3X p = Vec3(x, 0, 0);
-    Matrix3X f_ref = Matrix3X::Zero(3, 1), f_skip = f_ref;
-    const ContactKinematics kinematics{p, v, h, Vec3::Zero(), Vec3::Zero(), 1e-3};
-    const ContactResult r_ref =
-        compute_penalty_contact(reference.pair, reference.state, kinematics, f_ref);
-    const ContactResult r_skip =
-        compute_penalty_contact(skipping.pair, skipping.state, kinematics, f_skip);
-    EXPECT_TRUE(same_bits(f_skip, f_ref)) << x;
-    EXPECT_TRUE(same_result(r_skip, r_ref)) << x;
-    EXPECT_EQ(r_ref.nodes_in_contact, x == 0.0 ? 1 : 0) << x;
-    pressed += r_ref.nodes_in_contact;
+    const ContactResult r = step_one_node(reference, skipping, Vec3(x, 0, 0), Vec3::Zero(), 0.4, x);
+    EXPECT_EQ(r.nodes_in_contact, x == 0.0 ? 1 : 0) << x;
+    pressed += r.nodes_in_contact;
   }
   EXPECT_EQ(pressed, 2);
 }

@@ -1,11 +1,12 @@
-// The checkpoint's layout, format 4, pinned (format 1 before the operations of issue 32, item 2; 2
-// before the tools' turns, item 7; 3 before the contact's results, issue 33, item 4)
+// The checkpoint's layout, format 5, pinned (format 1 before the operations of issue 32, item 2; 2
+// before the tools' turns, item 7; 3 before the contact's results, issue 33, item 4; 4 before the
+// contact's front bounds, issue 34, item 3)
 // (issue 32, item 1: the state's fields are to be described once, and the checkpoint's list
 // generated from that description). The writer and the reader walk the same list, so a renamed,
 // reordered, dropped or re-typed entry still reads back and restart_bitwise cannot see it; a
 // checkpoint written by an earlier build then fails to read. This test compares what
 // visit_checkpoint_fields visits, in order (kind, name, type or width per node / element), for two
-// cases with every kind of state, against tests/data/checkpoint_layout_v4.txt. A deliberate change
+// cases with every kind of state, against tests/data/checkpoint_layout_v5.txt. A deliberate change
 // of the layout is a new format version (src/solver/checkpoint.cpp, kFormatVersion) with a new
 // file, written by running this test with SF_WRITE_CHECKPOINT_LAYOUT=1.
 #include <gtest/gtest.h>
@@ -86,7 +87,7 @@ TEST(CheckpointLayout, FormatTwoIsTheLayoutOnRecord) {
   // (Armstrong-Frederick), a force-controlled holder, friction, three tools and contacts.
   const std::string actual =
       layout_of("verify_bounce") + layout_of("u_channel_bhf_2450N_kinematic");
-  const fs::path record = fs::path(SF_TEST_DATA_DIR) / "checkpoint_layout_v4.txt";
+  const fs::path record = fs::path(SF_TEST_DATA_DIR) / "checkpoint_layout_v5.txt";
   if (const char* write = std::getenv("SF_WRITE_CHECKPOINT_LAYOUT"); write && *write == '1') {
     std::ofstream(record) << actual;
   }

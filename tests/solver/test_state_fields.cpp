@@ -95,8 +95,9 @@ TEST(StateFields, KeysAreUniqueAndEveryFieldHasAUnitAndAMeaning) {
   }
   // 11 + 5 of the operation + 19 node + 4 mass scaling + 12 shell + 12 energies + a tool's (6
   // scalars, 4 x 3 vectors, 2 x 9 rotations, the angle, 2 x 3 moments, the origin's 3 + 3 + 9 +
-  // 1) + 5 of a pair
-  EXPECT_EQ(keys.size(), 11u + 5u + 19u + 4u + 12u + 12u + 59u + 5u);
+  // 1) + 8 of a pair (its stick and normal forces, sliding distances, distance bounds' anchors and
+  // slacks, front bounds' anchors, sides and gaps)
+  EXPECT_EQ(keys.size(), 11u + 5u + 19u + 4u + 12u + 12u + 59u + 8u);
 }
 
 TEST(StateFields, RolesAgree) {
