@@ -7,8 +7,11 @@
 #                                      met in seconds or not in minutes), msh41 15 s (a parser
 #                                      without gmsh: a million inputs); SF_FUZZ_SECONDS=N gives
 #                                      every target N s
-#   scripts/fuzz.sh long HOURS         HOURS (e.g. 0.5, 8) shared equally among the targets; a
-#                                      finding does not stop the run (libFuzzer's fork mode)
+#   scripts/fuzz.sh long HOURS         HOURS (e.g. 0.5, 8) of the machine's cores shared equally
+#                                      among the targets; a finding does not stop the run
+#                                      (libFuzzer's fork mode)
+#   The targets run side by side, one per core (nproc), each for its seconds: the short run takes
+#   about 80 s of fuzzing on two cores instead of 155.
 #   scripts/fuzz.sh build              only configure and build (preset fuzz, build-fuzz/)
 #   SF_FUZZ_TARGETS="case_reader" scripts/fuzz.sh short     a subset of the targets
 #
@@ -57,8 +60,9 @@ case "$mode" in
     ;;
   long)
     hours="${2:?usage: scripts/fuzz.sh long HOURS}"
-    seconds=$(python3 -c "import sys; print(max(1, int(float(sys.argv[1]) * 3600 / int(sys.argv[2]))))" \
-      "$hours" "$(echo "$targets" | wc -w)")
+    # The targets run one per core: each gets its share of HOURS times the cores at work.
+    seconds=$(python3 -c "import sys; n = int(sys.argv[2]); print(max(1, int(float(sys.argv[1]) * 3600 * min(n, int(sys.argv[3])) / n)))" \
+      "$hours" "$(echo "$targets" | wc -w)" "$(sf_cores)")
     for t in $all_targets; do seconds_of[$t]="$seconds"; done
     ;;
   build) ;;
@@ -114,34 +118,30 @@ dict="$build/case_reader.dict"
   cat tests/fuzz/toml.dict
 } >"$dict"
 
-status=0
-report=""
-for t in $targets; do
-  corpus="$build/corpus/$t"
-  findings="$build/findings/$t"
+# One target's run: its report line into $build/fuzz-$t.report, its verdict (0 passed, 1 found
+# or did not run) into $build/fuzz-$t.status, what to show into $build/fuzz-$t.out.
+fuzz_target() {
+  local t=$1 corpus="$build/corpus/$1" findings="$build/findings/$1" d seconds log before t0 t1
+  local runs cov new written line verdict=0
   mkdir -p "$corpus" "$findings"
-  inputs=("$corpus" "$seeds/$t")
+  local inputs=("$corpus" "$seeds/$t")
   [ -d "tests/fuzz/regressions/$t" ] && inputs+=("tests/fuzz/regressions/$t")
   case "$t" in
     case_reader) d="$dict" ;;
     *) d="tests/fuzz/$t.dict" ;;
   esac
   seconds="${seconds_of[$t]}"
-  options=(-max_total_time="$seconds" -timeout="$timeout_s" -rss_limit_mb="$rss_mb"
-           -max_len="${max_len[$t]}" -dict="$d" -artifact_prefix="$findings/"
-           -print_final_stats=1 -close_fd_mask=1)
+  local options=(-max_total_time="$seconds" -timeout="$timeout_s" -rss_limit_mb="$rss_mb"
+                 -max_len="${max_len[$t]}" -dict="$d" -artifact_prefix="$findings/"
+                 -print_final_stats=1 -close_fd_mask=1)
   if [ "$mode" = short ]; then
     options+=(-seed=1)
   else
     options+=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
   fi
   log="$build/fuzz-$t.log"
-  echo "== fuzz_$t: $seconds s ($mode; log $log)"
   before=$(find "$findings" -type f | wc -l)
   t0=$(date +%s)
-  # libFuzzer's output goes to the log; a crash's report is shown below.
-  # gmsh's and OpenCASCADE's own leaks are suppressed (tests/sanitizers/lsan.supp): gmsh 4.8 leaks
-  # elements on malformed MSH 2 files (GModel::_readMSH2), nothing sheetform can free.
   ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=1" UBSAN_OPTIONS="print_stacktrace=1" \
     LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0" \
     "$build/tests/fuzz/fuzz_$t" "${options[@]}" "${inputs[@]}" >"$log" 2>&1 || true
@@ -152,25 +152,48 @@ for t in $targets; do
   fi
   cov=$(grep -oE 'cov: [0-9]+' "$log" | tail -1 | sed 's/cov: //' || true)
   new=$(( $(find "$findings" -type f | wc -l) - before ))
-  # An input found again (the same name as an earlier finding) adds no file: libFuzzer's own word.
   written=$(grep -c 'Test unit written to' "$log" || true)
   [ "$new" -lt "$written" ] && new=$written
   line="fuzz_$t: ${runs:-?} runs in $((t1 - t0)) s, coverage ${cov:-?} edges, corpus $(find "$corpus" -type f | wc -l) inputs, $new new findings"
-  echo "   $line"
-  report+="$line"$'\n'
-  if [ -z "$runs" ]; then
-    status=1
-    echo "   fuzz_$t did not run:"; tail -20 "$log"
-  elif [ "$new" -gt 0 ]; then
-    open_dir="tests/fuzz/open-findings/$t"
-    if [ "$mode" = short ] && [ -n "$(find "$open_dir" -type f ! -name README.md 2>/dev/null)" ]; then
-      echo "   not failing: $t has open findings waiting for a fix ($open_dir/README.md)"
-    else
-      status=1
+  {
+    echo "== fuzz_$t: $seconds s ($mode; log $log)"
+    echo "   $line"
+    if [ -z "$runs" ]; then
+      verdict=1
+      echo "   fuzz_$t did not run:"; tail -20 "$log"
+    elif [ "$new" -gt 0 ]; then
+      local open_dir="tests/fuzz/open-findings/$t"
+      if [ "$mode" = short ] && [ -n "$(find "$open_dir" -type f ! -name README.md 2>/dev/null)" ]; then
+        echo "   not failing: $t has open findings waiting for a fix ($open_dir/README.md)"
+      else
+        verdict=1
+      fi
+      sed -n 's/.*Test unit written to /   finding: /p' "$log" | sort -u
+      grep -E -A30 '^==[0-9]+==ERROR|runtime error|^fuzz: ' "$log" | head -60 || true
     fi
-    sed -n 's/.*Test unit written to /   finding: /p' "$log" | sort -u
-    grep -E -A30 '^==[0-9]+==ERROR|runtime error|^fuzz: ' "$log" | head -60 || true
-  fi
+  } >"$build/fuzz-$t.out"
+  echo "$line" >"$build/fuzz-$t.report"
+  echo "$verdict" >"$build/fuzz-$t.status"
+}
+
+# The targets side by side, one per core (each gets its seconds of a core, as one after the
+# other did); their outputs in the targets' order once all are done.
+jobs_max=$(sf_cores)
+echo "== Fuzzing$(for t in $targets; do printf ' %s (%s s)' "$t" "${seconds_of[$t]}"; done), $jobs_max at a time"
+for t in $targets; do
+  rm -f "$build/fuzz-$t.status" "$build/fuzz-$t.report" "$build/fuzz-$t.out"
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs_max" ]; do
+    wait -n || true
+  done
+  fuzz_target "$t" &
+done
+wait
+status=0
+report=""
+for t in $targets; do
+  cat "$build/fuzz-$t.out" 2>/dev/null || echo "== fuzz_$t: no output"
+  [ "$(cat "$build/fuzz-$t.status" 2>/dev/null)" = 0 ] || status=1
+  report+="$(cat "$build/fuzz-$t.report" 2>/dev/null || echo "fuzz_$t: no report")"$'\n'
 done
 echo "== Fuzz $( [ $status -eq 0 ] && echo passed || echo FOUND SOMETHING ) ($(( $(date +%s) - start )) s)"
 printf '%s' "$report"
