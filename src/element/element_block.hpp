@@ -38,12 +38,7 @@ struct ElementBlock {
   int slot_end() const { return first_slot + nodes_per_element() * count; }
   bool holds_slot(int slot) const { return slot >= first_slot && slot < slot_end(); }
   /// The state element of one of its corner slots.
-  int element_of_slot(int slot) const {
-    // Constant divisors (a shift, a multiply): a division by nodes_per_element() costs tens of
-    // cycles, at every corner of every node in the per-cycle gathers.
-    const int k = slot - first_slot;
-    return first + (shape == ElementShape::quad ? k / 4 : k / 3);
-  }
+  int element_of_slot(int slot) const { return first + (slot - first_slot) / nodes_per_element(); }
   /// The node of one of its corner slots.
   int node_of_slot(int slot) const { return nodes[slot - first_slot]; }
 };

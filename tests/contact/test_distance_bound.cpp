@@ -119,6 +119,34 @@ ContactResult step_one_node(Contact& reference, Contact& skipping, const Vec3& p
   return r_ref;
 }
 
+/// One call at `kinematics` without the bounds (`reference`) and with them (`skipping`, cached;
+/// `skipping_modified`): expects the same forces, results, stick forces and contact fields, bit
+/// for bit (step k names a failure). Adds the two bounded calls' allocations to *allocations.
+/// The reference's result, its forces into f_ref.
+ContactResult call_alike(Contact& reference, Contact& skipping, Contact& skipping_modified,
+                         const ContactKinematics& kinematics, int k, long* allocations,
+                         Matrix3X& f_ref) {
+  f_ref.setZero(3, kinematics.x.cols());
+  Matrix3X f_skip = f_ref, f_mod = f_ref;
+  const ContactResult r_ref =
+      compute_penalty_contact(reference.pair, reference.state, kinematics, f_ref);
+  const long before = test::allocation_count();
+  const ContactResult r_skip =
+      compute_penalty_contact(skipping.pair, skipping.state, kinematics, f_skip);
+  const ContactResult r_mod =
+      compute_penalty_contact(skipping_modified.pair, skipping_modified.state, kinematics, f_mod);
+  *allocations += test::allocation_count() - before;
+  EXPECT_TRUE(same_bits(f_skip, f_ref)) << "step " << k;
+  EXPECT_TRUE(same_bits(f_mod, f_ref)) << "step " << k;
+  EXPECT_TRUE(same_result(r_skip, r_ref)) << "step " << k;
+  EXPECT_TRUE(same_result(r_mod, r_ref)) << "step " << k;
+  EXPECT_TRUE(same_bits(skipping.state.stick_force, reference.state.stick_force)) << k;
+  EXPECT_TRUE(same_bits(skipping_modified.state.stick_force, reference.state.stick_force)) << k;
+  EXPECT_TRUE(same_state(skipping.state, reference.state)) << k;
+  EXPECT_TRUE(same_state(skipping_modified.state, reference.state)) << k;
+  return r_ref;
+}
+
 TEST(DistanceBound, SkippingGivesTheSameForcesAsSearchingEveryNode) {
   // 13 x 13 nodes over [-6, 6]^2 (some beyond the tool's edge) at z = 3.2 mm, h = 0.4 mm,
   // wandering 4e-3 mm per step in random directions; the bowl rises 3.6 mm in 180 steps while
@@ -144,28 +172,17 @@ TEST(DistanceBound, SkippingGivesTheSameForcesAsSearchingEveryNode) {
   long calls_after_first = 0, allocations = 0;
   for (int k = 0; k < steps; ++k) {
     const Vec3 tool_step(0.004, -0.002, k < steps / 2 ? 0.02 : -0.02);  // mm
-    Matrix3X f_ref = Matrix3X::Zero(3, n), f_skip = f_ref, f_mod = f_ref;
     const ContactKinematics kinematics{
         x, v, h, tool, k > 0 ? tool_step : Vec3::Zero(), k > 0 ? dt : 0.0};
+    long call_allocations = 0;
+    Matrix3X f_ref;
     const ContactResult r_ref =
-        compute_penalty_contact(reference.pair, reference.state, kinematics, f_ref);
-    const long before = test::allocation_count();
-    const ContactResult r_skip =
-        compute_penalty_contact(skipping.pair, skipping.state, kinematics, f_skip);
-    const ContactResult r_mod =
-        compute_penalty_contact(skipping_modified.pair, skipping_modified.state, kinematics, f_mod);
+        call_alike(reference, skipping, skipping_modified, kinematics, k, &call_allocations, f_ref);
+    ASSERT_FALSE(::testing::Test::HasFailure()) << "step " << k;
     if (k > 0) {
-      allocations += test::allocation_count() - before;
+      allocations += call_allocations;
       ++calls_after_first;
     }
-    ASSERT_TRUE(same_bits(f_skip, f_ref)) << "step " << k;
-    ASSERT_TRUE(same_bits(f_mod, f_ref)) << "step " << k;
-    ASSERT_TRUE(same_result(r_skip, r_ref)) << "step " << k;
-    ASSERT_TRUE(same_result(r_mod, r_ref)) << "step " << k;
-    ASSERT_TRUE(same_bits(skipping.state.stick_force, reference.state.stick_force)) << k;
-    ASSERT_TRUE(same_bits(skipping_modified.state.stick_force, reference.state.stick_force)) << k;
-    ASSERT_TRUE(same_state(skipping.state, reference.state)) << k;
-    ASSERT_TRUE(same_state(skipping_modified.state, reference.state)) << k;
     most_in_contact = std::max(most_in_contact, r_ref.nodes_in_contact);
     last_in_contact = r_ref.nodes_in_contact;
     // The next step: the nodes wander, the tool moves.
@@ -296,22 +313,12 @@ SequenceCounts run_sequence(const TriangleSurface& s, Matrix3X x, double h, int 
   SequenceCounts counts;
   for (int k = 0; k < steps; ++k) {
     const Vec3 step = tool_step(k);
-    Matrix3X f_ref = Matrix3X::Zero(3, n), f_skip = f_ref, f_mod = f_ref;
     const ContactKinematics kinematics{
         x, v, half, tool, k > 0 ? step : Vec3::Zero(), k > 0 ? dt : 0.0};
+    long allocations = 0;
+    Matrix3X f_ref;
     const ContactResult r_ref =
-        compute_penalty_contact(reference.pair, reference.state, kinematics, f_ref);
-    const ContactResult r_skip =
-        compute_penalty_contact(skipping.pair, skipping.state, kinematics, f_skip);
-    const ContactResult r_mod =
-        compute_penalty_contact(skipping_modified.pair, skipping_modified.state, kinematics, f_mod);
-    EXPECT_TRUE(same_bits(f_skip, f_ref)) << "step " << k;
-    EXPECT_TRUE(same_bits(f_mod, f_ref)) << "step " << k;
-    EXPECT_TRUE(same_result(r_skip, r_ref)) << "step " << k;
-    EXPECT_TRUE(same_result(r_mod, r_ref)) << "step " << k;
-    EXPECT_TRUE(same_bits(skipping.state.stick_force, reference.state.stick_force)) << k;
-    EXPECT_TRUE(same_state(skipping.state, reference.state)) << k;
-    EXPECT_TRUE(same_state(skipping_modified.state, reference.state)) << k;
+        call_alike(reference, skipping, skipping_modified, kinematics, k, &allocations, f_ref);
     if (::testing::Test::HasFailure()) {
       return counts;
     }
